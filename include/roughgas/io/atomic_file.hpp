@@ -1,0 +1,17 @@
+#pragma once
+// Output files appear complete or not at all (style.md §2.12): a crash, a full disk or a kill
+// mid-write leaves the previous file (or none), never a truncated one.
+#include <filesystem>
+#include <string_view>
+
+namespace roughgas {
+
+// Writes `contents` to `path.tmp.<pid>` in the same directory (so the rename cannot cross file
+// systems), fsyncs it, renames it over `path` and fsyncs the directory. On failure the temporary
+// file is removed and std::system_error is thrown; `path` is then untouched.
+void write_file_atomically(const std::filesystem::path& path, std::string_view contents);
+
+// The temporary name used for `path` by this process.
+std::filesystem::path temporary_path(const std::filesystem::path& path);
+
+} // namespace roughgas

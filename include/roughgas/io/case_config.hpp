@@ -1,0 +1,179 @@
+#pragma once
+// The resolved case file as plain values (style.md §2.4): io/case_file.hpp fills these from TOML,
+// validated and with every default applied, so nothing downstream ever sees the parser.
+// Keys, units, defaults and ranges are listed once, in io/case_schema.hpp (and the README table).
+#include "roughgas/contact/contact_model.hpp"
+#include "roughgas/contact/contact_pair.hpp"
+#include "roughgas/contact/material.hpp"
+#include "roughgas/contact/tolerance.hpp"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace roughgas {
+
+// Each enum's names are defined once, next to it, so the schema's "allowed" lists and the
+// parser cannot drift apart (style.md §2.3).
+enum class RunKind { cooling, shear };
+inline constexpr std::array<std::string_view, 2> run_kind_names{"cooling", "shear"};
+
+// How output times are spaced: linear (every output_every) or log (output_every x 10^(k/10)).
+enum class OutputSpacing { linear, log };
+inline constexpr std::array<std::string_view, 2> output_spacing_names{"linear", "log"};
+
+// Spacing of the `roughgas restitution` grid in g_N and g_T.
+enum class GridSpacing { log, linear };
+inline constexpr std::array<std::string_view, 2> grid_spacing_names{"log", "linear"};
+
+enum class CollisionModel { constant, coulomb, viscoelastic, brilliantov };
+inline constexpr std::array<std::string_view, 4> collision_model_names{"constant", "coulomb", "viscoelastic",
+                                                                       "brilliantov"};
+
+constexpr std::string_view name(RunKind k) { return run_kind_names[static_cast<int>(k)]; }
+constexpr std::string_view name(OutputSpacing s) { return output_spacing_names[static_cast<int>(s)]; }
+constexpr std::string_view name(GridSpacing s) { return grid_spacing_names[static_cast<int>(s)]; }
+constexpr std::string_view name(CollisionModel m) { return collision_model_names[static_cast<int>(m)]; }
+
+// Does the model integrate the viscoelastic contact (and therefore need [material])?
+constexpr bool uses_material(CollisionModel m) {
+    return m == CollisionModel::viscoelastic || m == CollisionModel::brilliantov;
+}
+
+// [run]
+struct RunConfig {
+    RunKind kind = RunKind::cooling;
+    std::int64_t particles = 0;   // simulated particles (statistics only)
+    double density = 1.0;         // number density n [1/length^3]: sets the time scale
+    std::int64_t replicas = 1;    // independent runs averaged (columns X_err)
+    std::uint64_t seed = 1;
+    double end = 0;               // collisions per particle
+    double output_every = 1.0;    // collisions per particle (first output for log spacing)
+    OutputSpacing output_spacing = OutputSpacing::linear;
+    friend bool operator==(const RunConfig&, const RunConfig&) = default;
+};
+
+// One [[species]] table.
+struct SpeciesConfig {
+    std::string name = "grain";
+    double mass = 0;                    // m
+    double radius = 0;                  // R
+    double inertia = 0.4;               // q = J/(m R^2), physics.md §1
+    double fraction = 1.0;              // number fraction
+    double temperature = 1.0;           // initial T_tr (k_B = 1, energy units)
+    double rotational_temperature = 1.0; // initial T_rot
+    friend bool operator==(const SpeciesConfig&, const SpeciesConfig&) = default;
+};
+
+// [collision], or one [[pair]] table merged over it. Parameters a model does not use stay as given
+// (they are validated and echoed, never read); the ones it needs are guaranteed present.
+struct CollisionConfig {
+    CollisionModel model = CollisionModel::constant;
+    std::optional<double> alpha;    // normal restitution (constant, coulomb)
+    std::optional<double> beta;     // tangential restitution, beta = -eps^T (constant; viscoelastic: -1 if unset)
+    std::optional<double> beta0;    // coulomb: the sticking limit of beta
+    std::optional<double> friction; // coulomb: the Coulomb friction coefficient mu of the pair
+    bool direct = false;            // integrate every contact (no cached table) for this pair
+    friend bool operator==(const CollisionConfig&, const CollisionConfig&) = default;
+};
+
+// One [[pair]] table: the collision of species `species[0]` with `species[1]`.
+struct PairConfig {
+    std::array<std::string, 2> species;
+    CollisionConfig collision; // [collision] with this pair's keys on top
+    friend bool operator==(const PairConfig&, const PairConfig&) = default;
+};
+
+// [material] (SI). The dissipation is always resolved: given, or from eta1 and eta2 by seed eq. 23.
+struct MaterialConfig {
+    double young_modulus = 0;           // Y [Pa]
+    double poisson_ratio = 0;           // nu
+    double dissipation = 0;             // A [s]
+    std::optional<double> eta1;         // [Pa s], only when A came from the viscosities
+    std::optional<double> eta2;         // [Pa s]
+    std::optional<double> friction;     // mu of the asperity model (brilliantov)
+    std::optional<double> asperity;     // zeta_0 [m] (brilliantov)
+    friend bool operator==(const MaterialConfig&, const MaterialConfig&) = default;
+
+    // The physics view. Unset friction/asperity only occur when no model reads them.
+    Material material() const {
+        Material m;
+        m.young_modulus = young_modulus;
+        m.poisson_ratio = poisson_ratio;
+        m.dissipation = dissipation;
+        m.friction = friction.value_or(0.0);
+        m.asperity = asperity.value_or(m.asperity);
+        return m;
+    }
+};
+
+// [contact]
+struct ContactConfig {
+    ContactModel model{};       // form (eq24 | eq25), end (force | separation)
+    bool cache = true;          // false: integrate every contact directly
+    std::string cache_file;     // "" : the table is rebuilt on every run
+    Tolerance tolerance{};      // rel = contact.tolerance, abs = rel/100 (Hertz-scaled state is O(1))
+    friend bool operator==(const ContactConfig&, const ContactConfig&) = default;
+};
+
+// [shear]
+struct ShearConfig {
+    double rate = 0; // a [1/time]
+    friend bool operator==(const ShearConfig&, const ShearConfig&) = default;
+};
+
+// [restitution]: the grid of `roughgas restitution` (speeds in m/s).
+struct RestitutionGridConfig {
+    double g_n_min = 1e-4;
+    double g_n_max = 10.0;
+    std::int64_t g_n_points = 60;
+    double g_t_min = 1e-4;
+    double g_t_max = 10.0;
+    std::int64_t g_t_points = 60;
+    GridSpacing spacing = GridSpacing::log;
+    friend bool operator==(const RestitutionGridConfig&, const RestitutionGridConfig&) = default;
+};
+
+struct CaseConfig {
+    RunConfig run;
+    std::vector<SpeciesConfig> species;       // at least one
+    CollisionConfig collision;
+    std::vector<PairConfig> pairs;             // overrides of [collision] for species pairs
+    std::optional<MaterialConfig> material;   // present iff [material] was given
+    ContactConfig contact;
+    std::optional<ShearConfig> shear;         // present iff [shear] was given (required for kind = shear)
+    RestitutionGridConfig restitution;
+    friend bool operator==(const CaseConfig&, const CaseConfig&) = default;
+};
+
+// The collision rule of species i with species j: its [[pair]] table, else [collision].
+inline const CollisionConfig& collision_for(const CaseConfig& cfg, std::size_t i, std::size_t j) {
+    for (const PairConfig& p : cfg.pairs) {
+        const std::string& a = cfg.species[i].name;
+        const std::string& b = cfg.species[j].name;
+        if ((p.species[0] == a && p.species[1] == b) || (p.species[0] == b && p.species[1] == a)) {
+            return p.collision;
+        }
+    }
+    return cfg.collision;
+}
+
+// Contact constants of species i with species j; requires cfg.material (validated for such uses).
+inline ContactPair contact_pair(const CaseConfig& cfg, std::size_t i, std::size_t j) {
+    const SpeciesConfig& a = cfg.species[i];
+    const SpeciesConfig& b = cfg.species[j];
+    return make_contact_pair(cfg.material.value().material(), cfg.contact.model, a.mass, a.radius, a.inertia,
+                             b.mass, b.radius, b.inertia);
+}
+
+// `roughgas restitution` tabulates one pair: the first two species, or the only one with itself.
+inline std::pair<std::size_t, std::size_t> restitution_species(const CaseConfig& cfg) {
+    return {0, cfg.species.size() > 1 ? 1 : 0};
+}
+
+} // namespace roughgas

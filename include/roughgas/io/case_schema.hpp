@@ -1,0 +1,74 @@
+#pragma once
+// The one list of case-file keys: type, unit, default, allowed values, description (style.md §2.13).
+// The parser validates against it, the README's key table is generated from it
+// (`roughgas keys`), and tests/io/readme_test.cpp checks that the two agree.
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace roughgas {
+
+enum class KeyType { boolean, integer, real, string, string_pair };
+
+// How a missing key is resolved.
+enum class Need {
+    defaulted,   // takes `default_value`
+    required,    // always required (within its table)
+    conditional, // required or resolved depending on other keys: `note` says how (checked by the parser)
+    optional     // may stay unset
+};
+
+enum class Bound { none, open, closed };
+
+struct Limit {
+    Bound bound = Bound::none;
+    double value = 0;
+    std::string text; // how to print `value` ("" = shortest round-trip form), e.g. "2/3"
+};
+
+using KeyDefault = std::variant<std::monostate, bool, std::int64_t, double, std::string>;
+
+struct KeySpec {
+    std::string path; // "material.young_modulus"; keys of [[species]] are "species.radius"
+    KeyType type = KeyType::real;
+    std::string unit; // "" for dimensionless
+    Need need = Need::defaulted;
+    KeyDefault default_value;
+    std::string note; // Need::conditional: when the key is required, or where its value comes from
+    Limit lower, upper;
+    std::vector<std::string> choices; // allowed strings (empty: any)
+    std::string description;
+
+    std::string_view table() const; // "material"
+    std::string_view name() const;  // "young_modulus"
+    // "> 0", "in (-1, 0.5)", "one of \"eq24\", \"eq25\"" or "" (anything of the right type).
+    std::string allowed() const;
+    std::string default_text() const; // "1.0", "\"cooling\"", "required", the note, or "unset"
+    std::string type_name() const;    // "real", "integer", "boolean", "string", "[string, string]"
+    bool allows(double x) const;      // within [lower, upper]
+    bool allows(std::string_view s) const;
+};
+
+struct TableSpec {
+    std::string name;          // "species"
+    bool array = false;        // [[species]] rather than [species]
+    std::string requirement;   // "required", "required for ...", or "optional"
+    std::string description;
+};
+
+const std::vector<TableSpec>& case_tables();
+const std::vector<KeySpec>& case_schema();
+const TableSpec* find_table(std::string_view name);
+const KeySpec* find_key(std::string_view path); // schema path, without array indices
+
+// Markdown table (one row per key, schema order) for the README's `## Case file keys` section.
+std::string case_keys_markdown();
+// Markdown table of the case file's tables.
+std::string case_tables_markdown();
+
+// Shortest text that reads back as the same double and as a TOML float (1.0, not 1).
+std::string toml_real(double x);
+
+} // namespace roughgas

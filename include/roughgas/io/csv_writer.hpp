@@ -1,0 +1,46 @@
+#pragma once
+// CSV output (interface.md "Output"): '#' lines saying where the numbers came from, one header
+// line, then rows at full precision ({:.17g}: reads back to the same double). Written atomically.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace roughgas {
+
+// What the '#' lines record, so a CSV file can be reproduced from itself.
+struct CsvProvenance {
+    std::string case_file;              // as the user gave it
+    std::vector<std::string> overrides; // the --set arguments
+    std::optional<std::uint64_t> seed;
+    std::string resolved_case;          // emit_case(cfg): every key with defaults filled in
+    std::vector<std::string> notes;     // further "# ..." lines, e.g. what the table holds
+};
+
+class CsvWriter {
+  public:
+    CsvWriter(std::vector<std::string> columns, const CsvProvenance& provenance);
+
+    // Throws std::invalid_argument unless there is one value per column.
+    void add_row(std::span<const double> values);
+    void add_row(std::initializer_list<double> values) { add_row(std::span(values.begin(), values.size())); }
+
+    std::size_t rows() const { return rows_; }
+    const std::vector<std::string>& columns() const { return columns_; }
+    const std::string& text() const { return text_; }
+    // May be called again after more rows: each call replaces the file atomically.
+    void write(const std::filesystem::path& path) const;
+
+  private:
+    std::vector<std::string> columns_;
+    std::string text_;
+    std::size_t rows_ = 0;
+};
+
+std::string roughgas_version();
+// Compiler, optimisation and OpenMP of this build, for the '#' lines.
+std::string build_info();
+
+} // namespace roughgas

@@ -1,0 +1,108 @@
+#pragma once
+// Adaptive tables in one variable (piecewise quartic: a leaf interpolates 5 equally spaced samples,
+// so smooth functions converge as h^5) and two (piecewise bilinear), refined by bisection until
+// the interpolant matches the function at check points within `tol`. A cell that still fails at the
+// maximum depth is marked `direct`: look-ups there return NaN, and the caller evaluates the
+// function itself. So a discontinuity (the jumps of eps^T, physics.md §7) is never interpolated
+// across: it ends up inside a thin band of direct cells.
+//
+// Build: level by level, all new sample points of a level are evaluated in one batch (the batch
+// evaluator runs them in parallel). Look-up: a uniform root grid, then a walk down the tree.
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <span>
+#include <vector>
+
+namespace roughgas {
+
+struct AdaptiveOptions {
+    int root_cells_x = 16;
+    int root_cells_y = 8;     // 2-D only
+    int max_depth = 6;        // bisections below a root cell
+    double tol = 2.5e-5;      // max |interpolant - f| at the check points of a leaf
+    bool relative = false;    // tol bounds |interpolant - f| / |f| instead
+};
+
+struct AdaptiveStats {
+    std::size_t samples = 0, leaves = 0, direct_leaves = 0;
+    double max_leaf_error = 0; // largest check-point error among interpolating leaves
+};
+
+// f evaluated on a batch of points (xs[i], ys[i]) -> out[i]; ys is empty for 1-D tables.
+using BatchFunction = std::function<void(std::span<const double> xs, std::span<const double> ys, std::span<double> out)>;
+
+class AdaptiveTable1D {
+public:
+    static AdaptiveTable1D build(double x_lo, double x_hi, const AdaptiveOptions& opt, const BatchFunction& f);
+
+    // NaN outside [x_lo, x_hi] and in direct cells.
+    double operator()(double x) const {
+        const double f = (x - x_lo_) * inv_root_;
+        if (!(f >= 0.0) || f >= n_root_) return std::numeric_limits<double>::quiet_NaN();
+        const int ib = static_cast<int>(f);
+        double t = f - ib;
+        std::int32_t k = ib;
+        while (nodes_[k].child >= 0) {
+            t *= 2;
+            const int c = t >= 1.0;
+            t -= c;
+            k = nodes_[k].child + c;
+        }
+        const auto& c = nodes_[k].c; // power-basis coefficients in t; NaN in a direct leaf
+        return c[0] + t * (c[1] + t * (c[2] + t * (c[3] + t * c[4])));
+    }
+
+    const AdaptiveStats& stats() const { return stats_; }
+    double x_lo() const { return x_lo_; }
+    double x_hi() const { return x_lo_ + n_root_ / inv_root_; }
+
+    std::vector<double> serialize() const;
+    static AdaptiveTable1D deserialize(std::span<const double> data, std::size_t& pos);
+
+private:
+    struct Node { double c[5]; std::int32_t child; };
+    double x_lo_ = 0, inv_root_ = 1;
+    int n_root_ = 0;
+    std::vector<Node> nodes_; // the first n_root_ are the root cells; children come in pairs
+    AdaptiveStats stats_;
+};
+
+class AdaptiveTable2D {
+public:
+    static AdaptiveTable2D build(double x_lo, double x_hi, double y_lo, double y_hi, const AdaptiveOptions& opt,
+                                 const BatchFunction& f);
+
+    double operator()(double x, double y) const {
+        const double fx = (x - x_lo_) * inv_x_, fy = (y - y_lo_) * inv_y_;
+        if (!(fx >= 0.0) || fx >= nx_ || !(fy >= 0.0) || fy > ny_) return std::numeric_limits<double>::quiet_NaN();
+        const int ix = static_cast<int>(fx), iy = std::min(static_cast<int>(fy), ny_ - 1);
+        double tx = fx - ix, ty = fy - iy;
+        std::int32_t k = iy * nx_ + ix;
+        while (nodes_[k].child >= 0) {
+            tx *= 2;
+            ty *= 2;
+            const int cx = tx >= 1.0, cy = ty >= 1.0;
+            tx -= cx;
+            ty -= cy;
+            k = nodes_[k].child + 2 * cy + cx;
+        }
+        const auto& v = nodes_[k].v; // corners (0,0) (1,0) (0,1) (1,1); NaN in a direct leaf
+        return (v[0] + (v[1] - v[0]) * tx) * (1 - ty) + (v[2] + (v[3] - v[2]) * tx) * ty;
+    }
+
+    const AdaptiveStats& stats() const { return stats_; }
+
+    std::vector<double> serialize() const;
+    static AdaptiveTable2D deserialize(std::span<const double> data, std::size_t& pos);
+
+private:
+    struct Node { double v[4]; std::int32_t child; };
+    double x_lo_ = 0, y_lo_ = 0, inv_x_ = 1, inv_y_ = 1;
+    int nx_ = 0, ny_ = 0;
+    std::vector<Node> nodes_; // nx_*ny_ root cells (row-major in y), children in blocks of 4
+    AdaptiveStats stats_;
+};
+
+} // namespace roughgas

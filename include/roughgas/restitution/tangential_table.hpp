@@ -1,0 +1,93 @@
+#pragma once
+// eps^T(g_N, g_T) of one species pair (physics.md §7), tabulated so that it is never interpolated
+// across the onset of asperity breaking (seed 000 Fig. 2) nor across any other jump.
+//
+// Below the onset, g_T < g_T,cr(g_N), no asperity breaks and the tangential motion is linear in g_T:
+// eps^T = eps_unbroken(g_N), a function of g_N alone. The onset g_T,cr = c(g_N) g_N, where
+// c = critical_ratio (tangential_integrator.hpp), is a table of c over x = pseudo_log2(g_N) with a
+// relative error bound.
+// Above it, eps^T is a 2-D table over x and y = g_T,cr/g_T in (0, 1] (y -> 0: g_T -> inf, eps^T -> 1);
+// the onset line is the edge y = 1 of that table, so no cell straddles it. All three are
+// adaptive tables (adaptive_table.hpp) refined until they match the direct integrator at their
+// check points; where a further jump of eps^T remains (the spring stops the sliding exactly as an
+// asperity breaks), the cells at the maximum depth are `direct` and the look-up integrates the
+// contact there. Also direct: a relative band of `onset_band` around the onset (the table of c
+// carries a relative error below it) and g_N outside [g_min, g_max].
+#include "roughgas/contact/contact_integrator.hpp"
+#include "roughgas/contact/contact_pair.hpp"
+#include "roughgas/restitution/adaptive_table.hpp"
+#include "roughgas/restitution/pseudo_log.hpp"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace roughgas {
+
+struct TangentialTableOptions {
+    double g_min = 1e-6; // range of g_N covered by the table [m/s]
+    double g_max = 1e2;
+    AdaptiveOptions critical{2, 1, 10, 1e-8, true}; // c, relative error; root cells per binade
+    AdaptiveOptions unbroken{2, 1, 10, 2.5e-5};   // eps^T below the onset, per binade of g_N
+    AdaptiveOptions breaking{1, 8, 5, 2.5e-5};    // eps^T above the onset; root_cells_x per binade
+    double onset_band = 1e-6;                      // |g_T/g_T,cr - 1| below this: direct
+    Tolerance tol{1e-10, 1e-12};                   // of the contact integrations behind the table
+};
+
+struct TangentialTableStats {
+    AdaptiveStats critical, unbroken, breaking;
+    double build_seconds = 0;
+};
+
+// The direct (uncached) eps^T with the table's interface.
+struct DirectTangential {
+    ContactPair pair;
+    Tolerance tol{};
+    double eps_t(double g_n, double g_t) const {
+        return integrate_tangential(tangential_parameters(pair, g_n), std::abs(g_t) / g_n, tol).eps_t;
+    }
+};
+
+class TangentialTable {
+public:
+    static TangentialTable build(const ContactPair& pair, TangentialTableOptions opt = {});
+
+    // g_n > 0, any g_t (eps^T is even in g_t).
+    double eps_t(double g_n, double g_t) const {
+        const double v = lookup(g_n, std::abs(g_t));
+        return std::isnan(v) ? direct_.eps_t(g_n, g_t) : v;
+    }
+    // NaN where the look-up would fall back to the direct integrator.
+    double lookup(double g_n, double g_t) const {
+        const double x = pseudo_log2(g_n);
+        const double c = critical_(x);
+        if (std::isnan(c)) return c;
+        const double g_cr = c * g_n;
+        if (g_t < g_cr * (1.0 - opt_.onset_band)) return unbroken_(x);
+        if (g_t <= g_cr * (1.0 + opt_.onset_band)) return std::numeric_limits<double>::quiet_NaN();
+        return breaking_(x, g_cr / g_t);
+    }
+    // g_T,cr(g_N): the onset of asperity breaking.
+    double critical_speed(double g_n) const {
+        const double c = critical_(pseudo_log2(g_n));
+        return (std::isnan(c) ? critical_ratio(tangential_parameters(pair(), g_n), opt_.tol) : c) * g_n;
+    }
+
+    const ContactPair& pair() const { return direct_.pair; }
+    const TangentialTableOptions& options() const { return opt_; }
+    const TangentialTableStats& stats() const { return stats_; }
+
+    static std::string key_for(const ContactPair& pair, const TangentialTableOptions& opt);
+    std::string cache_key() const { return key_for(direct_.pair, opt_); }
+    std::vector<double> serialize() const;
+    static TangentialTable deserialize(const ContactPair& pair, TangentialTableOptions opt, const std::vector<double>& data);
+
+private:
+    TangentialTableOptions opt_{};
+    DirectTangential direct_{};
+    AdaptiveTable1D critical_, unbroken_;
+    AdaptiveTable2D breaking_;
+    TangentialTableStats stats_{};
+};
+
+} // namespace roughgas

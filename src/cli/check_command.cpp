@@ -1,0 +1,44 @@
+// roughgas check CASE.toml [--set KEY=VALUE]... : parse and validate only.
+#include "commands.hpp"
+
+#include "roughgas/io/case_file.hpp"
+
+#include <iostream>
+#include <map>
+#include <memory>
+
+namespace roughgas::cli {
+namespace {
+
+struct CheckOptions {
+    std::string case_file;
+    std::vector<std::string> sets;
+    CaseUse use = CaseUse::run;
+    bool print = false;
+};
+
+int run_check(const CheckOptions& o) {
+    const CaseConfig cfg = load_case(o.case_file, o.sets, o.use); // throws InputError: exit 2
+    if (o.print) {
+        std::cout << emit_case(cfg);
+    } else {
+        std::cout << o.case_file << ": valid\n";
+    }
+    return exit_ok;
+}
+
+} // namespace
+
+Subcommand add_check_command(CLI::App& parent) {
+    auto o = std::make_shared<CheckOptions>();
+    CLI::App* app = parent.add_subcommand("check", "parse and validate a case file (exit 0 valid, 2 invalid)");
+    app->add_option("CASE", o->case_file, "case file (TOML)")->required();
+    add_set_option(*app, o->sets);
+    const std::map<std::string, CaseUse> uses{{"run", CaseUse::run}, {"restitution", CaseUse::restitution}};
+    app->add_option("--for", o->use, "validate for: run (default) or restitution (also needs a full [material])")
+        ->transform(CLI::CheckedTransformer(uses));
+    app->add_flag("--print", o->print, "print the resolved case (every default filled in) as TOML");
+    return {app, [o] { return run_check(*o); }};
+}
+
+} // namespace roughgas::cli

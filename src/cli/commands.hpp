@@ -1,0 +1,35 @@
+#pragma once
+// The subcommands of the roughgas executable. Each file registers one subcommand with CLI11 and
+// returns what to run once the command line is parsed; CLI11 is used in src/cli/ only.
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace roughgas::cli {
+
+struct Subcommand {
+    CLI::App* app = nullptr;   // parsed() says whether this one was chosen
+    std::function<int()> run;  // returns the exit status (throws InputError for invalid input)
+};
+
+Subcommand add_run_command(CLI::App& parent);
+Subcommand add_check_command(CLI::App& parent);
+Subcommand add_restitution_command(CLI::App& parent);
+Subcommand add_sweep_command(CLI::App& parent);
+Subcommand add_keys_command(CLI::App& parent); // hidden: prints the README tables
+
+// `--set KEY=VALUE`, repeatable, one value per occurrence (so it cannot swallow CASE.toml).
+inline CLI::Option* add_set_option(CLI::App& app, std::vector<std::string>& sets) {
+    return app.add_option("--set", sets, "override a case-file key before validation, e.g. collision.alpha=0.7 "
+                                         "or species.0.radius=0.5 (repeatable)")
+        ->allow_extra_args(false);
+}
+
+// Exit statuses of interface.md.
+inline constexpr int exit_ok = 0;
+inline constexpr int exit_failure = 1;
+inline constexpr int exit_invalid = 2;
+
+} // namespace roughgas::cli

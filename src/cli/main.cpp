@@ -1,0 +1,49 @@
+// roughgas: the command line (interface.md). Exit status 0 ok, 2 invalid input, 1 anything else.
+#include "commands.hpp"
+
+#include "roughgas/io/csv_writer.hpp"
+#include "roughgas/io/input_error.hpp"
+
+#include <exception>
+#include <iostream>
+
+namespace {
+
+int run_cli(int argc, char** argv) {
+    using namespace roughgas::cli;
+    CLI::App app{"roughgas: kinetic (DSMC) solver for granular gases of rough inelastic particles"};
+    app.set_version_flag("--version", "roughgas " + roughgas::roughgas_version());
+    app.require_subcommand(1);
+    const std::vector<Subcommand> commands = {add_run_command(app), add_check_command(app),
+                                              add_restitution_command(app), add_sweep_command(app),
+                                              add_keys_command(app)};
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        // --help and --version are "errors" with status 0; a malformed command line is invalid input.
+        return app.exit(e) == 0 ? exit_ok : exit_invalid;
+    }
+    for (const Subcommand& c : commands) {
+        if (c.app->parsed()) {
+            return c.run();
+        }
+    }
+    return exit_invalid; // unreachable: require_subcommand(1)
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run_cli(argc, argv);
+    } catch (const roughgas::InputError& e) {
+        std::cerr << e.what() << '\n';
+        return roughgas::cli::exit_invalid;
+    } catch (const std::exception& e) {
+        std::cerr << "roughgas: error: " << e.what() << '\n';
+        return roughgas::cli::exit_failure;
+    } catch (...) {
+        std::cerr << "roughgas: unknown error\n";
+        return roughgas::cli::exit_failure;
+    }
+}

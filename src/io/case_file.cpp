@@ -1,0 +1,896 @@
+// Case files with toml++: parse, apply --set, validate (schema pass, then cross-key pass), build.
+#include "roughgas/io/case_file.hpp"
+
+#include "roughgas/io/case_schema.hpp"
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <optional>
+#include <sstream>
+
+namespace roughgas {
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// Messages
+
+// Collects issues so that one pass reports every problem; keys set with --set say so, because
+// the case file would not show the offending value.
+class Diagnostics {
+  public:
+    explicit Diagnostics(std::string file) : file_(std::move(file)) {}
+
+    void mark_override(const std::string& key) { overridden_.push_back(key); }
+
+    // `key`: dotted display path; `node`: where to point (nullptr: no position).
+    void add(const std::string& key, std::string message, const toml::node* node = nullptr) {
+        std::optional<SourcePosition> where;
+        if (std::find(overridden_.begin(), overridden_.end(), key) != overridden_.end()) {
+            message += " (set with --set)";
+        } else if (node != nullptr && node->source().begin) {
+            const toml::source_position p = node->source().begin;
+            where = SourcePosition{static_cast<int>(p.line), static_cast<int>(p.column)};
+        }
+        issues_.push_back({file_, key, std::move(message), where});
+    }
+
+    void throw_if_any() {
+        if (!issues_.empty()) {
+            throw InputError(std::move(issues_));
+        }
+    }
+
+  private:
+    std::string file_;
+    std::vector<std::string> overridden_;
+    std::vector<InputIssue> issues_;
+};
+
+std::string value_text(const toml::node& n) {
+    if (const auto* f = n.as_floating_point()) {
+        return fmt::format("{}", f->get()); // toml++ would print 1e10 as 10000000000.0
+    }
+    std::ostringstream os;
+    n.visit([&](const auto& v) { os << v; });
+    return os.str();
+}
+
+std::string unit_suffix(const KeySpec& s) { return s.unit.empty() ? "" : " (" + s.unit + ")"; }
+
+std::string type_phrase(KeyType t) {
+    switch (t) {
+    case KeyType::boolean: return "true or false";
+    case KeyType::integer: return "an integer";
+    case KeyType::real: return "a real number";
+    case KeyType::string: return "a string";
+    case KeyType::string_pair: return "an array of two strings";
+    }
+    return "?";
+}
+
+// "a real number > 0 (Pa)", "one of \"eq24\", \"eq25\"": what a key accepts, for messages.
+std::string expectation(const KeySpec& s) {
+    if (!s.choices.empty()) {
+        return s.allowed();
+    }
+    const std::string allowed = s.allowed();
+    return type_phrase(s.type) + (allowed.empty() ? "" : " " + allowed) + unit_suffix(s);
+}
+
+// Optimal-string-alignment distance: a swapped pair of letters counts as one edit.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+    for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+    for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) {
+                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+            }
+        }
+    }
+    return d[a.size()][b.size()];
+}
+
+// The nearest candidate, if it is near enough to be a typo (about one edit per three letters).
+std::optional<std::string> nearest(std::string_view word, const std::vector<std::string>& candidates) {
+    std::optional<std::string> best;
+    std::size_t best_d = std::max<std::size_t>(2, word.size() / 3) + 1;
+    for (const std::string& c : candidates) {
+        const std::size_t dist = edit_distance(word, c);
+        if (dist < best_d) {
+            best_d = dist;
+            best = c;
+        }
+    }
+    return best;
+}
+
+std::vector<std::string> key_names(std::string_view table) {
+    std::vector<std::string> names;
+    for (const KeySpec& k : case_schema()) {
+        if (k.table() == table) names.emplace_back(k.name());
+    }
+    return names;
+}
+
+std::string table_header(const TableSpec& t) { return t.array ? "[[" + t.name + "]]" : "[" + t.name + "]"; }
+
+std::string join(const std::vector<std::string>& v) {
+    std::string s;
+    for (const std::string& x : v) s += (s.empty() ? "" : ", ") + x;
+    return s;
+}
+
+// A key of this name in another table: the user put a right key in the wrong place.
+std::optional<std::string> misplaced(std::string_view name, std::string_view table) {
+    for (const KeySpec& k : case_schema()) {
+        if (k.name() == name && k.table() != table) {
+            return std::string(k.name()) + " in " + table_header(*find_table(k.table()));
+        }
+    }
+    return std::nullopt;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Typed access
+
+std::optional<double> as_real(const toml::node& n) {
+    if (const auto* f = n.as_floating_point()) return f->get();
+    if (const auto* i = n.as_integer()) return static_cast<double>(i->get());
+    return std::nullopt;
+}
+
+// Integers may be written as integral floats (particles = 1e5).
+std::optional<std::int64_t> as_integer(const toml::node& n) {
+    if (const auto* i = n.as_integer()) return i->get();
+    if (const auto* f = n.as_floating_point()) {
+        const double x = f->get();
+        if (std::isfinite(x) && x == std::floor(x) && std::abs(x) < 9.0e18) return static_cast<std::int64_t>(x);
+    }
+    return std::nullopt;
+}
+
+bool is_string_pair(const toml::node& n) {
+    const toml::array* a = n.as_array();
+    return a != nullptr && a->size() == 2 && (*a)[0].is_string() && (*a)[1].is_string();
+}
+
+bool is_index(std::string_view s) {
+    return !s.empty() && s.size() < 10 && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// The node at a display path ("species.1.name"), for message positions.
+const toml::node* locate(const toml::table& root, std::string_view path) {
+    const toml::node* n = &root;
+    std::size_t start = 0;
+    while (n != nullptr && start <= path.size()) {
+        const std::size_t dot = std::min(path.find('.', start), path.size());
+        const std::string seg(path.substr(start, dot - start));
+        if (const toml::table* t = n->as_table()) {
+            n = t->get(seg);
+        } else if (const toml::array* a = n->as_array(); a != nullptr && is_index(seg)) {
+            n = a->get(std::stoul(seg));
+        } else {
+            return nullptr;
+        }
+        start = dot + 1;
+    }
+    return n;
+}
+
+// Reads keys of one validated table, with the schema's defaults for missing ones.
+class Reader {
+  public:
+    Reader(const toml::table* t, std::string schema_table) : t_(t), table_(std::move(schema_table)) {}
+
+    bool has(std::string_view k) const { return node(k) != nullptr; }
+    double real(std::string_view k) const {
+        const toml::node* n = node(k);
+        return n ? *as_real(*n) : std::get<double>(spec(k).default_value);
+    }
+    std::optional<double> opt_real(std::string_view k) const {
+        const toml::node* n = node(k);
+        return n ? as_real(*n) : std::nullopt;
+    }
+    std::int64_t integer(std::string_view k) const {
+        const toml::node* n = node(k);
+        return n ? *as_integer(*n) : std::get<std::int64_t>(spec(k).default_value);
+    }
+    bool boolean(std::string_view k) const {
+        const toml::node* n = node(k);
+        return n ? n->as_boolean()->get() : std::get<bool>(spec(k).default_value);
+    }
+    std::string string(std::string_view k) const {
+        const toml::node* n = node(k);
+        return n ? n->as_string()->get() : std::get<std::string>(spec(k).default_value);
+    }
+    template <class E, std::size_t N> E choice(std::string_view k, const std::array<std::string_view, N>& names) const {
+        const std::string s = string(k);
+        return static_cast<E>(std::find(names.begin(), names.end(), s) - names.begin());
+    }
+
+  private:
+    const toml::node* node(std::string_view k) const { return t_ ? t_->get(k) : nullptr; }
+    const KeySpec& spec(std::string_view k) const { return *find_key(table_ + "." + std::string(k)); }
+    const toml::table* t_;
+    std::string table_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// --set
+
+std::string trim(std::string_view s) {
+    const auto b = s.find_first_not_of(" \t");
+    if (b == std::string_view::npos) return {};
+    const auto e = s.find_last_not_of(" \t");
+    return std::string(s.substr(b, e - b + 1));
+}
+
+std::vector<std::string> split_path(const std::string& key) {
+    std::vector<std::string> segs;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t dot = key.find('.', start);
+        segs.push_back(key.substr(start, dot == std::string::npos ? std::string::npos : dot - start));
+        if (dot == std::string::npos) return segs;
+        start = dot + 1;
+    }
+}
+
+std::string schema_path(const std::vector<std::string>& segs) {
+    std::string p;
+    for (const std::string& s : segs) {
+        if (!is_index(s)) p += (p.empty() ? "" : ".") + s;
+    }
+    return p;
+}
+
+// VALUE as TOML; a bare word (or anything for a string key) is a string, so that
+// collision.model=brilliantov needs no shell-escaped quotes.
+toml::table parse_override_value(const std::string& value, const KeySpec* spec) {
+    toml::table wrapped;
+    try {
+        const std::string text = "v = " + value;
+        wrapped = toml::parse(std::string_view(text), std::string_view("--set"));
+    } catch (const toml::parse_error&) {
+        wrapped = toml::table{};
+    }
+    const toml::node* v = wrapped.get("v");
+    const bool wants_string = spec != nullptr && spec->type == KeyType::string;
+    if (wrapped.size() != 1 || v == nullptr || (wants_string && !v->is_string())) {
+        return toml::table{{"v", value}};
+    }
+    return wrapped;
+}
+
+// Walks to the table that holds the last segment, creating tables (and at most one new
+// [[array]] element) on the way. Returns nullptr after reporting a problem.
+toml::table* override_parent(toml::table& root, const std::vector<std::string>& segs, const std::string& arg,
+                             Diagnostics& d) {
+    const std::string& key = arg.substr(0, arg.find('='));
+    toml::table* t = &root;
+    for (std::size_t i = 0; i + 1 < segs.size(); ++i) {
+        const std::string& seg = segs[i];
+        const TableSpec* ts = t == &root ? find_table(seg) : nullptr;
+        toml::node* n = t->get(seg);
+        if (n != nullptr ? n->is_array() : (ts != nullptr && ts->array)) {
+            if (i + 2 >= segs.size() || !is_index(segs[i + 1])) {
+                d.add(key, fmt::format("--set {}: [[{}]] is an array of tables: address one as {}.N.{} "
+                                       "(N = 0 for the first)", arg, seg, seg, segs.back()));
+                return nullptr;
+            }
+            if (n == nullptr) n = &t->insert_or_assign(seg, toml::array{}).first->second;
+            toml::array& a = *n->as_array();
+            const std::size_t index = std::stoul(segs[i + 1]);
+            if (index > a.size()) {
+                d.add(key, fmt::format("--set {}: there are {} [[{}]] tables, so the index must be <= {} "
+                                       "({} adds one)", arg, a.size(), seg, a.size(), a.size()));
+                return nullptr;
+            }
+            if (index == a.size()) a.push_back(toml::table{});
+            t = a[index].as_table();
+            ++i;
+        } else {
+            if (n == nullptr) n = &t->insert_or_assign(seg, toml::table{}).first->second;
+            t = n->as_table();
+        }
+        if (t == nullptr || is_index(seg)) {
+            d.add(key, fmt::format("--set {}: {} is not a table", arg, seg));
+            return nullptr;
+        }
+    }
+    return t;
+}
+
+void apply_override(toml::table& root, const std::string& arg, Diagnostics& d) {
+    const std::size_t eq = arg.find('=');
+    const std::string key = trim(arg.substr(0, eq));
+    if (eq == std::string::npos || key.empty()) {
+        d.add(key, fmt::format("--set {}: expected KEY=VALUE, e.g. collision.alpha=0.9", arg));
+        return;
+    }
+    const std::vector<std::string> segs = split_path(key);
+    const bool empty_segment = std::any_of(segs.begin(), segs.end(), [](const std::string& s) { return s.empty(); });
+    if (segs.size() < 2 || empty_segment || is_index(segs.back())) {
+        d.add(key, fmt::format("--set {}: KEY must be a dotted path to a key, e.g. run.particles or "
+                               "species.0.radius", arg));
+        return;
+    }
+    toml::table* parent = override_parent(root, segs, arg, d);
+    if (parent == nullptr) return;
+    toml::table wrapped = parse_override_value(trim(arg.substr(eq + 1)), find_key(schema_path(segs)));
+    parent->insert_or_assign(segs.back(), std::move(*wrapped.get("v")));
+    d.mark_override(key);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Pass 1: structure, names, types and ranges against the schema
+
+class SchemaCheck {
+  public:
+    explicit SchemaCheck(Diagnostics& d) : d_(d) {}
+
+    void root(const toml::table& root) {
+        for (auto&& [k, node] : root) {
+            top_level(std::string(k.str()), node);
+        }
+        for (const std::string name : {"run", "collision"}) {
+            if (!root.contains(name)) {
+                missing_keys(nullptr, name, name); // each required key of the absent table
+            }
+        }
+        if (!root.contains("species")) {
+            d_.add("species", "species: at least one [[species]] table is required");
+        }
+    }
+
+  private:
+    void top_level(const std::string& name, const toml::node& node) {
+        const TableSpec* ts = find_table(name);
+        if (ts == nullptr) {
+            unknown_top_level(name, node);
+        } else if (ts->array) {
+            const toml::array* a = node.as_array();
+            if (a == nullptr || a->empty() || !a->is_array_of_tables()) {
+                d_.add(name, fmt::format("{}: must be one or more tables written [[{}]]", name, name), &node);
+                return;
+            }
+            for (std::size_t i = 0; i < a->size(); ++i) {
+                table(*(*a)[i].as_table(), name, fmt::format("{}.{}", name, i));
+            }
+        } else if (const toml::table* t = node.as_table()) {
+            table(*t, name, name);
+        } else {
+            d_.add(name, fmt::format("{}: must be a table written [{}]", name, name), &node);
+        }
+    }
+
+    void unknown_top_level(const std::string& name, const toml::node& node) {
+        std::vector<std::string> tables;
+        for (const TableSpec& t : case_tables()) tables.push_back(t.name);
+        std::string hint;
+        if (auto m = misplaced(name, "")) {
+            hint = "did you mean " + *m + "?";
+        } else if (auto s = nearest(name, tables)) {
+            hint = "did you mean " + table_header(*find_table(*s)) + "?";
+        } else {
+            std::vector<std::string> headers;
+            for (const TableSpec& t : case_tables()) headers.push_back(table_header(t));
+            hint = "the tables are " + join(headers);
+        }
+        d_.add(name, fmt::format("{}: unknown {} ({})", name, node.is_table() ? "table" : "key", hint), &node);
+    }
+
+    void table(const toml::table& t, const std::string& schema_table, const std::string& prefix) {
+        for (auto&& [k, node] : t) {
+            const std::string name(k.str());
+            const KeySpec* spec = find_key(schema_table + "." + name);
+            if (spec == nullptr) {
+                unknown_key(name, schema_table, prefix, node);
+            } else {
+                value(*spec, node, prefix + "." + name);
+            }
+        }
+        missing_keys(&t, schema_table, prefix);
+    }
+
+    void missing_keys(const toml::table* t, const std::string& schema_table, const std::string& prefix) {
+        for (const KeySpec& s : case_schema()) {
+            if (s.table() == schema_table && s.need == Need::required && (t == nullptr || !t->contains(s.name()))) {
+                const std::string key = prefix + "." + std::string(s.name());
+                d_.add(key, fmt::format("{}: required key is missing (must be {})", key, expectation(s)), t);
+            }
+        }
+    }
+
+    void unknown_key(const std::string& name, const std::string& schema_table, const std::string& prefix,
+                     const toml::node& node) {
+        const std::string key = prefix + "." + name;
+        std::string hint;
+        if (auto s = nearest(name, key_names(schema_table))) {
+            hint = "did you mean " + prefix + "." + *s + "?";
+        } else if (auto m = misplaced(name, schema_table)) {
+            hint = "did you mean " + *m + "?";
+        } else {
+            hint = table_header(*find_table(schema_table)) + " allows " + join(key_names(schema_table));
+        }
+        d_.add(key, fmt::format("{}: unknown key ({})", key, hint), &node);
+    }
+
+    void value(const KeySpec& s, const toml::node& n, const std::string& key) {
+        const std::string shown = key + " = " + value_text(n);
+        switch (s.type) {
+        case KeyType::real:
+        case KeyType::integer: {
+            const std::optional<double> x = s.type == KeyType::real ? as_real(n) : [&]() -> std::optional<double> {
+                if (auto i = as_integer(n)) return static_cast<double>(*i);
+                return std::nullopt;
+            }();
+            if (!x || !std::isfinite(*x)) {
+                d_.add(key, fmt::format("{}: must be {}", shown, expectation(s)), &n);
+            } else if (!s.allows(*x)) {
+                d_.add(key, fmt::format("{}: must be {}{}", shown, s.allowed(), unit_suffix(s)), &n);
+            }
+            return;
+        }
+        case KeyType::boolean:
+            if (!n.is_boolean()) d_.add(key, fmt::format("{}: must be true or false", shown), &n);
+            return;
+        case KeyType::string_pair:
+            if (!is_string_pair(n)) d_.add(key, fmt::format("{}: must be {}", shown, expectation(s)), &n);
+            return;
+        case KeyType::string: {
+            const auto* str = n.as_string();
+            if (str == nullptr) {
+                d_.add(key, fmt::format("{}: must be a string{}", shown,
+                                        s.choices.empty() ? "" : ", " + s.allowed()), &n);
+            } else if (!s.allows(str->get())) {
+                const auto near = nearest(str->get(), s.choices);
+                d_.add(key, fmt::format("{}: must be {}{}", shown, s.allowed(),
+                                        near ? " (did you mean \"" + *near + "\"?)" : ""), &n);
+            }
+            return;
+        }
+        }
+    }
+
+    Diagnostics& d_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Pass 2: build the config and check what involves several keys
+
+class Builder {
+  public:
+    Builder(const toml::table& root, CaseUse use, Diagnostics& d) : root_(root), use_(use), d_(d) {}
+
+    CaseConfig build() {
+        CaseConfig c;
+        c.run = run(Reader(root_["run"].as_table(), "run"));
+        if (const toml::array* a = root_["species"].as_array()) {
+            for (const toml::node& n : *a) c.species.push_back(species(Reader(n.as_table(), "species")));
+        }
+        const toml::table* coll = root_["collision"].as_table();
+        c.collision = collision(Reader(coll, "collision"));
+        if (const toml::array* a = root_["pair"].as_array()) {
+            for (const toml::node& n : *a) c.pairs.push_back(pair(*n.as_table(), coll));
+        }
+        if (const toml::table* m = root_["material"].as_table()) c.material = material(Reader(m, "material"));
+        c.contact = contact(Reader(root_["contact"].as_table(), "contact"));
+        if (const toml::table* s = root_["shear"].as_table(); s != nullptr && s->contains("rate")) {
+            c.shear = ShearConfig{Reader(s, "shear").real("rate")};
+        }
+        c.restitution = grid(Reader(root_["restitution"].as_table(), "restitution"));
+        check(c);
+        return c;
+    }
+
+  private:
+    static RunConfig run(const Reader& r) {
+        RunConfig c;
+        c.kind = r.choice<RunKind>("kind", run_kind_names);
+        c.particles = r.integer("particles");
+        c.density = r.real("density");
+        c.replicas = r.integer("replicas");
+        c.seed = static_cast<std::uint64_t>(r.integer("seed"));
+        c.end = r.real("end");
+        c.output_every = r.real("output_every");
+        c.output_spacing = r.choice<OutputSpacing>("output_spacing", output_spacing_names);
+        return c;
+    }
+
+    static SpeciesConfig species(const Reader& r) {
+        SpeciesConfig s;
+        s.name = r.string("name");
+        s.mass = r.real("mass");
+        s.radius = r.real("radius");
+        s.inertia = r.real("inertia");
+        s.fraction = r.real("fraction");
+        s.temperature = r.real("temperature");
+        s.rotational_temperature = r.real("rotational_temperature");
+        return s;
+    }
+
+    static CollisionConfig collision(const Reader& r) {
+        CollisionConfig c;
+        c.model = r.choice<CollisionModel>("model", collision_model_names);
+        c.alpha = r.opt_real("alpha");
+        c.beta = r.opt_real("beta");
+        c.beta0 = r.opt_real("beta0");
+        c.friction = r.opt_real("friction");
+        c.direct = r.boolean("direct");
+        return c;
+    }
+
+    // A [[pair]] is [collision] with the pair's own keys on top.
+    static PairConfig pair(const toml::table& t, const toml::table* coll) {
+        toml::table merged = coll ? *coll : toml::table{};
+        for (auto&& [k, v] : t) {
+            if (k.str() != "species") merged.insert_or_assign(k.str(), v);
+        }
+        PairConfig p;
+        const toml::array& names = *t["species"].as_array();
+        p.species = {names[0].as_string()->get(), names[1].as_string()->get()};
+        p.collision = collision(Reader(&merged, "collision"));
+        return p;
+    }
+
+    MaterialConfig material(const Reader& r) {
+        MaterialConfig m;
+        m.young_modulus = r.real("young_modulus");
+        m.poisson_ratio = r.real("poisson_ratio");
+        m.eta1 = r.opt_real("eta1");
+        m.eta2 = r.opt_real("eta2");
+        m.friction = r.opt_real("friction");
+        m.asperity = r.opt_real("asperity");
+        m.dissipation = dissipation(r, m);
+        return m;
+    }
+
+    // A is given directly or, by seed 000 eq. 23, from both viscosities: never both, never neither.
+    double dissipation(const Reader& r, const MaterialConfig& m) {
+        const KeySpec& a_spec = *find_key("material.dissipation");
+        const bool viscous = m.eta1 || m.eta2;
+        if (r.has("dissipation")) {
+            if (viscous) {
+                add("material.dissipation", "material.dissipation: give either dissipation or eta1 and eta2, not both");
+            }
+            return r.real("dissipation");
+        }
+        if (!viscous) {
+            add("material.dissipation", fmt::format("material.dissipation: required key is missing (must be {}; "
+                                                    "or give eta1 and eta2)", expectation(a_spec)), "material");
+            return 0;
+        }
+        if (!m.eta1 || !m.eta2) {
+            const std::string missing = m.eta1 ? "material.eta2" : "material.eta1";
+            add(missing, fmt::format("{}: required with {} (A follows from both viscosities, seed 000 eq. 23; "
+                                     "must be >= 0 (Pa s))", missing, m.eta1 ? "eta1" : "eta2"), "material");
+            return 0;
+        }
+        if (m.poisson_ratio == 0 || 3 * *m.eta2 + 2 * *m.eta1 <= 0) {
+            add("material.eta1", "material.eta1, material.eta2: seed 000 eq. 23 needs poisson_ratio != 0 and "
+                                 "3 eta2 + 2 eta1 > 0");
+            return 0;
+        }
+        return dissipation_from_viscosities(*m.eta1, *m.eta2, m.young_modulus, m.poisson_ratio);
+    }
+
+    static ContactConfig contact(const Reader& r) {
+        ContactConfig c;
+        c.model.form = r.choice<NormalForm>("form", normal_form_names);
+        c.model.end = r.choice<ContactEnd>("end", contact_end_names);
+        c.cache = r.boolean("cache");
+        c.cache_file = r.string("cache_file");
+        const double tol = r.real("tolerance");
+        c.tolerance = Tolerance{tol, tol / 100}; // the Hertz-scaled state is O(1)
+        return c;
+    }
+
+    static RestitutionGridConfig grid(const Reader& r) {
+        RestitutionGridConfig g;
+        g.g_n_min = r.real("g_n_min");
+        g.g_n_max = r.real("g_n_max");
+        g.g_n_points = r.integer("g_n_points");
+        g.g_t_min = r.real("g_t_min");
+        g.g_t_max = r.real("g_t_max");
+        g.g_t_points = r.integer("g_t_points");
+        g.spacing = r.choice<GridSpacing>("spacing", grid_spacing_names);
+        return g;
+    }
+
+    void add(const std::string& key, std::string message, std::string_view at = {}) {
+        d_.add(key, std::move(message), locate(root_, at.empty() ? std::string_view(key) : at));
+    }
+
+    // "x: required for <why> but missing (must be <expectation>)"
+    void require(bool present, const std::string& key, const std::string& why, std::string_view at) {
+        if (!present) {
+            const KeySpec* s = find_key(schema_path(split_path(key)));
+            add(key, fmt::format("{}: required for {} but missing (must be {})", key, why, expectation(*s)), at);
+        }
+    }
+
+    void check(const CaseConfig& c) {
+        check_species(c);
+        check_collision(c.collision, "collision");
+        for (std::size_t i = 0; i < c.pairs.size(); ++i) {
+            check_pair(c, i);
+            check_collision(c.pairs[i].collision, fmt::format("pair.{}", i));
+        }
+        check_material(c);
+        if (c.run.kind == RunKind::shear) {
+            require(c.shear.has_value(), "shear.rate", "run.kind = \"shear\"", "shear");
+        }
+        check_grid(c.restitution);
+    }
+
+    void check_species(const CaseConfig& c) {
+        double sum = 0;
+        for (std::size_t i = 0; i < c.species.size(); ++i) {
+            const SpeciesConfig& s = c.species[i];
+            sum += s.fraction;
+            for (std::size_t j = 0; j < i; ++j) {
+                if (c.species[j].name == s.name) {
+                    add(fmt::format("species.{}.name", i),
+                        fmt::format("species.{}.name = \"{}\": must be unique (species.{} has it)", i, s.name, j),
+                        fmt::format("species.{}", i));
+                }
+            }
+            // Each species needs at least one simulated particle.
+            if (static_cast<double>(c.run.particles) * s.fraction < 1) {
+                add("run.particles", fmt::format("run.particles = {}: species \"{}\" (fraction {}) gets no particle "
+                                                 "(must be >= 1/fraction = {})",
+                                                 c.run.particles, s.name, s.fraction, std::ceil(1 / s.fraction)));
+            }
+        }
+        if (!c.species.empty() && std::abs(sum - 1) > 1e-9) {
+            add("species.fraction", fmt::format("species.fraction: the fractions sum to {}, must sum to 1 (within "
+                                                "1e-9)", sum), "species.0.fraction");
+        }
+    }
+
+    void check_pair(const CaseConfig& c, std::size_t i) {
+        const std::string key = fmt::format("pair.{}.species", i);
+        std::vector<std::string> names;
+        for (const SpeciesConfig& s : c.species) names.push_back("\"" + s.name + "\"");
+        const auto& p = c.pairs[i].species;
+        for (const std::string& n : p) {
+            const bool known = std::any_of(c.species.begin(), c.species.end(),
+                                           [&](const SpeciesConfig& s) { return s.name == n; });
+            if (!known) {
+                add(key, fmt::format("{} = [\"{}\", \"{}\"]: \"{}\" is not a species (must be one of {})", key, p[0],
+                                     p[1], n, join(names)));
+            }
+        }
+        for (std::size_t j = 0; j < i; ++j) {
+            const auto& q = c.pairs[j].species;
+            if ((q[0] == p[0] && q[1] == p[1]) || (q[0] == p[1] && q[1] == p[0])) {
+                add(key, fmt::format("{} = [\"{}\", \"{}\"]: pair.{} already sets this pair (one [[pair]] per pair)",
+                                     key, p[0], p[1], j));
+            }
+        }
+    }
+
+    void check_collision(const CollisionConfig& c, const std::string& prefix) {
+        const std::string why = fmt::format("{}.model = \"{}\"", prefix, name(c.model));
+        switch (c.model) {
+        case CollisionModel::constant:
+            require(c.alpha.has_value(), prefix + ".alpha", why, prefix);
+            require(c.beta.has_value(), prefix + ".beta", why, prefix);
+            break;
+        case CollisionModel::coulomb:
+            require(c.alpha.has_value(), prefix + ".alpha", why, prefix);
+            require(c.beta0.has_value(), prefix + ".beta0", why, prefix);
+            require(c.friction.has_value(), prefix + ".friction", why, prefix);
+            break;
+        case CollisionModel::viscoelastic:
+        case CollisionModel::brilliantov:
+            material_users_.push_back(why);
+            if (c.model == CollisionModel::brilliantov) asperity_users_.push_back(why);
+            break;
+        }
+    }
+
+    void check_material(const CaseConfig& c) {
+        if (use_ == CaseUse::restitution) {
+            material_users_.push_back("roughgas restitution");
+            asperity_users_.push_back("roughgas restitution");
+        }
+        if (material_users_.empty()) return;
+        if (!c.material) {
+            add("material", fmt::format("material: the [material] table is required for {} but missing "
+                                        "(young_modulus, poisson_ratio, dissipation{})",
+                                        join(material_users_), asperity_users_.empty() ? "" : ", friction, asperity"));
+            return;
+        }
+        if (!asperity_users_.empty()) {
+            require(c.material->friction.has_value(), "material.friction", join(asperity_users_), "material");
+            require(c.material->asperity.has_value(), "material.asperity", join(asperity_users_), "material");
+        }
+    }
+
+    void check_grid(const RestitutionGridConfig& g) {
+        if (g.g_n_max < g.g_n_min) {
+            add("restitution.g_n_max", fmt::format("restitution.g_n_max = {}: must be >= restitution.g_n_min = {} (m/s)",
+                                                   g.g_n_max, g.g_n_min));
+        }
+        if (g.g_t_max < g.g_t_min) {
+            add("restitution.g_t_max", fmt::format("restitution.g_t_max = {}: must be >= restitution.g_t_min = {} (m/s)",
+                                                   g.g_t_max, g.g_t_min));
+        }
+    }
+
+    const toml::table& root_;
+    CaseUse use_;
+    Diagnostics& d_;
+    std::vector<std::string> material_users_; // why [material] is needed
+    std::vector<std::string> asperity_users_; // why friction and asperity are needed
+};
+
+// ---------------------------------------------------------------------------------------------
+// Emission
+
+std::string quote(std::string_view s) {
+    std::string out = "\"";
+    for (const char c : s) {
+        switch (c) {
+        case '"': out += "\\\""; break;
+        case '\\': out += "\\\\"; break;
+        case '\n': out += "\\n"; break;
+        case '\t': out += "\\t"; break;
+        default:
+            if (static_cast<unsigned char>(c) < 0x20) {
+                out += fmt::format("\\u{:04x}", static_cast<int>(c));
+            } else {
+                out += c;
+            }
+        }
+    }
+    return out + "\"";
+}
+
+class Emitter {
+  public:
+    void header(std::string_view h) {
+        if (!text_.empty()) text_ += '\n';
+        text_.append(h).append("\n");
+    }
+    void put(std::string_view k, double x) { line(k, toml_real(x)); }
+    void put(std::string_view k, std::int64_t x) { line(k, std::to_string(x)); }
+    void put(std::string_view k, std::uint64_t x) { line(k, std::to_string(x)); }
+    void put(std::string_view k, bool b) { line(k, b ? "true" : "false"); }
+    void put(std::string_view k, std::string_view s) { line(k, quote(s)); }
+    void put(std::string_view k, const std::array<std::string, 2>& p) {
+        line(k, fmt::format("[{}, {}]", quote(p[0]), quote(p[1])));
+    }
+    void put(std::string_view k, const std::optional<double>& x) {
+        if (x) put(k, *x);
+    }
+    void collision(const CollisionConfig& c) {
+        put("model", name(c.model));
+        put("alpha", c.alpha);
+        put("beta", c.beta);
+        put("beta0", c.beta0);
+        put("friction", c.friction);
+        put("direct", c.direct);
+    }
+    std::string str() const { return text_; }
+
+  private:
+    void line(std::string_view k, const std::string& v) { text_ += fmt::format("{} = {}\n", k, v); }
+    std::string text_;
+};
+
+} // namespace
+
+// ---------------------------------------------------------------------------------------------
+
+CaseConfig parse_case(std::string_view toml_text, const std::string& file, const std::vector<std::string>& overrides,
+                      CaseUse use) {
+    toml::table root;
+    try {
+        root = toml::parse(toml_text, std::string_view(file));
+    } catch (const toml::parse_error& e) {
+        const toml::source_position p = e.source().begin;
+        throw InputError(file, "", "TOML syntax error: " + std::string(e.description()),
+                         p ? std::optional(SourcePosition{static_cast<int>(p.line), static_cast<int>(p.column)})
+                           : std::nullopt);
+    }
+    Diagnostics d(file);
+    for (const std::string& arg : overrides) {
+        apply_override(root, arg, d);
+    }
+    d.throw_if_any();
+    SchemaCheck(d).root(root);
+    d.throw_if_any(); // the builder relies on every present value having the right type
+    CaseConfig cfg = Builder(root, use, d).build();
+    d.throw_if_any();
+    return cfg;
+}
+
+CaseConfig load_case(const std::string& file, const std::vector<std::string>& overrides, CaseUse use) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) {
+        throw InputError(file, "", fmt::format("cannot read the case file ({})", std::strerror(errno)));
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parse_case(text.str(), file, overrides, use);
+}
+
+std::string emit_case(const CaseConfig& c) {
+    Emitter e;
+    e.header("[run]");
+    e.put("kind", name(c.run.kind));
+    e.put("particles", c.run.particles);
+    e.put("density", c.run.density);
+    e.put("replicas", c.run.replicas);
+    e.put("seed", c.run.seed);
+    e.put("end", c.run.end);
+    e.put("output_every", c.run.output_every);
+    e.put("output_spacing", name(c.run.output_spacing));
+    for (const SpeciesConfig& s : c.species) {
+        e.header("[[species]]");
+        e.put("name", s.name);
+        e.put("mass", s.mass);
+        e.put("radius", s.radius);
+        e.put("inertia", s.inertia);
+        e.put("fraction", s.fraction);
+        e.put("temperature", s.temperature);
+        e.put("rotational_temperature", s.rotational_temperature);
+    }
+    e.header("[collision]");
+    e.collision(c.collision);
+    for (const PairConfig& p : c.pairs) {
+        e.header("[[pair]]");
+        e.put("species", p.species);
+        e.collision(p.collision);
+    }
+    if (c.material) {
+        const MaterialConfig& m = *c.material;
+        e.header("[material]");
+        e.put("young_modulus", m.young_modulus);
+        e.put("poisson_ratio", m.poisson_ratio);
+        if (m.eta1 && m.eta2) { // A was derived: echo what the user gave, so that it reads back the same
+            e.put("eta1", m.eta1);
+            e.put("eta2", m.eta2);
+        } else {
+            e.put("dissipation", m.dissipation);
+        }
+        e.put("friction", m.friction);
+        e.put("asperity", m.asperity);
+    }
+    e.header("[contact]");
+    e.put("form", name(c.contact.model.form));
+    e.put("end", name(c.contact.model.end));
+    e.put("cache", c.contact.cache);
+    e.put("cache_file", c.contact.cache_file);
+    e.put("tolerance", c.contact.tolerance.rel);
+    if (c.shear) {
+        e.header("[shear]");
+        e.put("rate", c.shear->rate);
+    }
+    e.header("[restitution]");
+    e.put("g_n_min", c.restitution.g_n_min);
+    e.put("g_n_max", c.restitution.g_n_max);
+    e.put("g_n_points", c.restitution.g_n_points);
+    e.put("g_t_min", c.restitution.g_t_min);
+    e.put("g_t_max", c.restitution.g_t_max);
+    e.put("g_t_points", c.restitution.g_t_points);
+    e.put("spacing", name(c.restitution.spacing));
+    return e.str();
+}
+
+} // namespace roughgas

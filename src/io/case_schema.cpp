@@ -1,0 +1,313 @@
+// The case-file schema: every key once, in the order the README lists them.
+#include "roughgas/io/case_schema.hpp"
+
+#include "roughgas/contact/contact_model.hpp"
+#include "roughgas/io/case_config.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+namespace roughgas {
+namespace {
+
+// A small builder keeps the list below one readable line per property.
+class Key {
+  public:
+    Key(std::string path, KeyType type) {
+        spec_.path = std::move(path);
+        spec_.type = type;
+    }
+    Key& unit(std::string u) { spec_.unit = std::move(u); return *this; }
+    Key& fallback(KeyDefault d) { spec_.need = Need::defaulted; spec_.default_value = std::move(d); return *this; }
+    Key& required() { spec_.need = Need::required; return *this; }
+    Key& when(std::string note) { spec_.need = Need::conditional; spec_.note = std::move(note); return *this; }
+    Key& optional() { spec_.need = Need::optional; return *this; }
+    Key& gt(double x, std::string text = {}) { spec_.lower = {Bound::open, x, std::move(text)}; return *this; }
+    Key& ge(double x, std::string text = {}) { spec_.lower = {Bound::closed, x, std::move(text)}; return *this; }
+    Key& lt(double x, std::string text = {}) { spec_.upper = {Bound::open, x, std::move(text)}; return *this; }
+    Key& le(double x, std::string text = {}) { spec_.upper = {Bound::closed, x, std::move(text)}; return *this; }
+    template <std::size_t N> Key& one_of(const std::array<std::string_view, N>& names) {
+        spec_.choices.assign(names.begin(), names.end());
+        return *this;
+    }
+    Key& doc(std::string d) { spec_.description = std::move(d); return *this; }
+    KeySpec spec() const { return spec_; }
+
+  private:
+    KeySpec spec_;
+};
+
+using T = KeyType;
+
+// The collision keys appear twice: in [collision] and, inherited from it, in each [[pair]].
+std::vector<Key> collision_keys(const std::string& table) {
+    const std::string t = table + ".";
+    return {
+        Key(t + "model", T::string).required().one_of(collision_model_names)
+            .doc("restitution model: constant alpha, beta; coulomb (Walton: constant alpha, beta from "
+                 "Coulomb friction); viscoelastic (eps^N from the contact, seed 000); brilliantov "
+                 "(eps^N and eps^T from the contact with asperities, seed 000)"),
+        Key(t + "alpha", T::real).when("required for model = constant, coulomb").ge(0).le(1)
+            .doc("normal restitution coefficient alpha: (g^N)' = -alpha g^N"),
+        Key(t + "beta", T::real).when("required for model = constant; viscoelastic: -1.0 (smooth) if unset")
+            .ge(-1).le(1)
+            .doc("tangential restitution coefficient beta = -eps^T: -1 smooth, +1 perfectly rough"),
+        Key(t + "beta0", T::real).when("required for model = coulomb").ge(-1).le(1)
+            .doc("coulomb: beta while the contact sticks (beta = min(beta0, Coulomb sliding limit))"),
+        Key(t + "friction", T::real).when("required for model = coulomb").ge(0)
+            .doc("coulomb: friction coefficient mu of the sliding limit (not the material's)"),
+        Key(t + "direct", T::boolean).fallback(false)
+            .doc("viscoelastic, brilliantov: integrate the contact at every collision instead of using "
+                 "the cached table (contact.cache = false does this for every pair)"),
+    };
+}
+
+std::vector<Key> keys() {
+    std::vector<Key> k = {
+        // [run]
+        Key("run.kind", T::string).fallback(std::string("cooling")).one_of(run_kind_names)
+            .doc("cooling: homogeneous cooling state; shear: uniform shear flow (needs [shear])"),
+        Key("run.particles", T::integer).required().ge(2)
+            .doc("simulated particles (statistics only: results do not depend on it)"),
+        Key("run.density", T::real).unit("1/length^3").fallback(1.0).gt(0)
+            .doc("number density n of the gas (sets the time scale)"),
+        Key("run.replicas", T::integer).fallback(std::int64_t{1}).ge(1)
+            .doc("independent runs averaged; each column X gets X_err when > 1"),
+        Key("run.seed", T::integer).fallback(std::int64_t{1}).ge(0)
+            .doc("random seed (same seed, same run)"),
+        Key("run.end", T::real).unit("collisions per particle").required().gt(0)
+            .doc("length of the run"),
+        Key("run.output_every", T::real).unit("collisions per particle").fallback(1.0).gt(0)
+            .doc("linear: interval between outputs; log: time of the first output"),
+        Key("run.output_spacing", T::string).fallback(std::string("linear")).one_of(output_spacing_names)
+            .doc("linear: every output_every; log: at output_every x 10^(k/10), k = 0, 1, ... (10 per decade)"),
+        // [[species]]
+        Key("species.name", T::string).fallback(std::string("grain"))
+            .doc("unique name, used by [[pair]] and in column names"),
+        Key("species.mass", T::real).unit("mass").required().gt(0).doc("particle mass m"),
+        Key("species.radius", T::real).unit("length").required().gt(0).doc("particle radius R"),
+        Key("species.inertia", T::real).fallback(0.4).gt(0).le(2.0 / 3.0, "2/3")
+            .doc("q = J/(m R^2): 0.4 uniform sphere; 2/3 thin spherical shell, the largest for mass inside R"),
+        Key("species.fraction", T::real).fallback(1.0).gt(0).le(1)
+            .doc("number fraction; the fractions of all species sum to 1 (within 1e-9)"),
+        Key("species.temperature", T::real).unit("energy").fallback(1.0).gt(0)
+            .doc("initial translational temperature T_tr (k_B = 1)"),
+        Key("species.rotational_temperature", T::real).unit("energy").fallback(1.0).ge(0)
+            .doc("initial rotational temperature T_rot"),
+    };
+    for (Key& c : collision_keys("collision")) {
+        k.push_back(std::move(c));
+    }
+    // [[pair]]: the same keys, each falling back to [collision].
+    k.push_back(Key("pair.species", T::string_pair).required()
+                    .doc("the two species of the pair, e.g. [\"a\", \"b\"] (order irrelevant, one table per pair)"));
+    for (Key& c : collision_keys("pair")) {
+        KeySpec s = c.spec();
+        const std::string from = "collision." + std::string(s.name());
+        c.when("value of " + from).doc("as " + from + ", for this pair");
+        k.push_back(std::move(c));
+    }
+    const std::vector<Key> rest = {
+        // [material]
+        Key("material.young_modulus", T::real).unit("Pa").required().gt(0).doc("Young's modulus Y"),
+        Key("material.poisson_ratio", T::real).required().gt(-1).lt(0.5).doc("Poisson ratio nu"),
+        Key("material.dissipation", T::real).unit("s").when("required unless eta1 and eta2 are given").ge(0)
+            .doc("dissipative constant A of seed 000 eq. 23"),
+        Key("material.eta1", T::real).unit("Pa s").optional().ge(0)
+            .doc("viscous constant eta_1: with eta2, gives A by seed 000 eq. 23 (instead of dissipation)"),
+        Key("material.eta2", T::real).unit("Pa s").optional().ge(0)
+            .doc("viscous constant eta_2 (with eta1; needs poisson_ratio != 0)"),
+        Key("material.friction", T::real).when("required for model = brilliantov and roughgas restitution").ge(0)
+            .doc("friction coefficient mu of the asperity model (seed 000 eqs. 35-37)"),
+        Key("material.asperity", T::real).unit("m").when("required for model = brilliantov and roughgas restitution")
+            .gt(0).doc("asperity scale zeta_0 (seed 000 eq. 32)"),
+        // [contact]
+        Key("contact.form", T::string).fallback(std::string("eq24")).one_of(normal_form_names)
+            .doc("normal force law: seed 000 eq. 24 or eq. 25"),
+        Key("contact.end", T::string).fallback(std::string("force")).one_of(contact_end_names)
+            .doc("end of contact: force (normal force reaches 0) or separation (xi = 0), physics.md §6"),
+        Key("contact.cache", T::boolean).fallback(true)
+            .doc("use a tabulated eps(g) built once; false: integrate every collision directly"),
+        Key("contact.cache_file", T::string).fallback(std::string(""))
+            .doc("file the table is saved to and reused from; \"\": not saved"),
+        Key("contact.tolerance", T::real).fallback(1e-12).ge(1e-15).le(1e-3)
+            .doc("relative error tolerance of the contact integration (absolute: tolerance/100)"),
+        // [shear]
+        Key("shear.rate", T::real).unit("1/time").when("required for run.kind = shear").gt(0)
+            .doc("shear rate a of the uniform shear flow"),
+        // [restitution]
+        Key("restitution.g_n_min", T::real).unit("m/s").fallback(1e-4).gt(0).doc("smallest normal impact speed"),
+        Key("restitution.g_n_max", T::real).unit("m/s").fallback(10.0).gt(0)
+            .doc("largest normal impact speed (>= g_n_min)"),
+        Key("restitution.g_n_points", T::integer).fallback(std::int64_t{60}).ge(1)
+            .doc("number of g_N values (1: g_n_min only)"),
+        Key("restitution.g_t_min", T::real).unit("m/s").fallback(1e-4).gt(0).doc("smallest tangential speed"),
+        Key("restitution.g_t_max", T::real).unit("m/s").fallback(10.0).gt(0)
+            .doc("largest tangential speed (>= g_t_min)"),
+        Key("restitution.g_t_points", T::integer).fallback(std::int64_t{60}).ge(1)
+            .doc("number of g_T values (1: g_t_min only)"),
+        Key("restitution.spacing", T::string).fallback(std::string("log")).one_of(grid_spacing_names)
+            .doc("spacing of both grids: log (geometric) or linear"),
+    };
+    k.insert(k.end(), rest.begin(), rest.end());
+    return k;
+}
+
+std::string limit_text(const Limit& l) { return l.text.empty() ? fmt::format("{}", l.value) : l.text; }
+
+std::string quoted(std::string_view s) { return fmt::format("\"{}\"", s); }
+
+std::string markdown_cell(std::string s) {
+    // A '|' would split the cell.
+    std::string out;
+    for (char c : s) {
+        out += c == '|' ? std::string("\\|") : std::string(1, c);
+    }
+    return out;
+}
+
+} // namespace
+
+std::string toml_real(double x) {
+    std::string s = fmt::format("{}", x);
+    if (s.find_first_of(".eEn") == std::string::npos) { // "n": inf, nan
+        s += ".0";
+    }
+    return s;
+}
+
+std::string_view KeySpec::table() const { return std::string_view(path).substr(0, path.find('.')); }
+
+std::string_view KeySpec::name() const { return std::string_view(path).substr(path.find('.') + 1); }
+
+std::string KeySpec::allowed() const {
+    if (!choices.empty()) {
+        std::string s = "one of ";
+        for (std::size_t i = 0; i < choices.size(); ++i) {
+            s += (i ? ", " : "") + quoted(choices[i]);
+        }
+        return s;
+    }
+    const bool lo = lower.bound != Bound::none;
+    const bool hi = upper.bound != Bound::none;
+    if (lo && hi) {
+        return fmt::format("in {}{}, {}{}", lower.bound == Bound::open ? '(' : '[', limit_text(lower),
+                           limit_text(upper), upper.bound == Bound::open ? ')' : ']');
+    }
+    if (lo) {
+        return fmt::format("{} {}", lower.bound == Bound::open ? ">" : ">=", limit_text(lower));
+    }
+    if (hi) {
+        return fmt::format("{} {}", upper.bound == Bound::open ? "<" : "<=", limit_text(upper));
+    }
+    return {};
+}
+
+std::string KeySpec::default_text() const {
+    switch (need) {
+    case Need::required: return "required";
+    case Need::conditional: return note;
+    case Need::optional: return "unset";
+    case Need::defaulted: break;
+    }
+    struct Text {
+        std::string operator()(std::monostate) const { return "unset"; }
+        std::string operator()(bool b) const { return b ? "true" : "false"; }
+        std::string operator()(std::int64_t i) const { return std::to_string(i); }
+        std::string operator()(double d) const { return toml_real(d); }
+        std::string operator()(const std::string& s) const { return quoted(s); }
+    };
+    return std::visit(Text{}, default_value);
+}
+
+std::string KeySpec::type_name() const {
+    switch (type) {
+    case KeyType::boolean: return "boolean";
+    case KeyType::integer: return "integer";
+    case KeyType::real: return "real";
+    case KeyType::string: return "string";
+    case KeyType::string_pair: return "[string, string]";
+    }
+    return "?";
+}
+
+bool KeySpec::allows(double x) const {
+    const auto above = [&](const Limit& l) {
+        return l.bound == Bound::none || (l.bound == Bound::open ? x > l.value : x >= l.value);
+    };
+    const auto below = [&](const Limit& l) {
+        return l.bound == Bound::none || (l.bound == Bound::open ? x < l.value : x <= l.value);
+    };
+    return above(lower) && below(upper);
+}
+
+bool KeySpec::allows(std::string_view s) const {
+    return choices.empty() || std::find(choices.begin(), choices.end(), s) != choices.end();
+}
+
+const std::vector<TableSpec>& case_tables() {
+    static const std::vector<TableSpec> tables = {
+        {"run", false, "required", "what to simulate and for how long"},
+        {"species", true, "required (at least one)", "one table per species of grains"},
+        {"collision", false, "required", "the collision rule of every pair without a [[pair]] table"},
+        {"pair", true, "optional", "mixtures: the collision rule of one species pair (keys default to [collision])"},
+        {"material", false, "required for model = viscoelastic, brilliantov and roughgas restitution",
+         "material of the grains (SI)"},
+        {"contact", false, "optional", "how the contact of viscoelastic and brilliantov is integrated"},
+        {"shear", false, "required for run.kind = shear", "uniform shear flow"},
+        {"restitution", false, "optional", "the grid that roughgas restitution tabulates"},
+    };
+    return tables;
+}
+
+const std::vector<KeySpec>& case_schema() {
+    // Built once on first use; immutable afterwards.
+    static const std::vector<KeySpec> schema = [] {
+        std::vector<KeySpec> s;
+        for (const Key& k : keys()) {
+            s.push_back(k.spec());
+        }
+        return s;
+    }();
+    return schema;
+}
+
+const TableSpec* find_table(std::string_view name) {
+    const auto& t = case_tables();
+    const auto it = std::find_if(t.begin(), t.end(), [&](const TableSpec& s) { return s.name == name; });
+    return it == t.end() ? nullptr : &*it;
+}
+
+const KeySpec* find_key(std::string_view path) {
+    const auto& s = case_schema();
+    const auto it = std::find_if(s.begin(), s.end(), [&](const KeySpec& k) { return k.path == path; });
+    return it == s.end() ? nullptr : &*it;
+}
+
+std::string case_keys_markdown() {
+    std::string md = "| Key | Type | Unit | Default | Allowed | Description |\n"
+                     "|-----|------|------|---------|---------|-------------|\n";
+    for (const KeySpec& k : case_schema()) {
+        const std::string unit = k.unit.empty() ? "-" : k.unit;
+        const std::string allowed = k.allowed().empty() ? "any" : k.allowed();
+        md += fmt::format("| `{}` | {} | {} | {} | {} | {} |\n", k.path, markdown_cell(k.type_name()),
+                          markdown_cell(unit), markdown_cell(k.default_text()), markdown_cell(allowed),
+                          markdown_cell(k.description));
+    }
+    return md;
+}
+
+std::string case_tables_markdown() {
+    std::string md = "| Table | Presence | Contents |\n"
+                     "|-------|----------|----------|\n";
+    for (const TableSpec& t : case_tables()) {
+        const std::string header = t.array ? "[[" + t.name + "]]" : "[" + t.name + "]";
+        md += fmt::format("| `{}` | {} | {} |\n", header, markdown_cell(t.requirement), markdown_cell(t.description));
+    }
+    return md;
+}
+
+} // namespace roughgas

@@ -1,0 +1,236 @@
+// The real binary: exit statuses, messages on stderr, and that invalid input writes nothing.
+#include "io_test_support.hpp"
+
+#include "roughgas/io/case_file.hpp"
+
+#include <gtest/gtest.h>
+
+namespace roughgas {
+namespace {
+
+namespace fs = std::filesystem;
+using test::replaced;
+using test::small_case;
+
+struct BadInput {
+    std::string name;
+    std::string case_text; // the case file
+    std::string sets;      // extra command-line arguments
+    std::string key;       // the message must name it ...
+    std::string allowed;   // ... and what is allowed
+};
+
+std::string constant_model() {
+    return replaced(small_case(), "model = \"brilliantov\"", "model = \"constant\"\nalpha = 0.9\nbeta = 0.0");
+}
+
+std::string two_species(double f0, double f1) {
+    return replaced(small_case(), "[collision]",
+                    "fraction = " + std::to_string(f0) +
+                        "\n\n[[species]]\nname = \"b\"\nmass = 1e-3\nradius = 0.005\nfraction = " +
+                        std::to_string(f1) + "\n\n[collision]");
+}
+
+std::vector<BadInput> bad_inputs() {
+    const std::string c = small_case();
+    return {
+        {"NegativeYoungModulus", c, "--set material.young_modulus=-1e10", "material.young_modulus", "must be > 0 (Pa)"},
+        {"NegativeYoungModulusInFile", replaced(c, "young_modulus = 1.0e10", "young_modulus = -1e10"), "",
+         "material.young_modulus", "must be > 0 (Pa)"},
+        {"PoissonRatioTooLarge", c, "--set material.poisson_ratio=0.5", "material.poisson_ratio", "must be in (-1, 0.5)"},
+        {"PoissonRatioTooSmall", c, "--set material.poisson_ratio=-1", "material.poisson_ratio", "must be in (-1, 0.5)"},
+        {"NegativeDissipation", c, "--set material.dissipation=-1e-5", "material.dissipation", "must be >= 0 (s)"},
+        {"NegativeFriction", c, "--set material.friction=-0.1", "material.friction", "must be >= 0"},
+        {"ZeroAsperity", c, "--set material.asperity=0", "material.asperity", "must be > 0 (m)"},
+        {"NegativeAsperity", c, "--set material.asperity=-1e-6", "material.asperity", "must be > 0 (m)"},
+        {"MissingRequiredKey", replaced(c, "radius = 0.01\n", ""), "", "species.0.radius",
+         "required key is missing (must be a real number > 0 (length))"},
+        {"UnknownKey", replaced(c, "young_modulus", "youngs_modulus"), "", "material.youngs_modulus",
+         "unknown key (did you mean material.young_modulus?)"},
+        {"NegativeAlpha", constant_model(), "--set collision.alpha=-0.1", "collision.alpha", "must be in [0, 1]"},
+        {"AlphaAboveOne", constant_model(), "--set collision.alpha=1.01", "collision.alpha", "must be in [0, 1]"},
+        {"BetaAboveOne", constant_model(), "--set collision.beta=1.5", "collision.beta", "must be in [-1, 1]"},
+        {"BetaBelowMinusOne", constant_model(), "--set collision.beta=-1.5", "collision.beta", "must be in [-1, 1]"},
+        {"UnknownModel", c, "--set collision.model=granite", "collision.model",
+         "must be one of \"constant\", \"coulomb\", \"viscoelastic\", \"brilliantov\""},
+        {"ZeroParticles", c, "--set run.particles=0", "run.particles", "must be >= 2"},
+        {"FractionsNotSummingToOne", two_species(0.5, 0.4), "", "species.fraction", "must sum to 1 (within 1e-9)"},
+        {"MissingMaterialForRestitution", replaced(c, "asperity = 1.0e-6", ""), "--set collision.model=viscoelastic",
+         "material.asperity", "required for roughgas restitution"},
+    };
+}
+
+// gtest prints the parameter of a failing test with this.
+void PrintTo(const BadInput& b, std::ostream* os) { *os << b.name; }
+
+class InvalidInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(InvalidInput, ExitsWithStatus2NamingFileKeyAndRangeAndWritesNothing) {
+    const BadInput& b = GetParam();
+    const test::ScratchDir dir;
+    const fs::path case_file = dir.write("bad.toml", b.case_text);
+    const fs::path out = dir / "out";
+
+    const test::CommandResult r =
+        run_roughgas("restitution '" + case_file.string() + "' --out '" + out.string() + "' " + b.sets, dir);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find(case_file.string()), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(b.key), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(b.allowed), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_FALSE(fs::exists(out));
+
+    if (b.name != "MissingMaterialForRestitution") { // a valid case for a run
+        const test::CommandResult c = run_roughgas("check '" + case_file.string() + "' " + b.sets, dir);
+        EXPECT_EQ(c.status, 2) << c.err;
+        EXPECT_NE(c.err.find(b.allowed), std::string::npos) << c.err;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Cli, InvalidInput, ::testing::ValuesIn(bad_inputs()),
+                         [](const ::testing::TestParamInfo<BadInput>& info) { return info.param.name; });
+
+TEST(Cli, FileErrorsCarryLineAndColumn) {
+    const test::ScratchDir dir;
+    const fs::path f = dir.write("bad.toml", replaced(small_case(), "young_modulus = 1.0e10", "young_modulus = -1e10"));
+    const test::CommandResult r = run_roughgas("check '" + f.string() + "'", dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find(f.string() + ":14:17: material.young_modulus = "), std::string::npos) << r.err;
+}
+
+TEST(Cli, CheckAcceptsValidCaseAndOverrides) {
+    const test::ScratchDir dir;
+    const fs::path f = dir.write("ok.toml", small_case());
+    EXPECT_EQ(run_roughgas("check '" + f.string() + "'", dir).status, 0);
+    const test::CommandResult r = run_roughgas(
+        "check '" + f.string() + "' --set species.0.radius=0.5 --set 'collision.model=\"viscoelastic\"' --print", dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("radius = 0.5\n"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("model = \"viscoelastic\"\n"), std::string::npos) << r.out;
+    const test::CommandResult bare = run_roughgas("check '" + f.string() + "' --set collision.model=coulomb "
+                                                  "--set collision.alpha=0.8 --set collision.beta0=0.4 "
+                                                  "--set collision.friction=0.2 --print", dir);
+    EXPECT_EQ(bare.status, 0) << bare.err;
+    EXPECT_NE(bare.out.find("model = \"coulomb\"\n"), std::string::npos) << bare.out;
+}
+
+TEST(Cli, EveryShippedCasePassesCheck) {
+    const test::ScratchDir dir;
+    int n = 0;
+    for (const auto& e : fs::directory_iterator(fs::path(ROUGHGAS_SOURCE_DIR) / "cases")) {
+        if (e.path().extension() != ".toml") continue;
+        ++n;
+        const std::string f = e.path().string();
+        const test::CommandResult r = run_roughgas("check '" + f + "'", dir);
+        EXPECT_EQ(r.status, 0) << f << "\n" << r.err;
+        EXPECT_EQ(run_roughgas("check '" + f + "' --for restitution", dir).status, 0) << f;
+        const CaseConfig c = load_case(f);
+        EXPECT_EQ(parse_case(emit_case(c), "emitted.toml"), c) << f; // the echo in CSV headers reads back
+    }
+    EXPECT_GE(n, 4);
+}
+
+TEST(Cli, MalformedCommandLineIsInvalidInput) {
+    const test::ScratchDir dir;
+    const fs::path f = dir.write("ok.toml", small_case());
+    EXPECT_EQ(run_roughgas("check", dir).status, 2);
+    EXPECT_EQ(run_roughgas("check '" + f.string() + "' --no-such-option", dir).status, 2);
+    EXPECT_EQ(run_roughgas("restitution '" + f.string() + "'", dir).status, 2); // --out missing
+    EXPECT_EQ(run_roughgas("frobnicate", dir).status, 2);
+    EXPECT_EQ(run_roughgas("check '" + (dir / "absent.toml").string() + "'", dir).status, 2);
+    EXPECT_EQ(run_roughgas("--help", dir).status, 0);
+}
+
+TEST(Cli, RunAndSweepAreNotImplementedYet) {
+    const test::ScratchDir dir;
+    const fs::path f = dir.write("ok.toml", small_case());
+    const std::string out = (dir / "out").string();
+    test::CommandResult r = run_roughgas("run '" + f.string() + "' --out '" + out + "' --seed 3 --threads 2", dir);
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find("not implemented yet (DSMC: issue 3)"), std::string::npos) << r.err;
+    EXPECT_EQ(run_roughgas("run --resume '" + out + "'", dir).status, 1);
+    EXPECT_EQ(run_roughgas("run '" + f.string() + "' --out '" + out + "' --set run.end=-1", dir).status, 2);
+    r = run_roughgas("sweep '" + f.string() + "' --param run.end=1:100:5 --out '" + out + "'", dir);
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find("not implemented yet (DSMC: issue 3)"), std::string::npos) << r.err;
+    EXPECT_EQ(run_roughgas("sweep '" + f.string() + "' --param run.end=-1:100:5 --out '" + out + "'", dir).status, 2);
+    EXPECT_EQ(run_roughgas("sweep '" + f.string() + "' --param run.end=1:100 --out '" + out + "'", dir).status, 2);
+    EXPECT_FALSE(fs::exists(out));
+}
+
+// --- these run the contact integrator (tiny grids) ---
+
+std::vector<std::string> entries(const fs::path& dir) {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+// The rows of a CSV file (no '#' lines).
+std::vector<std::string> rows(const fs::path& p) {
+    std::istringstream in(test::read_file(p));
+    std::vector<std::string> r;
+    for (std::string line; std::getline(in, line);) {
+        if (!line.empty() && line[0] != '#') r.push_back(line);
+    }
+    return r;
+}
+
+TEST(Cli, RestitutionWritesBothTables) {
+    const test::ScratchDir dir;
+    const fs::path f = dir.write("ok.toml", small_case());
+    const fs::path out = dir / "out";
+    const test::CommandResult r = run_roughgas("restitution '" + f.string() + "' --out '" + out.string() +
+                                                   "' --set restitution.g_t_points=3",
+                                               dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(entries(out), (std::vector<std::string>{"normal.csv", "tangential.csv"})); // no temporary files
+    const std::vector<std::string> normal = rows(out / "normal.csv");
+    ASSERT_EQ(normal.size(), 3u);
+    EXPECT_EQ(normal[0], "g_N,w,eps_N,duration,max_compression");
+    EXPECT_EQ(normal[1].rfind("0.01,", 0), 0u) << normal[1];
+    const std::vector<std::string> tangential = rows(out / "tangential.csv");
+    ASSERT_EQ(tangential.size(), 1u + 2 * 3);
+    EXPECT_EQ(tangential[0], "g_N,g_T,eps_T,beta,breaks");
+    EXPECT_EQ(tangential[1].rfind("0.01,0.01,", 0), 0u) << tangential[1]; // g_N outer, g_T inner
+    EXPECT_EQ(tangential[2].rfind("0.01,0.10000000000000001,", 0), 0u) << tangential[2];
+    const std::string text = test::read_file(out / "normal.csv");
+    EXPECT_NE(text.find("# case: " + f.string() + "\n"), std::string::npos);
+    EXPECT_NE(text.find("# set: restitution.g_t_points=3\n"), std::string::npos);
+    EXPECT_NE(text.find("# g_t_points = 3\n"), std::string::npos); // the resolved case
+}
+
+TEST(Cli, ExistingOutputIsRefusedWithoutForce) {
+    const test::ScratchDir dir;
+    const fs::path f = dir.write("ok.toml", small_case());
+    const fs::path out = dir / "out";
+    const std::string cmd = "restitution '" + f.string() + "' --out '" + out.string() + "'";
+    ASSERT_EQ(run_roughgas(cmd, dir).status, 0);
+    const std::string before = test::read_file(out / "normal.csv");
+
+    const test::CommandResult again = run_roughgas(cmd + " --set material.dissipation=2e-5", dir);
+    EXPECT_EQ(again.status, 2);
+    EXPECT_NE(again.err.find("normal.csv exists (use --force to overwrite)"), std::string::npos) << again.err;
+    EXPECT_EQ(test::read_file(out / "normal.csv"), before);
+
+    ASSERT_EQ(run_roughgas(cmd + " --set material.dissipation=2e-5 --force", dir).status, 0);
+    EXPECT_NE(test::read_file(out / "normal.csv"), before);
+    EXPECT_EQ(entries(out), (std::vector<std::string>{"normal.csv", "tangential.csv"}));
+
+    const fs::path file = dir.write("plain_file", "x");
+    EXPECT_EQ(run_roughgas("restitution '" + f.string() + "' --out '" + file.string() + "' --force", dir).status, 2);
+}
+
+TEST(Cli, RestitutionOutputDoesNotDependOnThreads) {
+    const test::ScratchDir dir;
+    const fs::path f = dir.write("ok.toml", small_case());
+    const std::string base = "restitution '" + f.string() + "' --set restitution.g_n_points=3 --out '";
+    ASSERT_EQ(run_roughgas(base + (dir / "t1").string() + "' --threads 1", dir).status, 0);
+    ASSERT_EQ(run_roughgas(base + (dir / "t2").string() + "' --threads 2", dir).status, 0);
+    EXPECT_EQ(rows(dir / "t1" / "normal.csv"), rows(dir / "t2" / "normal.csv"));
+    EXPECT_EQ(rows(dir / "t1" / "tangential.csv"), rows(dir / "t2" / "tangential.csv"));
+}
+
+} // namespace
+} // namespace roughgas

@@ -1,0 +1,118 @@
+#pragma once
+// Shared helpers of the io tests: a scratch directory per test and running the real binary.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace roughgas::test {
+
+namespace fs = std::filesystem;
+
+// A fresh directory named after the running test, removed afterwards.
+class ScratchDir {
+  public:
+    ScratchDir() {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        std::string name = std::string(info->test_suite_name()) + "_" + info->name();
+        for (char& c : name) {
+            if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+        }
+        path_ = fs::path(::testing::TempDir()) / ("roughgas_io_" + name + "_" + std::to_string(::getpid()));
+        fs::remove_all(path_);
+        fs::create_directories(path_);
+    }
+    ~ScratchDir() {
+        std::error_code ec;
+        fs::remove_all(path_, ec);
+    }
+    ScratchDir(const ScratchDir&) = delete;
+    ScratchDir& operator=(const ScratchDir&) = delete;
+
+    const fs::path& path() const { return path_; }
+    fs::path operator/(const std::string& name) const { return path_ / name; }
+
+    // Writes `text` to `name` and returns the path.
+    fs::path write(const std::string& name, const std::string& text) const {
+        const fs::path p = path_ / name;
+        std::ofstream(p) << text;
+        return p;
+    }
+
+  private:
+    fs::path path_;
+};
+
+inline std::string read_file(const fs::path& p) {
+    std::ifstream in(p);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+struct CommandResult {
+    int status = -1;
+    std::string out;
+    std::string err;
+};
+
+// Runs `roughgas ARGS` (ARGS is passed through the shell: quote as needed) in `dir`.
+inline CommandResult run_roughgas(const std::string& args, const ScratchDir& dir) {
+    const fs::path out = dir / "stdout.txt";
+    const fs::path err = dir / "stderr.txt";
+    const std::string cmd = std::string("'") + ROUGHGAS_BINARY + "' " + args + " >'" + out.string() + "' 2>'" +
+                            err.string() + "'";
+    const int raw = std::system(cmd.c_str());
+    CommandResult r;
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.out = read_file(out);
+    r.err = read_file(err);
+    fs::remove(out);
+    fs::remove(err);
+    return r;
+}
+
+// A complete, valid case that tabulates fast: ice of seed 000 on a 2 x 2 restitution grid.
+inline std::string small_case() {
+    return R"([run]
+particles = 1000
+end = 10.0
+
+[[species]]
+name = "ice"
+mass = 4.188790204786391e-3
+radius = 0.01
+
+[collision]
+model = "brilliantov"
+
+[material]
+young_modulus = 1.0e10
+poisson_ratio = 0.3
+dissipation = 1.0e-5
+friction = 1.0e-3
+asperity = 1.0e-6
+
+[restitution]
+g_n_min = 0.01
+g_n_max = 1.0
+g_n_points = 2
+g_t_min = 0.01
+g_t_max = 1.0
+g_t_points = 2
+)";
+}
+
+// `text` with the first occurrence of `from` replaced by `to` (the test fails if absent).
+inline std::string replaced(std::string text, const std::string& from, const std::string& to) {
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    return text;
+}
+
+} // namespace roughgas::test
