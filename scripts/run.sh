@@ -9,5 +9,8 @@ case_file="${1:-$root/cases/ice.toml}"
 name=$(basename "$case_file" .toml)
 out="${ROUGHGAS_OUT:-$root/out/$name}"
 "${ROUGHGAS_BUILD_DIR:-$root/build}/roughgas" restitution "$case_file" --out "$out" --force
-"$root/scripts/python3" "$root/scripts/plot_restitution.py" "$out"
+# The ice cases also draw the measured ice law their dissipation A was fitted to (paper Fig. 1).
+plot_args=()
+case "$name" in ice*) plot_args+=(--bridges) ;; esac
+"$root/scripts/python3" "$root/scripts/plot_restitution.py" "$out" "${plot_args[@]}"
 echo "run: results in $out"

@@ -31,11 +31,13 @@ int run_check(const CheckOptions& o) {
 
 Subcommand add_check_command(CLI::App& parent) {
     auto o = std::make_shared<CheckOptions>();
-    CLI::App* app = parent.add_subcommand("check", "parse and validate a case file (exit 0 valid, 2 invalid)");
+    CLI::App* app =
+        parent.add_subcommand("check", "parse and validate a case file (exit 0 valid, 2 invalid)");
     app->add_option("CASE", o->case_file, "case file (TOML)")->required();
     add_set_option(*app, o->sets);
     const std::map<std::string, CaseUse> uses{{"run", CaseUse::run}, {"restitution", CaseUse::restitution}};
-    app->add_option("--for", o->use, "validate for: run (default) or restitution (also needs a full [material])")
+    app->add_option("--for", o->use,
+                    "validate for: run (default) or restitution (also needs a full [material])")
         ->transform(CLI::CheckedTransformer(uses));
     app->add_flag("--print", o->print, "print the resolved case (every default filled in) as TOML");
     return {app, [o] { return run_check(*o); }};

@@ -10,8 +10,8 @@
 namespace roughgas::cli {
 
 struct Subcommand {
-    CLI::App* app = nullptr;   // parsed() says whether this one was chosen
-    std::function<int()> run;  // returns the exit status (throws InputError for invalid input)
+    CLI::App* app = nullptr;  // parsed() says whether this one was chosen
+    std::function<int()> run; // returns the exit status (throws InputError for invalid input)
 };
 
 Subcommand add_run_command(CLI::App& parent);
@@ -22,8 +22,10 @@ Subcommand add_keys_command(CLI::App& parent); // hidden: prints the README tabl
 
 // `--set KEY=VALUE`, repeatable, one value per occurrence (so it cannot swallow CASE.toml).
 inline CLI::Option* add_set_option(CLI::App& app, std::vector<std::string>& sets) {
-    return app.add_option("--set", sets, "override a case-file key before validation, e.g. collision.alpha=0.7 "
-                                         "or species.0.radius=0.5 (repeatable)")
+    return app
+        .add_option("--set", sets,
+                    "override a case-file key before validation, e.g. collision.alpha=0.7 "
+                    "or species.0.radius=0.5 (repeatable)")
         ->allow_extra_args(false);
 }
 

@@ -9,6 +9,9 @@
 #include "roughgas/io/case_file.hpp"
 #include "roughgas/io/csv_writer.hpp"
 #include "roughgas/io/restitution_csv.hpp"
+#include "roughgas/io/table_cache_file.hpp"
+#include "roughgas/restitution/normal_table.hpp"
+#include "roughgas/restitution/tangential_table.hpp"
 
 #include <fmt/format.h>
 #include <omp.h>
@@ -18,6 +21,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace roughgas::cli {
 namespace {
@@ -54,7 +58,8 @@ std::vector<double> grid(double lo, double hi, std::int64_t n, GridSpacing spaci
         const double t = n > 1 ? static_cast<double>(k) / static_cast<double>(n - 1) : 0.0;
         g[k] = spacing == GridSpacing::log ? lo * std::pow(hi / lo, t) : lo + (hi - lo) * t;
     }
-    if (n > 1) g.back() = hi;
+    if (n > 1)
+        g.back() = hi;
     return g;
 }
 
@@ -68,10 +73,12 @@ template <class F> void parallel_for(std::size_t n, int threads, F&& f) {
             f(static_cast<std::size_t>(k));
         } catch (...) {
 #pragma omp critical(roughgas_restitution_error)
-            if (!error) error = std::current_exception();
+            if (!error)
+                error = std::current_exception();
         }
     }
-    if (error) std::rethrow_exception(error);
+    if (error)
+        std::rethrow_exception(error);
 }
 
 CsvProvenance provenance(const RestitutionOptions& o, const CaseConfig& cfg, const ContactPair& pc) {
@@ -81,14 +88,55 @@ CsvProvenance provenance(const RestitutionOptions& o, const CaseConfig& cfg, con
     p.overrides = o.sets;
     p.resolved_case = emit_case(cfg);
     p.notes = {
-        fmt::format("pair: species \"{}\" with \"{}\": m_eff = {:.17g} kg, R_eff = {:.17g} m, kappa = {:.17g}",
-                    cfg.species[i].name, cfg.species[j].name, pc.m_eff, pc.R_eff, pc.kappa),
-        fmt::format("contact: {}, end = {}, rho = {:.17g} m^-1/2 s^-2, A = {:.17g} s, mu = {:.17g}, zeta0 = {:.17g} m",
+        fmt::format(
+            "pair: species \"{}\" with \"{}\": m_eff = {:.17g} kg, R_eff = {:.17g} m, kappa = {:.17g}",
+            cfg.species[i].name, cfg.species[j].name, pc.m_eff, pc.R_eff, pc.kappa),
+        fmt::format("contact: {}, end = {}, rho = {:.17g} m^-1/2 s^-2, A = {:.17g} s, mu = {:.17g}, zeta0 = "
+                    "{:.17g} m",
                     name(pc.model.form), name(pc.model.end), pc.rho, pc.A, pc.mu, pc.zeta0),
         fmt::format("direct integration, tolerance rel = {:.3g}, abs = {:.3g}", cfg.contact.tolerance.rel,
                     cfg.contact.tolerance.abs),
     };
     return p;
+}
+
+// The cached tables a DSMC run would use for this pair (contact.cache = true), through the case's
+// cache file if it names one; build times go to stderr.
+struct CachedTables {
+    NormalTable normal;
+    TangentialTable tangential;
+};
+
+CachedTables load_or_build_tables(const CaseConfig& cfg, const ContactPair& pc) {
+    std::optional<TableCacheFile> cache;
+    if (!cfg.contact.cache_file.empty()) {
+        cache.emplace(cfg.contact.cache_file);
+        if (!cache->rejected().empty())
+            std::cerr << fmt::format("roughgas: cache file {} rejected ({}): rebuilding\n", cfg.contact.cache_file,
+                                     cache->rejected());
+    }
+    TableCacheFile* file = cache ? &*cache : nullptr;
+    const NormalTableOptions nopt{};
+    TangentialTableOptions topt;
+    topt.g_min = cfg.restitution.g_n_min;
+    topt.g_max = cfg.restitution.g_n_max;
+    topt.tol = cfg.contact.tolerance;
+    bool loaded_n = false, loaded_t = false;
+    NormalTable normal = load_or_build<NormalTable>(
+        file, NormalTable::key_for(pc.model, nopt), [&] { return NormalTable::build(pc.model, nopt); },
+        [&](const std::vector<double>& d) { return NormalTable::deserialize(pc.model, nopt, d); }, &loaded_n);
+    TangentialTable tangential = load_or_build<TangentialTable>(
+        file, TangentialTable::key_for(pc, topt), [&] { return TangentialTable::build(pc, topt); },
+        [&](const std::vector<double>& d) { return TangentialTable::deserialize(pc, topt, d); }, &loaded_t);
+    if (cache) cache->save_if_changed();
+    std::cerr << fmt::format("roughgas: eps_N table {}; eps_T table {}\n",
+                             loaded_n ? "loaded from " + cfg.contact.cache_file
+                                      : fmt::format("built in {:.2f} s", normal.build_seconds()),
+                             loaded_t ? "loaded from " + cfg.contact.cache_file
+                                      : fmt::format("built in {:.2f} s ({} samples)", tangential.stats().build_seconds,
+                                                    tangential.stats().breaking.samples + tangential.stats().unbroken.samples +
+                                                        tangential.stats().critical.samples));
+    return {std::move(normal), std::move(tangential)};
 }
 
 int run_restitution(const RestitutionOptions& o) {
@@ -103,33 +151,48 @@ int run_restitution(const RestitutionOptions& o) {
     const std::vector<double> g_n = grid(gc.g_n_min, gc.g_n_max, gc.g_n_points, gc.spacing);
     const std::vector<double> g_t = grid(gc.g_t_min, gc.g_t_max, gc.g_t_points, gc.spacing);
     const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
+    omp_set_num_threads(threads); // the table builds use the same threads
 
     std::vector<ContactResult> normal(g_n.size());
-    parallel_for(g_n.size(), threads, [&](std::size_t k) { normal[k] = integrate_normal_contact(pc, g_n[k], tol); });
+    parallel_for(g_n.size(), threads,
+                 [&](std::size_t k) { normal[k] = integrate_normal_contact(pc, g_n[k], tol); });
     std::vector<ContactResult> tangential(g_n.size() * g_t.size()); // row-major: g_N outer, g_T inner
     parallel_for(tangential.size(), threads, [&](std::size_t k) {
         tangential[k] = integrate_contact(pc, g_n[k / g_t.size()], g_t[k % g_t.size()], tol);
     });
 
+    std::optional<CachedTables> tables;
+    if (cfg.contact.cache) tables.emplace(load_or_build_tables(cfg, pc));
+
     const CsvProvenance prov = provenance(o, cfg, pc);
-    CsvWriter normal_csv(column_names(normal_columns), prov);
+    std::vector<std::string> normal_names = column_names(normal_columns);
+    std::vector<std::string> tangential_names = column_names(tangential_columns);
+    if (tables) {
+        normal_names.emplace_back(normal_table_column.name);
+        tangential_names.emplace_back(tangential_table_column.name);
+    }
+    CsvWriter normal_csv(normal_names, prov);
     for (std::size_t k = 0; k < g_n.size(); ++k) {
         const ContactResult& r = normal[k];
-        normal_csv.add_row({g_n[k], pc.w(g_n[k]), r.eps_n, r.duration, r.max_compression});
+        std::vector<double> row{g_n[k], pc.w(g_n[k]), r.eps_n, r.duration, r.max_compression};
+        if (tables) row.push_back(tables->normal.eps_n(pc.w(g_n[k])));
+        normal_csv.add_row(row);
     }
-    CsvWriter tangential_csv(column_names(tangential_columns), prov);
+    CsvWriter tangential_csv(tangential_names, prov);
     for (std::size_t k = 0; k < tangential.size(); ++k) {
         const ContactResult& r = tangential[k];
-        tangential_csv.add_row({g_n[k / g_t.size()], g_t[k % g_t.size()], r.eps_t, r.beta,
-                                static_cast<double>(r.breaks)});
+        const double gn = g_n[k / g_t.size()], gt = g_t[k % g_t.size()];
+        std::vector<double> row{gn, gt, r.eps_t, r.beta, static_cast<double>(r.breaks)};
+        if (tables) row.push_back(tables->tangential.eps_t(gn, gt));
+        tangential_csv.add_row(row);
     }
 
     fs::create_directories(dir);
     normal_csv.write(dir / output_files[0]);
     tangential_csv.write(dir / output_files[1]);
     std::cout << fmt::format("roughgas restitution: wrote {} ({} rows) and {} ({} rows)\n",
-                             (dir / output_files[0]).string(), normal_csv.rows(), (dir / output_files[1]).string(),
-                             tangential_csv.rows());
+                             (dir / output_files[0]).string(), normal_csv.rows(),
+                             (dir / output_files[1]).string(), tangential_csv.rows());
     return exit_ok;
 }
 
@@ -138,7 +201,8 @@ int run_restitution(const RestitutionOptions& o) {
 Subcommand add_restitution_command(CLI::App& parent) {
     auto o = std::make_shared<RestitutionOptions>();
     CLI::App* app = parent.add_subcommand(
-        "restitution", "tabulate eps_N(g_N) and eps_T(g_N, g_T) of the case's contact model on the [restitution] grid");
+        "restitution",
+        "tabulate eps_N(g_N) and eps_T(g_N, g_T) of the case's contact model on the [restitution] grid");
     app->add_option("CASE", o->case_file, "case file (TOML)")->required();
     app->add_option("--out", o->out, "output directory (normal.csv, tangential.csv)")->required();
     add_set_option(*app, o->sets);

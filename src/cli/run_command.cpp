@@ -50,7 +50,8 @@ Subcommand add_run_command(CLI::App& parent) {
     app->add_option("--threads", o->threads, "OpenMP threads")->check(CLI::PositiveNumber);
     app->add_flag("--quiet", o->quiet, "no progress output");
     app->add_flag("--force", o->force, "overwrite an existing output directory");
-    app->add_option("--checkpoint-every", o->checkpoint_every, "checkpoint interval in collisions per particle")
+    app->add_option("--checkpoint-every", o->checkpoint_every,
+                    "checkpoint interval in collisions per particle")
         ->check(CLI::PositiveNumber);
     app->add_option("--resume", o->resume, "continue the checkpointed run in DIR")->excludes(case_opt);
     return {app, [o, app] { return run_run(*o, *app); }};

@@ -29,8 +29,9 @@ struct Sweep {
 // KEY=FROM:TO:COUNT
 Sweep parse_sweep(const SweepOptions& o) {
     const auto bad = [&](const std::string& why) {
-        return InputError(o.case_file, "--param", "--param " + o.param + ": " + why +
-                                                      " (expected KEY=FROM:TO:COUNT, e.g. collision.alpha=0.5:0.9:5)");
+        return InputError(o.case_file, "--param",
+                          "--param " + o.param + ": " + why +
+                              " (expected KEY=FROM:TO:COUNT, e.g. collision.alpha=0.5:0.9:5)");
     };
     const std::size_t eq = o.param.find('=');
     const std::size_t c1 = o.param.find(':', eq == std::string::npos ? 0 : eq);
@@ -38,7 +39,8 @@ Sweep parse_sweep(const SweepOptions& o) {
     if (eq == std::string::npos || eq == 0 || c2 == std::string::npos) {
         throw bad("malformed");
     }
-    Sweep s{o.param.substr(0, eq), o.param.substr(eq + 1, c1 - eq - 1), o.param.substr(c1 + 1, c2 - c1 - 1), 0};
+    Sweep s{o.param.substr(0, eq), o.param.substr(eq + 1, c1 - eq - 1), o.param.substr(c1 + 1, c2 - c1 - 1),
+            0};
     const std::string count = o.param.substr(c2 + 1);
     const auto [ptr, ec] = std::from_chars(count.data(), count.data() + count.size(), s.count);
     if (ec != std::errc() || ptr != count.data() + count.size() || s.count < 1) {
@@ -62,7 +64,8 @@ int run_sweep(const SweepOptions& o) {
 
 Subcommand add_sweep_command(CLI::App& parent) {
     auto o = std::make_shared<SweepOptions>();
-    CLI::App* app = parent.add_subcommand("sweep", "run a case over a range of one parameter (not implemented yet)");
+    CLI::App* app =
+        parent.add_subcommand("sweep", "run a case over a range of one parameter (not implemented yet)");
     app->add_option("CASE", o->case_file, "case file (TOML)")->required();
     app->add_option("--param", o->param, "KEY=FROM:TO:COUNT, e.g. collision.alpha=0.5:0.9:5")->required();
     app->add_option("--out", o->out, "output directory")->required();

@@ -20,31 +20,39 @@ class TemporaryFile {
   public:
     explicit TemporaryFile(std::filesystem::path path) : path_(std::move(path)) {
         fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-        if (fd_ < 0) fail("cannot create", path_, errno);
+        if (fd_ < 0)
+            fail("cannot create", path_, errno);
     }
     TemporaryFile(const TemporaryFile&) = delete;
     TemporaryFile& operator=(const TemporaryFile&) = delete;
     ~TemporaryFile() {
-        if (fd_ >= 0) ::close(fd_);
-        if (!renamed_) ::unlink(path_.c_str());
+        if (fd_ >= 0)
+            ::close(fd_);
+        if (!renamed_)
+            ::unlink(path_.c_str());
     }
 
     void write(std::string_view data) {
         while (!data.empty()) {
             const ssize_t n = ::write(fd_, data.data(), data.size());
-            if (n < 0 && errno == EINTR) continue;
-            if (n < 0) fail("cannot write", path_, errno);
+            if (n < 0 && errno == EINTR)
+                continue;
+            if (n < 0)
+                fail("cannot write", path_, errno);
             data.remove_prefix(static_cast<std::size_t>(n));
         }
     }
 
     // Data on disk before the rename makes it visible, so the new name never shows a partial file.
     void commit(const std::filesystem::path& target) {
-        if (::fsync(fd_) != 0) fail("cannot sync", path_, errno);
+        if (::fsync(fd_) != 0)
+            fail("cannot sync", path_, errno);
         const int fd = fd_;
         fd_ = -1;
-        if (::close(fd) != 0) fail("cannot close", path_, errno);
-        if (::rename(path_.c_str(), target.c_str()) != 0) fail("cannot rename to", target, errno);
+        if (::close(fd) != 0)
+            fail("cannot close", path_, errno);
+        if (::rename(path_.c_str(), target.c_str()) != 0)
+            fail("cannot rename to", target, errno);
         renamed_ = true;
     }
 

@@ -33,7 +33,7 @@ class Diagnostics {
     // `key`: dotted display path; `node`: where to point (nullptr: no position).
     void add(const std::string& key, std::string message, const toml::node* node = nullptr) {
         std::optional<SourcePosition> where;
-        if (std::find(overridden_.begin(), overridden_.end(), key) != overridden_.end()) {
+        if (overridden(key)) {
             message += " (set with --set)";
         } else if (node != nullptr && node->source().begin) {
             const toml::source_position p = node->source().begin;
@@ -42,36 +42,62 @@ class Diagnostics {
         issues_.push_back({file_, key, std::move(message), where});
     }
 
+    // In file order; issues without a position (missing keys, --set) last.
     void throw_if_any() {
-        if (!issues_.empty()) {
-            throw InputError(std::move(issues_));
-        }
+        if (issues_.empty())
+            return;
+        std::stable_sort(issues_.begin(), issues_.end(), [](const InputIssue& a, const InputIssue& b) {
+            const auto rank = [](const InputIssue& i) {
+                return i.where ? std::pair(i.where->line, i.where->column)
+                               : std::pair(std::numeric_limits<int>::max(), 0);
+            };
+            return rank(a) < rank(b);
+        });
+        throw InputError(std::move(issues_));
     }
 
   private:
+    // `key` or a table on the way to it was given with --set.
+    bool overridden(const std::string& key) const {
+        return std::any_of(overridden_.begin(), overridden_.end(),
+                           [&](const std::string& o) { return o == key || o.rfind(key + ".", 0) == 0; });
+    }
+
     std::string file_;
     std::vector<std::string> overridden_;
     std::vector<InputIssue> issues_;
 };
 
+std::string quote(std::string_view s);
+
 std::string value_text(const toml::node& n) {
     if (const auto* f = n.as_floating_point()) {
         return fmt::format("{}", f->get()); // toml++ would print 1e10 as 10000000000.0
+    }
+    if (const auto* str = n.as_string()) {
+        return quote(str->get()); // as the "allowed" lists print them
     }
     std::ostringstream os;
     n.visit([&](const auto& v) { os << v; });
     return os.str();
 }
 
-std::string unit_suffix(const KeySpec& s) { return s.unit.empty() ? "" : " (" + s.unit + ")"; }
+std::string unit_suffix(const KeySpec& s) {
+    return s.unit.empty() ? "" : " (" + s.unit + ")";
+}
 
 std::string type_phrase(KeyType t) {
     switch (t) {
-    case KeyType::boolean: return "true or false";
-    case KeyType::integer: return "an integer";
-    case KeyType::real: return "a real number";
-    case KeyType::string: return "a string";
-    case KeyType::string_pair: return "an array of two strings";
+    case KeyType::boolean:
+        return "true or false";
+    case KeyType::integer:
+        return "an integer";
+    case KeyType::real:
+        return "a real number";
+    case KeyType::string:
+        return "a string";
+    case KeyType::string_pair:
+        return "an array of two strings";
     }
     return "?";
 }
@@ -88,8 +114,10 @@ std::string expectation(const KeySpec& s) {
 // Optimal-string-alignment distance: a swapped pair of letters counts as one edit.
 std::size_t edit_distance(std::string_view a, std::string_view b) {
     std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
-    for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
-    for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+    for (std::size_t i = 0; i <= a.size(); ++i)
+        d[i][0] = i;
+    for (std::size_t j = 0; j <= b.size(); ++j)
+        d[0][j] = j;
     for (std::size_t i = 1; i <= a.size(); ++i) {
         for (std::size_t j = 1; j <= b.size(); ++j) {
             const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
@@ -119,16 +147,20 @@ std::optional<std::string> nearest(std::string_view word, const std::vector<std:
 std::vector<std::string> key_names(std::string_view table) {
     std::vector<std::string> names;
     for (const KeySpec& k : case_schema()) {
-        if (k.table() == table) names.emplace_back(k.name());
+        if (k.table() == table)
+            names.emplace_back(k.name());
     }
     return names;
 }
 
-std::string table_header(const TableSpec& t) { return t.array ? "[[" + t.name + "]]" : "[" + t.name + "]"; }
+std::string table_header(const TableSpec& t) {
+    return t.array ? "[[" + t.name + "]]" : "[" + t.name + "]";
+}
 
 std::string join(const std::vector<std::string>& v) {
     std::string s;
-    for (const std::string& x : v) s += (s.empty() ? "" : ", ") + x;
+    for (const std::string& x : v)
+        s += (s.empty() ? "" : ", ") + x;
     return s;
 }
 
@@ -146,17 +178,21 @@ std::optional<std::string> misplaced(std::string_view name, std::string_view tab
 // Typed access
 
 std::optional<double> as_real(const toml::node& n) {
-    if (const auto* f = n.as_floating_point()) return f->get();
-    if (const auto* i = n.as_integer()) return static_cast<double>(i->get());
+    if (const auto* f = n.as_floating_point())
+        return f->get();
+    if (const auto* i = n.as_integer())
+        return static_cast<double>(i->get());
     return std::nullopt;
 }
 
 // Integers may be written as integral floats (particles = 1e5).
 std::optional<std::int64_t> as_integer(const toml::node& n) {
-    if (const auto* i = n.as_integer()) return i->get();
+    if (const auto* i = n.as_integer())
+        return i->get();
     if (const auto* f = n.as_floating_point()) {
         const double x = f->get();
-        if (std::isfinite(x) && x == std::floor(x) && std::abs(x) < 9.0e18) return static_cast<std::int64_t>(x);
+        if (std::isfinite(x) && x == std::floor(x) && std::abs(x) < 9.0e18)
+            return static_cast<std::int64_t>(x);
     }
     return std::nullopt;
 }
@@ -167,7 +203,8 @@ bool is_string_pair(const toml::node& n) {
 }
 
 bool is_index(std::string_view s) {
-    return !s.empty() && s.size() < 10 && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+    return !s.empty() && s.size() < 10 &&
+           std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
 // The node at a display path ("species.1.name"), for message positions.
@@ -215,7 +252,8 @@ class Reader {
         const toml::node* n = node(k);
         return n ? n->as_string()->get() : std::get<std::string>(spec(k).default_value);
     }
-    template <class E, std::size_t N> E choice(std::string_view k, const std::array<std::string_view, N>& names) const {
+    template <class E, std::size_t N>
+    E choice(std::string_view k, const std::array<std::string_view, N>& names) const {
         const std::string s = string(k);
         return static_cast<E>(std::find(names.begin(), names.end(), s) - names.begin());
     }
@@ -232,7 +270,8 @@ class Reader {
 
 std::string trim(std::string_view s) {
     const auto b = s.find_first_not_of(" \t");
-    if (b == std::string_view::npos) return {};
+    if (b == std::string_view::npos)
+        return {};
     const auto e = s.find_last_not_of(" \t");
     return std::string(s.substr(b, e - b + 1));
 }
@@ -243,7 +282,8 @@ std::vector<std::string> split_path(const std::string& key) {
     while (true) {
         const std::size_t dot = key.find('.', start);
         segs.push_back(key.substr(start, dot == std::string::npos ? std::string::npos : dot - start));
-        if (dot == std::string::npos) return segs;
+        if (dot == std::string::npos)
+            return segs;
         start = dot + 1;
     }
 }
@@ -251,7 +291,8 @@ std::vector<std::string> split_path(const std::string& key) {
 std::string schema_path(const std::vector<std::string>& segs) {
     std::string p;
     for (const std::string& s : segs) {
-        if (!is_index(s)) p += (p.empty() ? "" : ".") + s;
+        if (!is_index(s))
+            p += (p.empty() ? "" : ".") + s;
     }
     return p;
 }
@@ -287,22 +328,27 @@ toml::table* override_parent(toml::table& root, const std::vector<std::string>& 
         if (n != nullptr ? n->is_array() : (ts != nullptr && ts->array)) {
             if (i + 2 >= segs.size() || !is_index(segs[i + 1])) {
                 d.add(key, fmt::format("--set {}: [[{}]] is an array of tables: address one as {}.N.{} "
-                                       "(N = 0 for the first)", arg, seg, seg, segs.back()));
+                                       "(N = 0 for the first)",
+                                       arg, seg, seg, segs.back()));
                 return nullptr;
             }
-            if (n == nullptr) n = &t->insert_or_assign(seg, toml::array{}).first->second;
+            if (n == nullptr)
+                n = &t->insert_or_assign(seg, toml::array{}).first->second;
             toml::array& a = *n->as_array();
             const std::size_t index = std::stoul(segs[i + 1]);
             if (index > a.size()) {
                 d.add(key, fmt::format("--set {}: there are {} [[{}]] tables, so the index must be <= {} "
-                                       "({} adds one)", arg, a.size(), seg, a.size(), a.size()));
+                                       "({} adds one)",
+                                       arg, a.size(), seg, a.size(), a.size()));
                 return nullptr;
             }
-            if (index == a.size()) a.push_back(toml::table{});
+            if (index == a.size())
+                a.push_back(toml::table{});
             t = a[index].as_table();
             ++i;
         } else {
-            if (n == nullptr) n = &t->insert_or_assign(seg, toml::table{}).first->second;
+            if (n == nullptr)
+                n = &t->insert_or_assign(seg, toml::table{}).first->second;
             t = n->as_table();
         }
         if (t == nullptr || is_index(seg)) {
@@ -321,14 +367,17 @@ void apply_override(toml::table& root, const std::string& arg, Diagnostics& d) {
         return;
     }
     const std::vector<std::string> segs = split_path(key);
-    const bool empty_segment = std::any_of(segs.begin(), segs.end(), [](const std::string& s) { return s.empty(); });
+    const bool empty_segment =
+        std::any_of(segs.begin(), segs.end(), [](const std::string& s) { return s.empty(); });
     if (segs.size() < 2 || empty_segment || is_index(segs.back())) {
         d.add(key, fmt::format("--set {}: KEY must be a dotted path to a key, e.g. run.particles or "
-                               "species.0.radius", arg));
+                               "species.0.radius",
+                               arg));
         return;
     }
     toml::table* parent = override_parent(root, segs, arg, d);
-    if (parent == nullptr) return;
+    if (parent == nullptr)
+        return;
     toml::table wrapped = parse_override_value(trim(arg.substr(eq + 1)), find_key(schema_path(segs)));
     parent->insert_or_assign(segs.back(), std::move(*wrapped.get("v")));
     d.mark_override(key);
@@ -378,7 +427,8 @@ class SchemaCheck {
 
     void unknown_top_level(const std::string& name, const toml::node& node) {
         std::vector<std::string> tables;
-        for (const TableSpec& t : case_tables()) tables.push_back(t.name);
+        for (const TableSpec& t : case_tables())
+            tables.push_back(t.name);
         std::string hint;
         if (auto m = misplaced(name, "")) {
             hint = "did you mean " + *m + "?";
@@ -386,10 +436,12 @@ class SchemaCheck {
             hint = "did you mean " + table_header(*find_table(*s)) + "?";
         } else {
             std::vector<std::string> headers;
-            for (const TableSpec& t : case_tables()) headers.push_back(table_header(t));
+            for (const TableSpec& t : case_tables())
+                headers.push_back(table_header(t));
             hint = "the tables are " + join(headers);
         }
-        d_.add(name, fmt::format("{}: unknown {} ({})", name, node.is_table() ? "table" : "key", hint), &node);
+        d_.add(name, fmt::format("{}: unknown {} ({})", name, node.is_table() ? "table" : "key", hint),
+               &node);
     }
 
     void table(const toml::table& t, const std::string& schema_table, const std::string& prefix) {
@@ -407,7 +459,8 @@ class SchemaCheck {
 
     void missing_keys(const toml::table* t, const std::string& schema_table, const std::string& prefix) {
         for (const KeySpec& s : case_schema()) {
-            if (s.table() == schema_table && s.need == Need::required && (t == nullptr || !t->contains(s.name()))) {
+            if (s.table() == schema_table && s.need == Need::required &&
+                (t == nullptr || !t->contains(s.name()))) {
                 const std::string key = prefix + "." + std::string(s.name());
                 d_.add(key, fmt::format("{}: required key is missing (must be {})", key, expectation(s)), t);
             }
@@ -433,8 +486,10 @@ class SchemaCheck {
         switch (s.type) {
         case KeyType::real:
         case KeyType::integer: {
-            const std::optional<double> x = s.type == KeyType::real ? as_real(n) : [&]() -> std::optional<double> {
-                if (auto i = as_integer(n)) return static_cast<double>(*i);
+            const std::optional<double> x =
+                s.type == KeyType::real ? as_real(n) : [&]() -> std::optional<double> {
+                if (auto i = as_integer(n))
+                    return static_cast<double>(*i);
                 return std::nullopt;
             }();
             if (!x || !std::isfinite(*x)) {
@@ -445,20 +500,26 @@ class SchemaCheck {
             return;
         }
         case KeyType::boolean:
-            if (!n.is_boolean()) d_.add(key, fmt::format("{}: must be true or false", shown), &n);
+            if (!n.is_boolean())
+                d_.add(key, fmt::format("{}: must be true or false", shown), &n);
             return;
         case KeyType::string_pair:
-            if (!is_string_pair(n)) d_.add(key, fmt::format("{}: must be {}", shown, expectation(s)), &n);
+            if (!is_string_pair(n))
+                d_.add(key, fmt::format("{}: must be {}", shown, expectation(s)), &n);
             return;
         case KeyType::string: {
             const auto* str = n.as_string();
             if (str == nullptr) {
-                d_.add(key, fmt::format("{}: must be a string{}", shown,
-                                        s.choices.empty() ? "" : ", " + s.allowed()), &n);
+                d_.add(
+                    key,
+                    fmt::format("{}: must be a string{}", shown, s.choices.empty() ? "" : ", " + s.allowed()),
+                    &n);
             } else if (!s.allows(str->get())) {
                 const auto near = nearest(str->get(), s.choices);
-                d_.add(key, fmt::format("{}: must be {}{}", shown, s.allowed(),
-                                        near ? " (did you mean \"" + *near + "\"?)" : ""), &n);
+                d_.add(key,
+                       fmt::format("{}: must be {}{}", shown, s.allowed(),
+                                   near ? " (did you mean \"" + *near + "\"?)" : ""),
+                       &n);
             }
             return;
         }
@@ -479,14 +540,17 @@ class Builder {
         CaseConfig c;
         c.run = run(Reader(root_["run"].as_table(), "run"));
         if (const toml::array* a = root_["species"].as_array()) {
-            for (const toml::node& n : *a) c.species.push_back(species(Reader(n.as_table(), "species")));
+            for (const toml::node& n : *a)
+                c.species.push_back(species(Reader(n.as_table(), "species")));
         }
         const toml::table* coll = root_["collision"].as_table();
         c.collision = collision(Reader(coll, "collision"));
         if (const toml::array* a = root_["pair"].as_array()) {
-            for (const toml::node& n : *a) c.pairs.push_back(pair(*n.as_table(), coll));
+            for (const toml::node& n : *a)
+                c.pairs.push_back(pair(*n.as_table(), coll));
         }
-        if (const toml::table* m = root_["material"].as_table()) c.material = material(Reader(m, "material"));
+        if (const toml::table* m = root_["material"].as_table())
+            c.material = material(Reader(m, "material"));
         c.contact = contact(Reader(root_["contact"].as_table(), "contact"));
         if (const toml::table* s = root_["shear"].as_table(); s != nullptr && s->contains("rate")) {
             c.shear = ShearConfig{Reader(s, "shear").real("rate")};
@@ -537,7 +601,8 @@ class Builder {
     static PairConfig pair(const toml::table& t, const toml::table* coll) {
         toml::table merged = coll ? *coll : toml::table{};
         for (auto&& [k, v] : t) {
-            if (k.str() != "species") merged.insert_or_assign(k.str(), v);
+            if (k.str() != "species")
+                merged.insert_or_assign(k.str(), v);
         }
         PairConfig p;
         const toml::array& names = *t["species"].as_array();
@@ -564,19 +629,26 @@ class Builder {
         const bool viscous = m.eta1 || m.eta2;
         if (r.has("dissipation")) {
             if (viscous) {
-                add("material.dissipation", "material.dissipation: give either dissipation or eta1 and eta2, not both");
+                add("material.dissipation",
+                    "material.dissipation: give either dissipation or eta1 and eta2, not both");
             }
             return r.real("dissipation");
         }
         if (!viscous) {
-            add("material.dissipation", fmt::format("material.dissipation: required key is missing (must be {}; "
-                                                    "or give eta1 and eta2)", expectation(a_spec)), "material");
+            add("material.dissipation",
+                fmt::format("material.dissipation: required key is missing (must be {}; "
+                            "or give eta1 and eta2)",
+                            expectation(a_spec)),
+                "material");
             return 0;
         }
         if (!m.eta1 || !m.eta2) {
             const std::string missing = m.eta1 ? "material.eta2" : "material.eta1";
-            add(missing, fmt::format("{}: required with {} (A follows from both viscosities, seed 000 eq. 23; "
-                                     "must be >= 0 (Pa s))", missing, m.eta1 ? "eta1" : "eta2"), "material");
+            add(missing,
+                fmt::format("{}: required with {} (A follows from both viscosities, seed 000 eq. 23; "
+                            "must be >= 0 (Pa s))",
+                            missing, m.eta1 ? "eta1" : "eta2"),
+                "material");
             return 0;
         }
         if (m.poisson_ratio == 0 || 3 * *m.eta2 + 2 * *m.eta1 <= 0) {
@@ -618,7 +690,8 @@ class Builder {
     void require(bool present, const std::string& key, const std::string& why, std::string_view at) {
         if (!present) {
             const KeySpec* s = find_key(schema_path(split_path(key)));
-            add(key, fmt::format("{}: required for {} but missing (must be {})", key, why, expectation(*s)), at);
+            add(key, fmt::format("{}: required for {} but missing (must be {})", key, why, expectation(*s)),
+                at);
         }
     }
 
@@ -644,41 +717,48 @@ class Builder {
             for (std::size_t j = 0; j < i; ++j) {
                 if (c.species[j].name == s.name) {
                     add(fmt::format("species.{}.name", i),
-                        fmt::format("species.{}.name = \"{}\": must be unique (species.{} has it)", i, s.name, j),
+                        fmt::format("species.{}.name = \"{}\": must be unique (species.{} has it)", i, s.name,
+                                    j),
                         fmt::format("species.{}", i));
                 }
             }
             // Each species needs at least one simulated particle.
             if (static_cast<double>(c.run.particles) * s.fraction < 1) {
-                add("run.particles", fmt::format("run.particles = {}: species \"{}\" (fraction {}) gets no particle "
-                                                 "(must be >= 1/fraction = {})",
-                                                 c.run.particles, s.name, s.fraction, std::ceil(1 / s.fraction)));
+                add("run.particles",
+                    fmt::format("run.particles = {}: species \"{}\" (fraction {}) gets no particle "
+                                "(must be >= 1/fraction = {})",
+                                c.run.particles, s.name, s.fraction, std::ceil(1 / s.fraction)));
             }
         }
         if (!c.species.empty() && std::abs(sum - 1) > 1e-9) {
-            add("species.fraction", fmt::format("species.fraction: the fractions sum to {}, must sum to 1 (within "
-                                                "1e-9)", sum), "species.0.fraction");
+            add("species.fraction",
+                fmt::format("species.fraction: the fractions sum to {}, must sum to 1 (within "
+                            "1e-9)",
+                            sum),
+                "species.0.fraction");
         }
     }
 
     void check_pair(const CaseConfig& c, std::size_t i) {
         const std::string key = fmt::format("pair.{}.species", i);
         std::vector<std::string> names;
-        for (const SpeciesConfig& s : c.species) names.push_back("\"" + s.name + "\"");
+        for (const SpeciesConfig& s : c.species)
+            names.push_back("\"" + s.name + "\"");
         const auto& p = c.pairs[i].species;
         for (const std::string& n : p) {
             const bool known = std::any_of(c.species.begin(), c.species.end(),
                                            [&](const SpeciesConfig& s) { return s.name == n; });
             if (!known) {
-                add(key, fmt::format("{} = [\"{}\", \"{}\"]: \"{}\" is not a species (must be one of {})", key, p[0],
-                                     p[1], n, join(names)));
+                add(key, fmt::format("{} = [\"{}\", \"{}\"]: \"{}\" is not a species (must be one of {})",
+                                     key, p[0], p[1], n, join(names)));
             }
         }
         for (std::size_t j = 0; j < i; ++j) {
             const auto& q = c.pairs[j].species;
             if ((q[0] == p[0] && q[1] == p[1]) || (q[0] == p[1] && q[1] == p[0])) {
-                add(key, fmt::format("{} = [\"{}\", \"{}\"]: pair.{} already sets this pair (one [[pair]] per pair)",
-                                     key, p[0], p[1], j));
+                add(key, fmt::format(
+                             "{} = [\"{}\", \"{}\"]: pair.{} already sets this pair (one [[pair]] per pair)",
+                             key, p[0], p[1], j));
             }
         }
     }
@@ -698,7 +778,8 @@ class Builder {
         case CollisionModel::viscoelastic:
         case CollisionModel::brilliantov:
             material_users_.push_back(why);
-            if (c.model == CollisionModel::brilliantov) asperity_users_.push_back(why);
+            if (c.model == CollisionModel::brilliantov)
+                asperity_users_.push_back(why);
             break;
         }
     }
@@ -708,11 +789,13 @@ class Builder {
             material_users_.push_back("roughgas restitution");
             asperity_users_.push_back("roughgas restitution");
         }
-        if (material_users_.empty()) return;
+        if (material_users_.empty())
+            return;
         if (!c.material) {
-            add("material", fmt::format("material: the [material] table is required for {} but missing "
-                                        "(young_modulus, poisson_ratio, dissipation{})",
-                                        join(material_users_), asperity_users_.empty() ? "" : ", friction, asperity"));
+            add("material",
+                fmt::format("material: the [material] table is required for {} but missing "
+                            "(young_modulus, poisson_ratio, dissipation{})",
+                            join(material_users_), asperity_users_.empty() ? "" : ", friction, asperity"));
             return;
         }
         if (!asperity_users_.empty()) {
@@ -723,12 +806,14 @@ class Builder {
 
     void check_grid(const RestitutionGridConfig& g) {
         if (g.g_n_max < g.g_n_min) {
-            add("restitution.g_n_max", fmt::format("restitution.g_n_max = {}: must be >= restitution.g_n_min = {} (m/s)",
-                                                   g.g_n_max, g.g_n_min));
+            add("restitution.g_n_max",
+                fmt::format("restitution.g_n_max = {}: must be >= restitution.g_n_min = {} (m/s)", g.g_n_max,
+                            g.g_n_min));
         }
         if (g.g_t_max < g.g_t_min) {
-            add("restitution.g_t_max", fmt::format("restitution.g_t_max = {}: must be >= restitution.g_t_min = {} (m/s)",
-                                                   g.g_t_max, g.g_t_min));
+            add("restitution.g_t_max",
+                fmt::format("restitution.g_t_max = {}: must be >= restitution.g_t_min = {} (m/s)", g.g_t_max,
+                            g.g_t_min));
         }
     }
 
@@ -746,10 +831,18 @@ std::string quote(std::string_view s) {
     std::string out = "\"";
     for (const char c : s) {
         switch (c) {
-        case '"': out += "\\\""; break;
-        case '\\': out += "\\\\"; break;
-        case '\n': out += "\\n"; break;
-        case '\t': out += "\\t"; break;
+        case '"':
+            out += "\\\"";
+            break;
+        case '\\':
+            out += "\\\\";
+            break;
+        case '\n':
+            out += "\\n";
+            break;
+        case '\t':
+            out += "\\t";
+            break;
         default:
             if (static_cast<unsigned char>(c) < 0x20) {
                 out += fmt::format("\\u{:04x}", static_cast<int>(c));
@@ -764,7 +857,8 @@ std::string quote(std::string_view s) {
 class Emitter {
   public:
     void header(std::string_view h) {
-        if (!text_.empty()) text_ += '\n';
+        if (!text_.empty())
+            text_ += '\n';
         text_.append(h).append("\n");
     }
     void put(std::string_view k, double x) { line(k, toml_real(x)); }
@@ -776,7 +870,8 @@ class Emitter {
         line(k, fmt::format("[{}, {}]", quote(p[0]), quote(p[1])));
     }
     void put(std::string_view k, const std::optional<double>& x) {
-        if (x) put(k, *x);
+        if (x)
+            put(k, *x);
     }
     void collision(const CollisionConfig& c) {
         put("model", name(c.model));
@@ -797,16 +892,17 @@ class Emitter {
 
 // ---------------------------------------------------------------------------------------------
 
-CaseConfig parse_case(std::string_view toml_text, const std::string& file, const std::vector<std::string>& overrides,
-                      CaseUse use) {
+CaseConfig parse_case(std::string_view toml_text, const std::string& file,
+                      const std::vector<std::string>& overrides, CaseUse use) {
     toml::table root;
     try {
         root = toml::parse(toml_text, std::string_view(file));
     } catch (const toml::parse_error& e) {
         const toml::source_position p = e.source().begin;
-        throw InputError(file, "", "TOML syntax error: " + std::string(e.description()),
-                         p ? std::optional(SourcePosition{static_cast<int>(p.line), static_cast<int>(p.column)})
-                           : std::nullopt);
+        throw InputError(
+            file, "", "TOML syntax error: " + std::string(e.description()),
+            p ? std::optional(SourcePosition{static_cast<int>(p.line), static_cast<int>(p.column)})
+              : std::nullopt);
     }
     Diagnostics d(file);
     for (const std::string& arg : overrides) {

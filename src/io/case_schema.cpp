@@ -20,20 +20,52 @@ class Key {
         spec_.path = std::move(path);
         spec_.type = type;
     }
-    Key& unit(std::string u) { spec_.unit = std::move(u); return *this; }
-    Key& fallback(KeyDefault d) { spec_.need = Need::defaulted; spec_.default_value = std::move(d); return *this; }
-    Key& required() { spec_.need = Need::required; return *this; }
-    Key& when(std::string note) { spec_.need = Need::conditional; spec_.note = std::move(note); return *this; }
-    Key& optional() { spec_.need = Need::optional; return *this; }
-    Key& gt(double x, std::string text = {}) { spec_.lower = {Bound::open, x, std::move(text)}; return *this; }
-    Key& ge(double x, std::string text = {}) { spec_.lower = {Bound::closed, x, std::move(text)}; return *this; }
-    Key& lt(double x, std::string text = {}) { spec_.upper = {Bound::open, x, std::move(text)}; return *this; }
-    Key& le(double x, std::string text = {}) { spec_.upper = {Bound::closed, x, std::move(text)}; return *this; }
+    Key& unit(std::string u) {
+        spec_.unit = std::move(u);
+        return *this;
+    }
+    Key& fallback(KeyDefault d) {
+        spec_.need = Need::defaulted;
+        spec_.default_value = std::move(d);
+        return *this;
+    }
+    Key& required() {
+        spec_.need = Need::required;
+        return *this;
+    }
+    Key& when(std::string note) {
+        spec_.need = Need::conditional;
+        spec_.note = std::move(note);
+        return *this;
+    }
+    Key& optional() {
+        spec_.need = Need::optional;
+        return *this;
+    }
+    Key& gt(double x, std::string text = {}) {
+        spec_.lower = {Bound::open, x, std::move(text)};
+        return *this;
+    }
+    Key& ge(double x, std::string text = {}) {
+        spec_.lower = {Bound::closed, x, std::move(text)};
+        return *this;
+    }
+    Key& lt(double x, std::string text = {}) {
+        spec_.upper = {Bound::open, x, std::move(text)};
+        return *this;
+    }
+    Key& le(double x, std::string text = {}) {
+        spec_.upper = {Bound::closed, x, std::move(text)};
+        return *this;
+    }
     template <std::size_t N> Key& one_of(const std::array<std::string_view, N>& names) {
         spec_.choices.assign(names.begin(), names.end());
         return *this;
     }
-    Key& doc(std::string d) { spec_.description = std::move(d); return *this; }
+    Key& doc(std::string d) {
+        spec_.description = std::move(d);
+        return *this;
+    }
     KeySpec spec() const { return spec_; }
 
   private:
@@ -46,20 +78,33 @@ using T = KeyType;
 std::vector<Key> collision_keys(const std::string& table) {
     const std::string t = table + ".";
     return {
-        Key(t + "model", T::string).required().one_of(collision_model_names)
+        Key(t + "model", T::string)
+            .required()
+            .one_of(collision_model_names)
             .doc("restitution model: constant alpha, beta; coulomb (Walton: constant alpha, beta from "
                  "Coulomb friction); viscoelastic (eps^N from the contact, seed 000); brilliantov "
                  "(eps^N and eps^T from the contact with asperities, seed 000)"),
-        Key(t + "alpha", T::real).when("required for model = constant, coulomb").ge(0).le(1)
+        Key(t + "alpha", T::real)
+            .when("required for model = constant, coulomb")
+            .ge(0)
+            .le(1)
             .doc("normal restitution coefficient alpha: (g^N)' = -alpha g^N"),
-        Key(t + "beta", T::real).when("required for model = constant; viscoelastic: -1.0 (smooth) if unset")
-            .ge(-1).le(1)
+        Key(t + "beta", T::real)
+            .when("required for model = constant; viscoelastic: -1.0 (smooth) if unset")
+            .ge(-1)
+            .le(1)
             .doc("tangential restitution coefficient beta = -eps^T: -1 smooth, +1 perfectly rough"),
-        Key(t + "beta0", T::real).when("required for model = coulomb").ge(-1).le(1)
+        Key(t + "beta0", T::real)
+            .when("required for model = coulomb")
+            .ge(-1)
+            .le(1)
             .doc("coulomb: beta while the contact sticks (beta = min(beta0, Coulomb sliding limit))"),
-        Key(t + "friction", T::real).when("required for model = coulomb").ge(0)
+        Key(t + "friction", T::real)
+            .when("required for model = coulomb")
+            .ge(0)
             .doc("coulomb: friction coefficient mu of the sliding limit (not the material's)"),
-        Key(t + "direct", T::boolean).fallback(false)
+        Key(t + "direct", T::boolean)
+            .fallback(false)
             .doc("viscoelastic, brilliantov: integrate the contact at every collision instead of using "
                  "the cached table (contact.cache = false does this for every pair)"),
     };
@@ -68,42 +113,71 @@ std::vector<Key> collision_keys(const std::string& table) {
 std::vector<Key> keys() {
     std::vector<Key> k = {
         // [run]
-        Key("run.kind", T::string).fallback(std::string("cooling")).one_of(run_kind_names)
+        Key("run.kind", T::string)
+            .fallback(std::string("cooling"))
+            .one_of(run_kind_names)
             .doc("cooling: homogeneous cooling state; shear: uniform shear flow (needs [shear])"),
-        Key("run.particles", T::integer).required().ge(2)
+        Key("run.particles", T::integer)
+            .required()
+            .ge(2)
             .doc("simulated particles (statistics only: results do not depend on it)"),
-        Key("run.density", T::real).unit("1/length^3").fallback(1.0).gt(0)
+        Key("run.density", T::real)
+            .unit("1/length^3")
+            .fallback(1.0)
+            .gt(0)
             .doc("number density n of the gas (sets the time scale)"),
-        Key("run.replicas", T::integer).fallback(std::int64_t{1}).ge(1)
+        Key("run.replicas", T::integer)
+            .fallback(std::int64_t{1})
+            .ge(1)
             .doc("independent runs averaged; each column X gets X_err when > 1"),
-        Key("run.seed", T::integer).fallback(std::int64_t{1}).ge(0)
-            .doc("random seed (same seed, same run)"),
-        Key("run.end", T::real).unit("collisions per particle").required().gt(0)
-            .doc("length of the run"),
-        Key("run.output_every", T::real).unit("collisions per particle").fallback(1.0).gt(0)
+        Key("run.seed", T::integer).fallback(std::int64_t{1}).ge(0).doc("random seed (same seed, same run)"),
+        Key("run.end", T::real).unit("collisions per particle").required().gt(0).doc("length of the run"),
+        Key("run.output_every", T::real)
+            .unit("collisions per particle")
+            .fallback(1.0)
+            .gt(0)
             .doc("linear: interval between outputs; log: time of the first output"),
-        Key("run.output_spacing", T::string).fallback(std::string("linear")).one_of(output_spacing_names)
-            .doc("linear: every output_every; log: at output_every x 10^(k/10), k = 0, 1, ... (10 per decade)"),
+        Key("run.output_spacing", T::string)
+            .fallback(std::string("linear"))
+            .one_of(output_spacing_names)
+            .doc("linear: every output_every; log: at output_every x 10^(k/10), k = 0, 1, ... (10 per "
+                 "decade)"),
         // [[species]]
-        Key("species.name", T::string).fallback(std::string("grain"))
+        Key("species.name", T::string)
+            .fallback(std::string("grain"))
             .doc("unique name, used by [[pair]] and in column names"),
         Key("species.mass", T::real).unit("mass").required().gt(0).doc("particle mass m"),
         Key("species.radius", T::real).unit("length").required().gt(0).doc("particle radius R"),
-        Key("species.inertia", T::real).fallback(0.4).gt(0).le(2.0 / 3.0, "2/3")
-            .doc("q = J/(m R^2): 0.4 uniform sphere; 2/3 thin spherical shell, the largest for mass inside R"),
-        Key("species.fraction", T::real).fallback(1.0).gt(0).le(1)
+        Key("species.inertia", T::real)
+            .fallback(0.4)
+            .gt(0)
+            .le(2.0 / 3.0, "2/3")
+            .doc(
+                "q = J/(m R^2): 0.4 uniform sphere; 2/3 thin spherical shell, the largest for mass inside R"),
+        Key("species.fraction", T::real)
+            .fallback(1.0)
+            .gt(0)
+            .le(1)
             .doc("number fraction; the fractions of all species sum to 1 (within 1e-9)"),
-        Key("species.temperature", T::real).unit("energy").fallback(1.0).gt(0)
+        Key("species.temperature", T::real)
+            .unit("energy")
+            .fallback(1.0)
+            .gt(0)
             .doc("initial translational temperature T_tr (k_B = 1)"),
-        Key("species.rotational_temperature", T::real).unit("energy").fallback(1.0).ge(0)
+        Key("species.rotational_temperature", T::real)
+            .unit("energy")
+            .fallback(1.0)
+            .ge(0)
             .doc("initial rotational temperature T_rot"),
     };
     for (Key& c : collision_keys("collision")) {
         k.push_back(std::move(c));
     }
     // [[pair]]: the same keys, each falling back to [collision].
-    k.push_back(Key("pair.species", T::string_pair).required()
-                    .doc("the two species of the pair, e.g. [\"a\", \"b\"] (order irrelevant, one table per pair)"));
+    k.push_back(
+        Key("pair.species", T::string_pair)
+            .required()
+            .doc("the two species of the pair, e.g. [\"a\", \"b\"] (order irrelevant, one table per pair)"));
     for (Key& c : collision_keys("pair")) {
         KeySpec s = c.spec();
         const std::string from = "collision." + std::string(s.name());
@@ -114,51 +188,97 @@ std::vector<Key> keys() {
         // [material]
         Key("material.young_modulus", T::real).unit("Pa").required().gt(0).doc("Young's modulus Y"),
         Key("material.poisson_ratio", T::real).required().gt(-1).lt(0.5).doc("Poisson ratio nu"),
-        Key("material.dissipation", T::real).unit("s").when("required unless eta1 and eta2 are given").ge(0)
+        Key("material.dissipation", T::real)
+            .unit("s")
+            .when("required unless eta1 and eta2 are given")
+            .ge(0)
             .doc("dissipative constant A of seed 000 eq. 23"),
-        Key("material.eta1", T::real).unit("Pa s").optional().ge(0)
+        Key("material.eta1", T::real)
+            .unit("Pa s")
+            .optional()
+            .ge(0)
             .doc("viscous constant eta_1: with eta2, gives A by seed 000 eq. 23 (instead of dissipation)"),
-        Key("material.eta2", T::real).unit("Pa s").optional().ge(0)
+        Key("material.eta2", T::real)
+            .unit("Pa s")
+            .optional()
+            .ge(0)
             .doc("viscous constant eta_2 (with eta1; needs poisson_ratio != 0)"),
-        Key("material.friction", T::real).when("required for model = brilliantov and roughgas restitution").ge(0)
+        Key("material.friction", T::real)
+            .when("required for model = brilliantov and roughgas restitution")
+            .ge(0)
             .doc("friction coefficient mu of the asperity model (seed 000 eqs. 35-37)"),
-        Key("material.asperity", T::real).unit("m").when("required for model = brilliantov and roughgas restitution")
-            .gt(0).doc("asperity scale zeta_0 (seed 000 eq. 32)"),
+        Key("material.asperity", T::real)
+            .unit("m")
+            .when("required for model = brilliantov and roughgas restitution")
+            .gt(0)
+            .doc("asperity scale zeta_0 (seed 000 eq. 32)"),
         // [contact]
-        Key("contact.form", T::string).fallback(std::string("eq24")).one_of(normal_form_names)
+        Key("contact.form", T::string)
+            .fallback(std::string("eq24"))
+            .one_of(normal_form_names)
             .doc("normal force law: seed 000 eq. 24 or eq. 25"),
-        Key("contact.end", T::string).fallback(std::string("force")).one_of(contact_end_names)
+        Key("contact.end", T::string)
+            .fallback(std::string("force"))
+            .one_of(contact_end_names)
             .doc("end of contact: force (normal force reaches 0) or separation (xi = 0), physics.md §6"),
-        Key("contact.cache", T::boolean).fallback(true)
+        Key("contact.cache", T::boolean)
+            .fallback(true)
             .doc("use a tabulated eps(g) built once; false: integrate every collision directly"),
-        Key("contact.cache_file", T::string).fallback(std::string(""))
+        Key("contact.cache_file", T::string)
+            .fallback(std::string(""))
             .doc("file the table is saved to and reused from; \"\": not saved"),
-        Key("contact.tolerance", T::real).fallback(1e-12).ge(1e-15).le(1e-3)
+        Key("contact.tolerance", T::real)
+            .fallback(1e-12)
+            .ge(1e-15)
+            .le(1e-3)
             .doc("relative error tolerance of the contact integration (absolute: tolerance/100)"),
         // [shear]
-        Key("shear.rate", T::real).unit("1/time").when("required for run.kind = shear").gt(0)
+        Key("shear.rate", T::real)
+            .unit("1/time")
+            .when("required for run.kind = shear")
+            .gt(0)
             .doc("shear rate a of the uniform shear flow"),
         // [restitution]
-        Key("restitution.g_n_min", T::real).unit("m/s").fallback(1e-4).gt(0).doc("smallest normal impact speed"),
-        Key("restitution.g_n_max", T::real).unit("m/s").fallback(10.0).gt(0)
+        Key("restitution.g_n_min", T::real)
+            .unit("m/s")
+            .fallback(1e-4)
+            .gt(0)
+            .doc("smallest normal impact speed"),
+        Key("restitution.g_n_max", T::real)
+            .unit("m/s")
+            .fallback(10.0)
+            .gt(0)
             .doc("largest normal impact speed (>= g_n_min)"),
-        Key("restitution.g_n_points", T::integer).fallback(std::int64_t{60}).ge(1)
+        Key("restitution.g_n_points", T::integer)
+            .fallback(std::int64_t{60})
+            .ge(1)
             .doc("number of g_N values (1: g_n_min only)"),
         Key("restitution.g_t_min", T::real).unit("m/s").fallback(1e-4).gt(0).doc("smallest tangential speed"),
-        Key("restitution.g_t_max", T::real).unit("m/s").fallback(10.0).gt(0)
+        Key("restitution.g_t_max", T::real)
+            .unit("m/s")
+            .fallback(10.0)
+            .gt(0)
             .doc("largest tangential speed (>= g_t_min)"),
-        Key("restitution.g_t_points", T::integer).fallback(std::int64_t{60}).ge(1)
+        Key("restitution.g_t_points", T::integer)
+            .fallback(std::int64_t{60})
+            .ge(1)
             .doc("number of g_T values (1: g_t_min only)"),
-        Key("restitution.spacing", T::string).fallback(std::string("log")).one_of(grid_spacing_names)
+        Key("restitution.spacing", T::string)
+            .fallback(std::string("log"))
+            .one_of(grid_spacing_names)
             .doc("spacing of both grids: log (geometric) or linear"),
     };
     k.insert(k.end(), rest.begin(), rest.end());
     return k;
 }
 
-std::string limit_text(const Limit& l) { return l.text.empty() ? fmt::format("{}", l.value) : l.text; }
+std::string limit_text(const Limit& l) {
+    return l.text.empty() ? fmt::format("{}", l.value) : l.text;
+}
 
-std::string quoted(std::string_view s) { return fmt::format("\"{}\"", s); }
+std::string quoted(std::string_view s) {
+    return fmt::format("\"{}\"", s);
+}
 
 std::string markdown_cell(std::string s) {
     // A '|' would split the cell.
@@ -179,9 +299,13 @@ std::string toml_real(double x) {
     return s;
 }
 
-std::string_view KeySpec::table() const { return std::string_view(path).substr(0, path.find('.')); }
+std::string_view KeySpec::table() const {
+    return std::string_view(path).substr(0, path.find('.'));
+}
 
-std::string_view KeySpec::name() const { return std::string_view(path).substr(path.find('.') + 1); }
+std::string_view KeySpec::name() const {
+    return std::string_view(path).substr(path.find('.') + 1);
+}
 
 std::string KeySpec::allowed() const {
     if (!choices.empty()) {
@@ -208,10 +332,14 @@ std::string KeySpec::allowed() const {
 
 std::string KeySpec::default_text() const {
     switch (need) {
-    case Need::required: return "required";
-    case Need::conditional: return note;
-    case Need::optional: return "unset";
-    case Need::defaulted: break;
+    case Need::required:
+        return "required";
+    case Need::conditional:
+        return note;
+    case Need::optional:
+        return "unset";
+    case Need::defaulted:
+        break;
     }
     struct Text {
         std::string operator()(std::monostate) const { return "unset"; }
@@ -225,11 +353,16 @@ std::string KeySpec::default_text() const {
 
 std::string KeySpec::type_name() const {
     switch (type) {
-    case KeyType::boolean: return "boolean";
-    case KeyType::integer: return "integer";
-    case KeyType::real: return "real";
-    case KeyType::string: return "string";
-    case KeyType::string_pair: return "[string, string]";
+    case KeyType::boolean:
+        return "boolean";
+    case KeyType::integer:
+        return "integer";
+    case KeyType::real:
+        return "real";
+    case KeyType::string:
+        return "string";
+    case KeyType::string_pair:
+        return "[string, string]";
     }
     return "?";
 }
@@ -253,7 +386,8 @@ const std::vector<TableSpec>& case_tables() {
         {"run", false, "required", "what to simulate and for how long"},
         {"species", true, "required (at least one)", "one table per species of grains"},
         {"collision", false, "required", "the collision rule of every pair without a [[pair]] table"},
-        {"pair", true, "optional", "mixtures: the collision rule of one species pair (keys default to [collision])"},
+        {"pair", true, "optional",
+         "mixtures: the collision rule of one species pair (keys default to [collision])"},
         {"material", false, "required for model = viscoelastic, brilliantov and roughgas restitution",
          "material of the grains (SI)"},
         {"contact", false, "optional", "how the contact of viscoelastic and brilliantov is integrated"},
@@ -305,7 +439,8 @@ std::string case_tables_markdown() {
                      "|-------|----------|----------|\n";
     for (const TableSpec& t : case_tables()) {
         const std::string header = t.array ? "[[" + t.name + "]]" : "[" + t.name + "]";
-        md += fmt::format("| `{}` | {} | {} |\n", header, markdown_cell(t.requirement), markdown_cell(t.description));
+        md += fmt::format("| `{}` | {} | {} |\n", header, markdown_cell(t.requirement),
+                          markdown_cell(t.description));
     }
     return md;
 }

@@ -56,7 +56,8 @@ std::string build_info() {
     return s + fmt::format(", C++ {}", __cplusplus);
 }
 
-CsvWriter::CsvWriter(std::vector<std::string> columns, const CsvProvenance& p) : columns_(std::move(columns)) {
+CsvWriter::CsvWriter(std::vector<std::string> columns, const CsvProvenance& p)
+    : columns_(std::move(columns)) {
     comment(text_, "roughgas " + roughgas_version());
     comment(text_, "case: " + p.case_file);
     for (const std::string& o : p.overrides) {
@@ -85,13 +86,16 @@ void CsvWriter::add_row(std::span<const double> values) {
             fmt::format("CSV row has {} values for {} columns", values.size(), columns_.size()));
     }
     for (std::size_t i = 0; i < values.size(); ++i) {
-        if (i) text_ += ',';
+        if (i)
+            text_ += ',';
         fmt::format_to(std::back_inserter(text_), "{:.17g}", values[i]);
     }
     text_ += '\n';
     ++rows_;
 }
 
-void CsvWriter::write(const std::filesystem::path& path) const { write_file_atomically(path, text_); }
+void CsvWriter::write(const std::filesystem::path& path) const {
+    write_file_atomically(path, text_);
+}
 
 } // namespace roughgas

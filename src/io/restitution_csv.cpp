@@ -5,18 +5,22 @@
 namespace roughgas {
 namespace {
 
-template <std::size_t N> std::string table(std::string_view file, const std::array<ColumnSpec, N>& cols) {
-    std::string md = fmt::format("`DIR/{}`:\n\n| Column | Unit | Meaning |\n|--------|------|---------|\n", file);
+template <std::size_t N>
+std::string table(std::string_view file, const std::array<ColumnSpec, N>& cols, const ColumnSpec& cached) {
+    std::string md =
+        fmt::format("`DIR/{}`:\n\n| Column | Unit | Meaning |\n|--------|------|---------|\n", file);
     for (const ColumnSpec& c : cols) {
         md += fmt::format("| `{}` | {} | {} |\n", c.name, c.unit, c.description);
     }
+    md += fmt::format("| `{}` | {} | {} |\n", cached.name, cached.unit, cached.description);
     return md;
 }
 
 } // namespace
 
 std::string restitution_columns_markdown() {
-    return table("normal.csv", normal_columns) + "\n" + table("tangential.csv", tangential_columns);
+    return table("normal.csv", normal_columns, normal_table_column) + "\n" +
+           table("tangential.csv", tangential_columns, tangential_table_column);
 }
 
 } // namespace roughgas

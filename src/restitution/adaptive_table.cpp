@@ -136,7 +136,39 @@ AdaptiveTable1D AdaptiveTable1D::build(double x_lo, double x_hi, const AdaptiveO
         pending.swap(next);
     }
     t.stats_.samples = lat.memo.size();
+    t.build_flat_index();
     return t;
+}
+
+void AdaptiveTable1D::build_flat_index() {
+    const std::size_t per_root = std::size_t{1} << flat_bits;
+    flat_.resize(std::size_t(n_root_) * per_root);
+    flat_scale_ = double(per_root);
+    for (std::size_t i = 0; i < flat_.size(); ++i) {
+        std::int32_t k = std::int32_t(i / per_root);
+        int depth = 0;
+        for (; depth < flat_bits && nodes_[k].child >= 0; ++depth)
+            k = nodes_[k].child + int((i >> (flat_bits - 1 - depth)) & 1);
+        flat_[i] = {k, std::ldexp(1.0, depth)};
+    }
+}
+
+void AdaptiveTable2D::build_flat_index() {
+    const std::size_t per_root = std::size_t{1} << flat_bits;
+    flat_nx_ = std::size_t(nx_) * per_root;
+    flat_ny_ = std::size_t(ny_) * per_root;
+    flat_scale_ = double(per_root);
+    flat_.resize(flat_nx_ * flat_ny_);
+    for (std::size_t iy = 0; iy < flat_ny_; ++iy)
+        for (std::size_t ix = 0; ix < flat_nx_; ++ix) {
+            std::int32_t k = std::int32_t((iy / per_root) * nx_ + ix / per_root);
+            int depth = 0;
+            for (; depth < flat_bits && nodes_[k].child >= 0; ++depth) {
+                const int shift = flat_bits - 1 - depth;
+                k = nodes_[k].child + 2 * int((iy >> shift) & 1) + int((ix >> shift) & 1);
+            }
+            flat_[iy * flat_nx_ + ix] = {k, std::ldexp(1.0, depth)};
+        }
 }
 
 AdaptiveTable2D AdaptiveTable2D::build(double x_lo, double x_hi, double y_lo, double y_hi, const AdaptiveOptions& opt,
@@ -210,6 +242,7 @@ AdaptiveTable2D AdaptiveTable2D::build(double x_lo, double x_hi, double y_lo, do
         pending.swap(next);
     }
     t.stats_.samples = lat.memo.size();
+    t.build_flat_index();
     return t;
 }
 
@@ -236,6 +269,7 @@ AdaptiveTable1D AdaptiveTable1D::deserialize(std::span<const double> d, std::siz
         pos += 6;
     }
     t.stats_ = get_stats(d, pos);
+    t.build_flat_index();
     return t;
 }
 
@@ -265,6 +299,7 @@ AdaptiveTable2D AdaptiveTable2D::deserialize(std::span<const double> d, std::siz
         pos += 5;
     }
     t.stats_ = get_stats(d, pos);
+    t.build_flat_index();
     return t;
 }
 

@@ -15,7 +15,8 @@ namespace fs = std::filesystem;
 
 std::vector<std::string> entries(const fs::path& dir) {
     std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+    for (const auto& e : fs::directory_iterator(dir))
+        names.push_back(e.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
 }
@@ -59,7 +60,8 @@ TEST(CsvWriter, ProvenanceHeaderAndFullPrecision) {
                                       "3.0000000000000002e-300,-2.5\n";
     const std::string& t = w.text();
     EXPECT_EQ(t.rfind("# roughgas ", 0), 0u) << t;
-    EXPECT_NE(t.find("# case: cases/ice.toml\n# set: run.seed=3\n# seed: 3\n# build: "), std::string::npos) << t;
+    EXPECT_NE(t.find("# case: cases/ice.toml\n# set: run.seed=3\n# seed: 3\n# build: "), std::string::npos)
+        << t;
     EXPECT_NE(t.find("# a note\n"), std::string::npos);
     ASSERT_GE(t.size(), expected_tail.size());
     EXPECT_EQ(t.substr(t.size() - expected_tail.size()), expected_tail);

@@ -53,13 +53,15 @@ TEST(CaseFile, SchemaDefaultsMatchTheConfigStructs) {
     const RestitutionGridConfig g;
     EXPECT_EQ(std::get<double>(find_key("run.density")->default_value), run.density);
     EXPECT_EQ(std::get<std::int64_t>(find_key("run.replicas")->default_value), run.replicas);
-    EXPECT_EQ(std::get<std::int64_t>(find_key("run.seed")->default_value), static_cast<std::int64_t>(run.seed));
+    EXPECT_EQ(std::get<std::int64_t>(find_key("run.seed")->default_value),
+              static_cast<std::int64_t>(run.seed));
     EXPECT_EQ(std::get<double>(find_key("run.output_every")->default_value), run.output_every);
     EXPECT_EQ(std::get<std::string>(find_key("species.name")->default_value), sp.name);
     EXPECT_EQ(std::get<double>(find_key("species.inertia")->default_value), sp.inertia);
     EXPECT_EQ(std::get<double>(find_key("species.fraction")->default_value), sp.fraction);
     EXPECT_EQ(std::get<double>(find_key("species.temperature")->default_value), sp.temperature);
-    EXPECT_EQ(std::get<double>(find_key("species.rotational_temperature")->default_value), sp.rotational_temperature);
+    EXPECT_EQ(std::get<double>(find_key("species.rotational_temperature")->default_value),
+              sp.rotational_temperature);
     EXPECT_EQ(std::get<bool>(find_key("contact.cache")->default_value), ct.cache);
     EXPECT_EQ(std::get<double>(find_key("contact.tolerance")->default_value), ct.tolerance.rel);
     EXPECT_EQ(std::get<double>(find_key("restitution.g_n_min")->default_value), g.g_n_min);
@@ -71,9 +73,10 @@ TEST(CaseFile, SchemaDefaultsMatchTheConfigStructs) {
 }
 
 TEST(CaseFile, SetOverridesBeforeValidation) {
-    const CaseConfig c = parse_case(small_case(), "case.toml",
-                                    {"species.0.radius=0.5", "run.particles=20000", "collision.model=\"constant\"",
-                                     "collision.alpha=0.7", "collision.beta = 0", "contact.form=eq25"});
+    const CaseConfig c =
+        parse_case(small_case(), "case.toml",
+                   {"species.0.radius=0.5", "run.particles=20000", "collision.model=\"constant\"",
+                    "collision.alpha=0.7", "collision.beta = 0", "contact.form=eq25"});
     EXPECT_EQ(c.species[0].radius, 0.5);
     EXPECT_EQ(c.run.particles, 20000);
     EXPECT_EQ(c.collision.model, CollisionModel::constant);
@@ -84,17 +87,18 @@ TEST(CaseFile, SetOverridesBeforeValidation) {
 
 TEST(CaseFile, SetAcceptsQuotedAndBareStrings) {
     const std::string text = replaced(small_case(), "model = \"brilliantov\"", "model = \"viscoelastic\"");
-    EXPECT_EQ(parse_case(text, "c.toml", {"collision.model=brilliantov"}).collision.model, CollisionModel::brilliantov);
+    EXPECT_EQ(parse_case(text, "c.toml", {"collision.model=brilliantov"}).collision.model,
+              CollisionModel::brilliantov);
     EXPECT_EQ(parse_case(text, "c.toml", {"collision.model=\"brilliantov\""}).collision.model,
               CollisionModel::brilliantov);
     EXPECT_EQ(parse_case(text, "c.toml", {"species.0.name=true"}).species[0].name, "true"); // string key
 }
 
 TEST(CaseFile, SetCreatesTablesAndOneMoreArrayElement) {
-    const CaseConfig c = parse_case(small_case(), "c.toml",
-                                    {"species.0.fraction=0.5", "species.1.name=b", "species.1.mass=1e-3",
-                                     "species.1.radius=0.005", "species.1.fraction=0.5", "shear.rate=2",
-                                     "run.kind=shear"});
+    const CaseConfig c =
+        parse_case(small_case(), "c.toml",
+                   {"species.0.fraction=0.5", "species.1.name=b", "species.1.mass=1e-3",
+                    "species.1.radius=0.005", "species.1.fraction=0.5", "shear.rate=2", "run.kind=shear"});
     ASSERT_EQ(c.species.size(), 2u);
     EXPECT_EQ(c.species[1].name, "b");
     EXPECT_EQ(c.species[1].radius, 0.005);
@@ -108,7 +112,8 @@ TEST(CaseFile, SetErrorsNameTheArgument) {
     EXPECT_NE(error_of(small_case(), {"species.5.radius=1"}).find("index must be <= 1"), std::string::npos);
     EXPECT_NE(error_of(small_case(), {"alpha=1"}).find("dotted path"), std::string::npos);
     const std::string e = error_of(small_case(), {"species.0.radius=-1"});
-    EXPECT_NE(e.find("case.toml: species.0.radius = -1: must be > 0 (length) (set with --set)"), std::string::npos)
+    EXPECT_NE(e.find("case.toml: species.0.radius = -1: must be > 0 (length) (set with --set)"),
+              std::string::npos)
         << e;
 }
 
@@ -140,31 +145,36 @@ TEST(CaseFile, UnknownKeysGetSuggestions) {
                   .find("did you mean asperity in [material]?"),
               std::string::npos);
     // Far from everything: the message lists the table's keys instead.
-    EXPECT_NE(error_of(replaced(small_case(), "end = 10.0", "end = 10.0\nzzzzzzzz = 1")).find("[run] allows kind"),
-              std::string::npos);
+    EXPECT_NE(
+        error_of(replaced(small_case(), "end = 10.0", "end = 10.0\nzzzzzzzz = 1")).find("[run] allows kind"),
+        std::string::npos);
     EXPECT_NE(error_of(small_case(), {"collision.model=brilliantv"}).find("did you mean \"brilliantov\"?"),
               std::string::npos);
 }
 
 TEST(CaseFile, TypesAreChecked) {
-    EXPECT_NE(error_of(small_case(), {"run.particles=1.5"}).find("run.particles = 1.5: must be an integer >= 2"),
-              std::string::npos);
-    EXPECT_EQ(parse_case(small_case(), "c.toml", {"run.particles=1e5"}).run.particles, 100000); // integral float
+    EXPECT_NE(
+        error_of(small_case(), {"run.particles=1.5"}).find("run.particles = 1.5: must be an integer >= 2"),
+        std::string::npos);
+    EXPECT_EQ(parse_case(small_case(), "c.toml", {"run.particles=1e5"}).run.particles,
+              100000); // integral float
     EXPECT_NE(error_of(small_case(), {"species.0.radius=\"big\""}).find("must be a real number > 0 (length)"),
               std::string::npos);
     EXPECT_NE(error_of(small_case(), {"contact.cache=1"}).find("must be true or false"), std::string::npos);
     EXPECT_NE(error_of(small_case(), {"material.young_modulus=inf"}).find("must be a real number > 0"),
               std::string::npos);
-    EXPECT_NE(error_of(replaced(small_case(), "[[species]]", "[species]")).find("[[species]]"), std::string::npos);
+    EXPECT_NE(error_of(replaced(small_case(), "[[species]]", "[species]")).find("[[species]]"),
+              std::string::npos);
     EXPECT_NE(error_of("[run\n").find("case.toml:1:"), std::string::npos); // TOML syntax error with position
 }
 
 TEST(CaseFile, ModelDependentRequirements) {
     const std::string constant = replaced(small_case(), "model = \"brilliantov\"", "model = \"constant\"");
     const std::string e = error_of(constant);
-    EXPECT_NE(e.find("collision.alpha: required for collision.model = \"constant\" but missing (must be a real "
-                     "number in [0, 1])"),
-              std::string::npos)
+    EXPECT_NE(
+        e.find("collision.alpha: required for collision.model = \"constant\" but missing (must be a real "
+               "number in [0, 1])"),
+        std::string::npos)
         << e;
     EXPECT_NE(e.find("collision.beta: required"), std::string::npos) << e;
     EXPECT_EQ(error_of(constant, {"collision.alpha=0.9", "collision.beta=0"}), "");
@@ -174,30 +184,36 @@ TEST(CaseFile, ModelDependentRequirements) {
               std::string::npos);
     const std::string visco = replaced(no_asperity, "model = \"brilliantov\"", "model = \"viscoelastic\"");
     EXPECT_EQ(error_of(visco), "");
-    EXPECT_NE(error_of(visco, {}, CaseUse::restitution).find("material.asperity: required for roughgas restitution"),
+    EXPECT_NE(error_of(visco, {}, CaseUse::restitution)
+                  .find("material.asperity: required for roughgas restitution"),
               std::string::npos);
 
     const std::size_t m = small_case().find("[material]");
     const std::size_t r = small_case().find("[restitution]");
     const std::string no_material = small_case().substr(0, m) + small_case().substr(r);
-    EXPECT_NE(error_of(no_material).find("material: the [material] table is required for collision.model = "
-                                         "\"brilliantov\""),
+    EXPECT_NE(error_of(no_material)
+                  .find("material: the [material] table is required for collision.model = "
+                        "\"brilliantov\""),
               std::string::npos);
-    EXPECT_NE(error_of(small_case(), {"run.kind=shear"}).find("shear.rate: required for run.kind = \"shear\""),
-              std::string::npos);
+    EXPECT_NE(
+        error_of(small_case(), {"run.kind=shear"}).find("shear.rate: required for run.kind = \"shear\""),
+        std::string::npos);
 }
 
 TEST(CaseFile, DissipationFromViscosities) {
     const std::string viscous = replaced(small_case(), "dissipation = 1.0e-5", "eta1 = 1.0e4\neta2 = 2.0e4");
     const CaseConfig c = parse_case(viscous, "c.toml");
     EXPECT_DOUBLE_EQ(c.material->dissipation, dissipation_from_viscosities(1.0e4, 2.0e4, 1.0e10, 0.3));
-    EXPECT_NE(error_of(replaced(small_case(), "dissipation = 1.0e-5", "dissipation = 1.0e-5\neta1 = 1.0\neta2 = 1.0"))
+    EXPECT_NE(error_of(replaced(small_case(), "dissipation = 1.0e-5",
+                                "dissipation = 1.0e-5\neta1 = 1.0\neta2 = 1.0"))
                   .find("not both"),
               std::string::npos);
-    EXPECT_NE(error_of(replaced(small_case(), "dissipation = 1.0e-5", "eta1 = 1.0")).find("material.eta2: required"),
+    EXPECT_NE(error_of(replaced(small_case(), "dissipation = 1.0e-5", "eta1 = 1.0"))
+                  .find("material.eta2: required"),
               std::string::npos);
-    EXPECT_NE(error_of(replaced(small_case(), "dissipation = 1.0e-5", "")).find("material.dissipation: required"),
-              std::string::npos);
+    EXPECT_NE(
+        error_of(replaced(small_case(), "dissipation = 1.0e-5", "")).find("material.dissipation: required"),
+        std::string::npos);
     EXPECT_NE(error_of(viscous, {"material.poisson_ratio=0"}).find("poisson_ratio != 0"), std::string::npos);
 }
 
@@ -235,8 +251,9 @@ TEST(CaseFile, MixturesAndPairs) {
     EXPECT_NE(error_of(mixture(), {"pair.1.species=[\"big\", \"ice\"]"}).find("already sets this pair"),
               std::string::npos);
     EXPECT_NE(error_of(mixture(), {"species.1.name=ice"}).find("must be unique"), std::string::npos);
-    EXPECT_NE(error_of(mixture(), {"species.1.fraction=0.7"}).find("species.fraction: the fractions sum to 0.95, "
-                                                                   "must sum to 1 (within 1e-9)"),
+    EXPECT_NE(error_of(mixture(), {"species.1.fraction=0.7"})
+                  .find("species.fraction: the fractions sum to 0.95, "
+                        "must sum to 1 (within 1e-9)"),
               std::string::npos);
     EXPECT_NE(error_of(mixture(), {"run.particles=3"}).find("gets no particle"), std::string::npos);
 }
@@ -248,8 +265,8 @@ TEST(CaseFile, RestitutionGridBounds) {
 }
 
 TEST(CaseFile, EmitParseRoundTrip) {
-    const std::vector<std::string> texts = {small_case(), mixture(),
-                                            replaced(small_case(), "dissipation = 1.0e-5", "eta1 = 3.0\neta2 = 7.0")};
+    const std::vector<std::string> texts = {
+        small_case(), mixture(), replaced(small_case(), "dissipation = 1.0e-5", "eta1 = 3.0\neta2 = 7.0")};
     for (const std::string& t : texts) {
         const CaseConfig c = parse_case(t, "c.toml", {"run.kind=shear", "shear.rate=0.1"});
         const std::string emitted = emit_case(c);
@@ -258,7 +275,8 @@ TEST(CaseFile, EmitParseRoundTrip) {
 }
 
 TEST(CaseFile, EmitQuotesStrings) {
-    const CaseConfig c = parse_case(small_case(), "c.toml", {"species.0.name=a\"b\\c", "contact.cache_file=x y"});
+    const CaseConfig c =
+        parse_case(small_case(), "c.toml", {"species.0.name=a\"b\\c", "contact.cache_file=x y"});
     EXPECT_EQ(c.species[0].name, "a\"b\\c");
     EXPECT_EQ(parse_case(emit_case(c), "emitted.toml"), c);
 }

@@ -34,12 +34,16 @@ std::string two_species(double f0, double f1) {
 std::vector<BadInput> bad_inputs() {
     const std::string c = small_case();
     return {
-        {"NegativeYoungModulus", c, "--set material.young_modulus=-1e10", "material.young_modulus", "must be > 0 (Pa)"},
+        {"NegativeYoungModulus", c, "--set material.young_modulus=-1e10", "material.young_modulus",
+         "must be > 0 (Pa)"},
         {"NegativeYoungModulusInFile", replaced(c, "young_modulus = 1.0e10", "young_modulus = -1e10"), "",
          "material.young_modulus", "must be > 0 (Pa)"},
-        {"PoissonRatioTooLarge", c, "--set material.poisson_ratio=0.5", "material.poisson_ratio", "must be in (-1, 0.5)"},
-        {"PoissonRatioTooSmall", c, "--set material.poisson_ratio=-1", "material.poisson_ratio", "must be in (-1, 0.5)"},
-        {"NegativeDissipation", c, "--set material.dissipation=-1e-5", "material.dissipation", "must be >= 0 (s)"},
+        {"PoissonRatioTooLarge", c, "--set material.poisson_ratio=0.5", "material.poisson_ratio",
+         "must be in (-1, 0.5)"},
+        {"PoissonRatioTooSmall", c, "--set material.poisson_ratio=-1", "material.poisson_ratio",
+         "must be in (-1, 0.5)"},
+        {"NegativeDissipation", c, "--set material.dissipation=-1e-5", "material.dissipation",
+         "must be >= 0 (s)"},
         {"NegativeFriction", c, "--set material.friction=-0.1", "material.friction", "must be >= 0"},
         {"ZeroAsperity", c, "--set material.asperity=0", "material.asperity", "must be > 0 (m)"},
         {"NegativeAsperity", c, "--set material.asperity=-1e-6", "material.asperity", "must be > 0 (m)"},
@@ -47,21 +51,28 @@ std::vector<BadInput> bad_inputs() {
          "required key is missing (must be a real number > 0 (length))"},
         {"UnknownKey", replaced(c, "young_modulus", "youngs_modulus"), "", "material.youngs_modulus",
          "unknown key (did you mean material.young_modulus?)"},
-        {"NegativeAlpha", constant_model(), "--set collision.alpha=-0.1", "collision.alpha", "must be in [0, 1]"},
-        {"AlphaAboveOne", constant_model(), "--set collision.alpha=1.01", "collision.alpha", "must be in [0, 1]"},
-        {"BetaAboveOne", constant_model(), "--set collision.beta=1.5", "collision.beta", "must be in [-1, 1]"},
-        {"BetaBelowMinusOne", constant_model(), "--set collision.beta=-1.5", "collision.beta", "must be in [-1, 1]"},
+        {"NegativeAlpha", constant_model(), "--set collision.alpha=-0.1", "collision.alpha",
+         "must be in [0, 1]"},
+        {"AlphaAboveOne", constant_model(), "--set collision.alpha=1.01", "collision.alpha",
+         "must be in [0, 1]"},
+        {"BetaAboveOne", constant_model(), "--set collision.beta=1.5", "collision.beta",
+         "must be in [-1, 1]"},
+        {"BetaBelowMinusOne", constant_model(), "--set collision.beta=-1.5", "collision.beta",
+         "must be in [-1, 1]"},
         {"UnknownModel", c, "--set collision.model=granite", "collision.model",
          "must be one of \"constant\", \"coulomb\", \"viscoelastic\", \"brilliantov\""},
         {"ZeroParticles", c, "--set run.particles=0", "run.particles", "must be >= 2"},
-        {"FractionsNotSummingToOne", two_species(0.5, 0.4), "", "species.fraction", "must sum to 1 (within 1e-9)"},
-        {"MissingMaterialForRestitution", replaced(c, "asperity = 1.0e-6", ""), "--set collision.model=viscoelastic",
-         "material.asperity", "required for roughgas restitution"},
+        {"FractionsNotSummingToOne", two_species(0.5, 0.4), "", "species.fraction",
+         "must sum to 1 (within 1e-9)"},
+        {"MissingMaterialForRestitution", replaced(c, "asperity = 1.0e-6", ""),
+         "--set collision.model=viscoelastic", "material.asperity", "required for roughgas restitution"},
     };
 }
 
 // gtest prints the parameter of a failing test with this.
-void PrintTo(const BadInput& b, std::ostream* os) { *os << b.name; }
+void PrintTo(const BadInput& b, std::ostream* os) {
+    *os << b.name;
+}
 
 class InvalidInput : public ::testing::TestWithParam<BadInput> {};
 
@@ -92,7 +103,8 @@ INSTANTIATE_TEST_SUITE_P(Cli, InvalidInput, ::testing::ValuesIn(bad_inputs()),
 
 TEST(Cli, FileErrorsCarryLineAndColumn) {
     const test::ScratchDir dir;
-    const fs::path f = dir.write("bad.toml", replaced(small_case(), "young_modulus = 1.0e10", "young_modulus = -1e10"));
+    const fs::path f =
+        dir.write("bad.toml", replaced(small_case(), "young_modulus = 1.0e10", "young_modulus = -1e10"));
     const test::CommandResult r = run_roughgas("check '" + f.string() + "'", dir);
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find(f.string() + ":14:17: material.young_modulus = "), std::string::npos) << r.err;
@@ -102,14 +114,18 @@ TEST(Cli, CheckAcceptsValidCaseAndOverrides) {
     const test::ScratchDir dir;
     const fs::path f = dir.write("ok.toml", small_case());
     EXPECT_EQ(run_roughgas("check '" + f.string() + "'", dir).status, 0);
-    const test::CommandResult r = run_roughgas(
-        "check '" + f.string() + "' --set species.0.radius=0.5 --set 'collision.model=\"viscoelastic\"' --print", dir);
+    const test::CommandResult r =
+        run_roughgas("check '" + f.string() +
+                         "' --set species.0.radius=0.5 --set 'collision.model=\"viscoelastic\"' --print",
+                     dir);
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("radius = 0.5\n"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("model = \"viscoelastic\"\n"), std::string::npos) << r.out;
-    const test::CommandResult bare = run_roughgas("check '" + f.string() + "' --set collision.model=coulomb "
-                                                  "--set collision.alpha=0.8 --set collision.beta0=0.4 "
-                                                  "--set collision.friction=0.2 --print", dir);
+    const test::CommandResult bare = run_roughgas("check '" + f.string() +
+                                                      "' --set collision.model=coulomb "
+                                                      "--set collision.alpha=0.8 --set collision.beta0=0.4 "
+                                                      "--set collision.friction=0.2 --print",
+                                                  dir);
     EXPECT_EQ(bare.status, 0) << bare.err;
     EXPECT_NE(bare.out.find("model = \"coulomb\"\n"), std::string::npos) << bare.out;
 }
@@ -118,7 +134,8 @@ TEST(Cli, EveryShippedCasePassesCheck) {
     const test::ScratchDir dir;
     int n = 0;
     for (const auto& e : fs::directory_iterator(fs::path(ROUGHGAS_SOURCE_DIR) / "cases")) {
-        if (e.path().extension() != ".toml") continue;
+        if (e.path().extension() != ".toml")
+            continue;
         ++n;
         const std::string f = e.path().string();
         const test::CommandResult r = run_roughgas("check '" + f + "'", dir);
@@ -145,7 +162,8 @@ TEST(Cli, RunAndSweepAreNotImplementedYet) {
     const test::ScratchDir dir;
     const fs::path f = dir.write("ok.toml", small_case());
     const std::string out = (dir / "out").string();
-    test::CommandResult r = run_roughgas("run '" + f.string() + "' --out '" + out + "' --seed 3 --threads 2", dir);
+    test::CommandResult r =
+        run_roughgas("run '" + f.string() + "' --out '" + out + "' --seed 3 --threads 2", dir);
     EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.err.find("not implemented yet (DSMC: issue 3)"), std::string::npos) << r.err;
     EXPECT_EQ(run_roughgas("run --resume '" + out + "'", dir).status, 1);
@@ -153,8 +171,11 @@ TEST(Cli, RunAndSweepAreNotImplementedYet) {
     r = run_roughgas("sweep '" + f.string() + "' --param run.end=1:100:5 --out '" + out + "'", dir);
     EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.err.find("not implemented yet (DSMC: issue 3)"), std::string::npos) << r.err;
-    EXPECT_EQ(run_roughgas("sweep '" + f.string() + "' --param run.end=-1:100:5 --out '" + out + "'", dir).status, 2);
-    EXPECT_EQ(run_roughgas("sweep '" + f.string() + "' --param run.end=1:100 --out '" + out + "'", dir).status, 2);
+    EXPECT_EQ(
+        run_roughgas("sweep '" + f.string() + "' --param run.end=-1:100:5 --out '" + out + "'", dir).status,
+        2);
+    EXPECT_EQ(
+        run_roughgas("sweep '" + f.string() + "' --param run.end=1:100 --out '" + out + "'", dir).status, 2);
     EXPECT_FALSE(fs::exists(out));
 }
 
@@ -162,7 +183,8 @@ TEST(Cli, RunAndSweepAreNotImplementedYet) {
 
 std::vector<std::string> entries(const fs::path& dir) {
     std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+    for (const auto& e : fs::directory_iterator(dir))
+        names.push_back(e.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
 }
@@ -172,33 +194,62 @@ std::vector<std::string> rows(const fs::path& p) {
     std::istringstream in(test::read_file(p));
     std::vector<std::string> r;
     for (std::string line; std::getline(in, line);) {
-        if (!line.empty() && line[0] != '#') r.push_back(line);
+        if (!line.empty() && line[0] != '#')
+            r.push_back(line);
     }
     return r;
+}
+
+// The comma-separated numbers of a CSV row.
+std::vector<double> numbers(const std::string& row) {
+    std::vector<double> v;
+    std::istringstream in(row);
+    for (std::string cell; std::getline(in, cell, ',');)
+        v.push_back(std::stod(cell));
+    return v;
 }
 
 TEST(Cli, RestitutionWritesBothTables) {
     const test::ScratchDir dir;
     const fs::path f = dir.write("ok.toml", small_case());
     const fs::path out = dir / "out";
-    const test::CommandResult r = run_roughgas("restitution '" + f.string() + "' --out '" + out.string() +
-                                                   "' --set restitution.g_t_points=3",
-                                               dir);
+    const test::CommandResult r = run_roughgas(
+        "restitution '" + f.string() + "' --out '" + out.string() + "' --set restitution.g_t_points=3", dir);
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(entries(out), (std::vector<std::string>{"normal.csv", "tangential.csv"})); // no temporary files
     const std::vector<std::string> normal = rows(out / "normal.csv");
     ASSERT_EQ(normal.size(), 3u);
-    EXPECT_EQ(normal[0], "g_N,w,eps_N,duration,max_compression");
+    // contact.cache = true (the default): the cached tables' values follow the direct ones.
+    EXPECT_EQ(normal[0], "g_N,w,eps_N,duration,max_compression,eps_N_table");
     EXPECT_EQ(normal[1].rfind("0.01,", 0), 0u) << normal[1];
+    for (std::size_t k = 1; k < normal.size(); ++k) {
+        const std::vector<double> v = numbers(normal[k]);
+        EXPECT_NEAR(v[5], v[2], 1e-8 * v[2]) << normal[k]; // the eps_N table's bound
+    }
     const std::vector<std::string> tangential = rows(out / "tangential.csv");
     ASSERT_EQ(tangential.size(), 1u + 2 * 3);
-    EXPECT_EQ(tangential[0], "g_N,g_T,eps_T,beta,breaks");
+    EXPECT_EQ(tangential[0], "g_N,g_T,eps_T,beta,breaks,eps_T_table");
+    for (std::size_t k = 1; k < tangential.size(); ++k) {
+        const std::vector<double> v = numbers(tangential[k]);
+        EXPECT_NEAR(v[5], v[2], 1e-4) << tangential[k]; // the eps_T table's bound
+    }
     EXPECT_EQ(tangential[1].rfind("0.01,0.01,", 0), 0u) << tangential[1]; // g_N outer, g_T inner
     EXPECT_EQ(tangential[2].rfind("0.01,0.10000000000000001,", 0), 0u) << tangential[2];
     const std::string text = test::read_file(out / "normal.csv");
     EXPECT_NE(text.find("# case: " + f.string() + "\n"), std::string::npos);
     EXPECT_NE(text.find("# set: restitution.g_t_points=3\n"), std::string::npos);
     EXPECT_NE(text.find("# g_t_points = 3\n"), std::string::npos); // the resolved case
+}
+
+TEST(Cli, RestitutionWithoutCacheHasNoTableColumns) {
+    const test::ScratchDir dir;
+    const fs::path f = dir.write("ok.toml", small_case());
+    const fs::path out = dir / "out";
+    const test::CommandResult r = run_roughgas(
+        "restitution '" + f.string() + "' --out '" + out.string() + "' --set contact.cache=false", dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(rows(out / "normal.csv")[0], "g_N,w,eps_N,duration,max_compression");
+    EXPECT_EQ(rows(out / "tangential.csv")[0], "g_N,g_T,eps_T,beta,breaks");
 }
 
 TEST(Cli, ExistingOutputIsRefusedWithoutForce) {
@@ -219,7 +270,9 @@ TEST(Cli, ExistingOutputIsRefusedWithoutForce) {
     EXPECT_EQ(entries(out), (std::vector<std::string>{"normal.csv", "tangential.csv"}));
 
     const fs::path file = dir.write("plain_file", "x");
-    EXPECT_EQ(run_roughgas("restitution '" + f.string() + "' --out '" + file.string() + "' --force", dir).status, 2);
+    EXPECT_EQ(
+        run_roughgas("restitution '" + f.string() + "' --out '" + file.string() + "' --force", dir).status,
+        2);
 }
 
 TEST(Cli, RestitutionOutputDoesNotDependOnThreads) {

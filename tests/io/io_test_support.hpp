@@ -20,7 +20,8 @@ class ScratchDir {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
         std::string name = std::string(info->test_suite_name()) + "_" + info->name();
         for (char& c : name) {
-            if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+            if (!std::isalnum(static_cast<unsigned char>(c)))
+                c = '_';
         }
         path_ = fs::path(::testing::TempDir()) / ("roughgas_io_" + name + "_" + std::to_string(::getpid()));
         fs::remove_all(path_);
@@ -64,8 +65,8 @@ struct CommandResult {
 inline CommandResult run_roughgas(const std::string& args, const ScratchDir& dir) {
     const fs::path out = dir / "stdout.txt";
     const fs::path err = dir / "stderr.txt";
-    const std::string cmd = std::string("'") + ROUGHGAS_BINARY + "' " + args + " >'" + out.string() + "' 2>'" +
-                            err.string() + "'";
+    const std::string cmd = std::string("'") + ROUGHGAS_BINARY + "' " + args + " >'" + out.string() +
+                            "' 2>'" + err.string() + "'";
     const int raw = std::system(cmd.c_str());
     CommandResult r;
     r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -111,7 +112,8 @@ g_t_points = 2
 inline std::string replaced(std::string text, const std::string& from, const std::string& to) {
     const std::size_t at = text.find(from);
     EXPECT_NE(at, std::string::npos) << from;
-    if (at != std::string::npos) text.replace(at, from.size(), to);
+    if (at != std::string::npos)
+        text.replace(at, from.size(), to);
     return text;
 }
 

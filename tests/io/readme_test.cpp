@@ -20,7 +20,8 @@ std::string readme() {
 // The text of the section `## title`, up to the next `## ` heading.
 std::string section(const std::string& text, const std::string& title) {
     const std::size_t start = text.find(std::string("\n## ").append(title).append("\n"));
-    if (start == std::string::npos) return {};
+    if (start == std::string::npos)
+        return {};
     const std::size_t end = text.find("\n## ", start + 1);
     return text.substr(start, end == std::string::npos ? std::string::npos : end - start);
 }

@@ -35,10 +35,18 @@ enum class CollisionModel { constant, coulomb, viscoelastic, brilliantov };
 inline constexpr std::array<std::string_view, 4> collision_model_names{"constant", "coulomb", "viscoelastic",
                                                                        "brilliantov"};
 
-constexpr std::string_view name(RunKind k) { return run_kind_names[static_cast<int>(k)]; }
-constexpr std::string_view name(OutputSpacing s) { return output_spacing_names[static_cast<int>(s)]; }
-constexpr std::string_view name(GridSpacing s) { return grid_spacing_names[static_cast<int>(s)]; }
-constexpr std::string_view name(CollisionModel m) { return collision_model_names[static_cast<int>(m)]; }
+constexpr std::string_view name(RunKind k) {
+    return run_kind_names[static_cast<int>(k)];
+}
+constexpr std::string_view name(OutputSpacing s) {
+    return output_spacing_names[static_cast<int>(s)];
+}
+constexpr std::string_view name(GridSpacing s) {
+    return grid_spacing_names[static_cast<int>(s)];
+}
+constexpr std::string_view name(CollisionModel m) {
+    return collision_model_names[static_cast<int>(m)];
+}
 
 // Does the model integrate the viscoelastic contact (and therefore need [material])?
 constexpr bool uses_material(CollisionModel m) {
@@ -48,12 +56,12 @@ constexpr bool uses_material(CollisionModel m) {
 // [run]
 struct RunConfig {
     RunKind kind = RunKind::cooling;
-    std::int64_t particles = 0;   // simulated particles (statistics only)
-    double density = 1.0;         // number density n [1/length^3]: sets the time scale
-    std::int64_t replicas = 1;    // independent runs averaged (columns X_err)
+    std::int64_t particles = 0; // simulated particles (statistics only)
+    double density = 1.0;       // number density n [1/length^3]: sets the time scale
+    std::int64_t replicas = 1;  // independent runs averaged (columns X_err)
     std::uint64_t seed = 1;
-    double end = 0;               // collisions per particle
-    double output_every = 1.0;    // collisions per particle (first output for log spacing)
+    double end = 0;            // collisions per particle
+    double output_every = 1.0; // collisions per particle (first output for log spacing)
     OutputSpacing output_spacing = OutputSpacing::linear;
     friend bool operator==(const RunConfig&, const RunConfig&) = default;
 };
@@ -61,11 +69,11 @@ struct RunConfig {
 // One [[species]] table.
 struct SpeciesConfig {
     std::string name = "grain";
-    double mass = 0;                    // m
-    double radius = 0;                  // R
-    double inertia = 0.4;               // q = J/(m R^2), physics.md §1
-    double fraction = 1.0;              // number fraction
-    double temperature = 1.0;           // initial T_tr (k_B = 1, energy units)
+    double mass = 0;                     // m
+    double radius = 0;                   // R
+    double inertia = 0.4;                // q = J/(m R^2), physics.md §1
+    double fraction = 1.0;               // number fraction
+    double temperature = 1.0;            // initial T_tr (k_B = 1, energy units)
     double rotational_temperature = 1.0; // initial T_rot
     friend bool operator==(const SpeciesConfig&, const SpeciesConfig&) = default;
 };
@@ -74,8 +82,8 @@ struct SpeciesConfig {
 // (they are validated and echoed, never read); the ones it needs are guaranteed present.
 struct CollisionConfig {
     CollisionModel model = CollisionModel::constant;
-    std::optional<double> alpha;    // normal restitution (constant, coulomb)
-    std::optional<double> beta;     // tangential restitution, beta = -eps^T (constant; viscoelastic: -1 if unset)
+    std::optional<double> alpha; // normal restitution (constant, coulomb)
+    std::optional<double> beta; // tangential restitution, beta = -eps^T (constant; viscoelastic: -1 if unset)
     std::optional<double> beta0;    // coulomb: the sticking limit of beta
     std::optional<double> friction; // coulomb: the Coulomb friction coefficient mu of the pair
     bool direct = false;            // integrate every contact (no cached table) for this pair
@@ -91,13 +99,13 @@ struct PairConfig {
 
 // [material] (SI). The dissipation is always resolved: given, or from eta1 and eta2 by seed eq. 23.
 struct MaterialConfig {
-    double young_modulus = 0;           // Y [Pa]
-    double poisson_ratio = 0;           // nu
-    double dissipation = 0;             // A [s]
-    std::optional<double> eta1;         // [Pa s], only when A came from the viscosities
-    std::optional<double> eta2;         // [Pa s]
-    std::optional<double> friction;     // mu of the asperity model (brilliantov)
-    std::optional<double> asperity;     // zeta_0 [m] (brilliantov)
+    double young_modulus = 0;       // Y [Pa]
+    double poisson_ratio = 0;       // nu
+    double dissipation = 0;         // A [s]
+    std::optional<double> eta1;     // [Pa s], only when A came from the viscosities
+    std::optional<double> eta2;     // [Pa s]
+    std::optional<double> friction; // mu of the asperity model (brilliantov)
+    std::optional<double> asperity; // zeta_0 [m] (brilliantov)
     friend bool operator==(const MaterialConfig&, const MaterialConfig&) = default;
 
     // The physics view. Unset friction/asperity only occur when no model reads them.
@@ -114,10 +122,10 @@ struct MaterialConfig {
 
 // [contact]
 struct ContactConfig {
-    ContactModel model{};       // form (eq24 | eq25), end (force | separation)
-    bool cache = true;          // false: integrate every contact directly
-    std::string cache_file;     // "" : the table is rebuilt on every run
-    Tolerance tolerance{};      // rel = contact.tolerance, abs = rel/100 (Hertz-scaled state is O(1))
+    ContactModel model{};   // form (eq24 | eq25), end (force | separation)
+    bool cache = true;      // false: integrate every contact directly
+    std::string cache_file; // "" : the table is rebuilt on every run
+    Tolerance tolerance{};  // rel = contact.tolerance, abs = rel/100 (Hertz-scaled state is O(1))
     friend bool operator==(const ContactConfig&, const ContactConfig&) = default;
 };
 
@@ -141,12 +149,12 @@ struct RestitutionGridConfig {
 
 struct CaseConfig {
     RunConfig run;
-    std::vector<SpeciesConfig> species;       // at least one
+    std::vector<SpeciesConfig> species; // at least one
     CollisionConfig collision;
-    std::vector<PairConfig> pairs;             // overrides of [collision] for species pairs
-    std::optional<MaterialConfig> material;   // present iff [material] was given
+    std::vector<PairConfig> pairs;          // overrides of [collision] for species pairs
+    std::optional<MaterialConfig> material; // present iff [material] was given
     ContactConfig contact;
-    std::optional<ShearConfig> shear;         // present iff [shear] was given (required for kind = shear)
+    std::optional<ShearConfig> shear; // present iff [shear] was given (required for kind = shear)
     RestitutionGridConfig restitution;
     friend bool operator==(const CaseConfig&, const CaseConfig&) = default;
 };

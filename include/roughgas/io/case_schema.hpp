@@ -52,9 +52,9 @@ struct KeySpec {
 };
 
 struct TableSpec {
-    std::string name;          // "species"
-    bool array = false;        // [[species]] rather than [species]
-    std::string requirement;   // "required", "required for ...", or "optional"
+    std::string name;        // "species"
+    bool array = false;      // [[species]] rather than [species]
+    std::string requirement; // "required", "required for ...", or "optional"
     std::string description;
 };
 

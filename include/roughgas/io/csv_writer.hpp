@@ -15,8 +15,8 @@ struct CsvProvenance {
     std::string case_file;              // as the user gave it
     std::vector<std::string> overrides; // the --set arguments
     std::optional<std::uint64_t> seed;
-    std::string resolved_case;          // emit_case(cfg): every key with defaults filled in
-    std::vector<std::string> notes;     // further "# ..." lines, e.g. what the table holds
+    std::string resolved_case;      // emit_case(cfg): every key with defaults filled in
+    std::vector<std::string> notes; // further "# ..." lines, e.g. what the table holds
 };
 
 class CsvWriter {

@@ -16,12 +16,12 @@ struct SourcePosition {
 };
 
 // One problem: `file:line:column: message`, where message starts with the key,
-// e.g. "material.young_modulus = -1e+10: must be > 0 (Pa)".
+// e.g. "material.young_modulus = -1: must be > 0 (Pa)".
 struct InputIssue {
-    std::string file;                     // as the user wrote it ("" when not about a file)
-    std::string key;                      // dotted path, "species.0.radius" ("" when not about a key)
-    std::string message;                  // complete, starting with the key where there is one
-    std::optional<SourcePosition> where;  // unknown for keys set with --set or missing keys
+    std::string file;                    // as the user wrote it ("" when not about a file)
+    std::string key;                     // dotted path, "species.0.radius" ("" when not about a key)
+    std::string message;                 // complete, starting with the key where there is one
+    std::optional<SourcePosition> where; // unknown for keys set with --set or missing keys
 
     std::string text() const {
         std::string s = file;
@@ -56,7 +56,8 @@ class InputError : public std::runtime_error {
     static std::string join(const std::vector<InputIssue>& issues) {
         std::string s;
         for (const InputIssue& i : issues) {
-            if (!s.empty()) s += '\n';
+            if (!s.empty())
+                s += '\n';
             s += i.text();
         }
         return s.empty() ? "invalid input" : s;

@@ -30,9 +30,17 @@ inline constexpr std::array<ColumnSpec, 5> tangential_columns{{
     {"breaks", "-", "number of asperities broken during the contact (physics.md §7)"},
 }};
 
+// Appended when contact.cache = true: the cached tables' value at the same point, so the table error
+// (the difference to the direct value) is in the file.
+inline constexpr ColumnSpec normal_table_column{
+    "eps_N_table", "-", "eps_N from the cached table (only with contact.cache = true): minus eps_N, the table's error"};
+inline constexpr ColumnSpec tangential_table_column{
+    "eps_T_table", "-", "eps_T from the cached table (only with contact.cache = true): minus eps_T, the table's error"};
+
 template <std::size_t N> std::vector<std::string> column_names(const std::array<ColumnSpec, N>& cols) {
     std::vector<std::string> names;
-    for (const ColumnSpec& c : cols) names.emplace_back(c.name);
+    for (const ColumnSpec& c : cols)
+        names.emplace_back(c.name);
     return names;
 }
 

@@ -30,6 +30,11 @@ struct AdaptiveStats {
     double max_leaf_error = 0; // largest check-point error among interpolating leaves
 };
 
+// A cell of the flat index over a table: the deepest node at depth <= flat_bits that covers it,
+// and 2^depth of that node (to turn root-cell coordinates into the node's local ones).
+struct FlatEntry { std::int32_t node; double scale; };
+inline constexpr int flat_bits = 4;
+
 // f evaluated on a batch of points (xs[i], ys[i]) -> out[i]; ys is empty for 1-D tables.
 using BatchFunction = std::function<void(std::span<const double> xs, std::span<const double> ys, std::span<double> out)>;
 
@@ -41,9 +46,11 @@ public:
     double operator()(double x) const {
         const double f = (x - x_lo_) * inv_root_;
         if (!(f >= 0.0) || f >= n_root_) return std::numeric_limits<double>::quiet_NaN();
-        const int ib = static_cast<int>(f);
-        double t = f - ib;
-        std::int32_t k = ib;
+        // The flat index jumps straight to the node at depth <= flat_bits covering x.
+        const FlatEntry e = flat_[static_cast<std::size_t>(f * flat_scale_)];
+        double t = f * e.scale;
+        t -= static_cast<double>(static_cast<std::int64_t>(t));
+        std::int32_t k = e.node;
         while (nodes_[k].child >= 0) {
             t *= 2;
             const int c = t >= 1.0;
@@ -67,6 +74,9 @@ private:
     int n_root_ = 0;
     std::vector<Node> nodes_; // the first n_root_ are the root cells; children come in pairs
     AdaptiveStats stats_;
+    std::vector<FlatEntry> flat_; // n_root_ 2^flat_bits cells: node reached and 2^depth
+    double flat_scale_ = 1;
+    void build_flat_index();
 };
 
 class AdaptiveTable2D {
@@ -77,9 +87,13 @@ public:
     double operator()(double x, double y) const {
         const double fx = (x - x_lo_) * inv_x_, fy = (y - y_lo_) * inv_y_;
         if (!(fx >= 0.0) || fx >= nx_ || !(fy >= 0.0) || fy > ny_) return std::numeric_limits<double>::quiet_NaN();
-        const int ix = static_cast<int>(fx), iy = std::min(static_cast<int>(fy), ny_ - 1);
-        double tx = fx - ix, ty = fy - iy;
-        std::int32_t k = iy * nx_ + ix;
+        const auto ix = static_cast<std::size_t>(fx * flat_scale_);
+        const auto iy = std::min(static_cast<std::size_t>(fy * flat_scale_), flat_ny_ - 1);
+        const FlatEntry e = flat_[iy * flat_nx_ + ix];
+        double tx = fx * e.scale, ty = std::min(fy * e.scale, ny_ * e.scale - 0x1p-40);
+        tx -= static_cast<double>(static_cast<std::int64_t>(tx));
+        ty -= static_cast<double>(static_cast<std::int64_t>(ty));
+        std::int32_t k = e.node;
         while (nodes_[k].child >= 0) {
             tx *= 2;
             ty *= 2;
@@ -103,6 +117,10 @@ private:
     int nx_ = 0, ny_ = 0;
     std::vector<Node> nodes_; // nx_*ny_ root cells (row-major in y), children in blocks of 4
     AdaptiveStats stats_;
+    std::vector<FlatEntry> flat_; // (nx_ 2^flat_bits) x (ny_ 2^flat_bits) cells
+    std::size_t flat_nx_ = 0, flat_ny_ = 0;
+    double flat_scale_ = 1;
+    void build_flat_index();
 };
 
 } // namespace roughgas

@@ -1,0 +1,224 @@
+#pragma once
+// Particle stores for the collision step. The hot loop picks two random grains per candidate pair,
+// so a store is laid out for one random access per grain (issue 5 item 2; style.md §2.11):
+//
+//   RoughAoS     64 bytes per grain, {v, omega} in one aligned cache line   (rough policies: default)
+//   SmoothAoS    32 bytes per grain, {v, pad}: two grains per cache line, never straddling; omega in a
+//                separate cold array that the collision step never touches (smooth policies: default)
+//   RoughSoA     v and omega in two arrays: two cache lines per grain        (measured, not used)
+//   RoughPacked  48 bytes per grain, {v, omega} unpadded: half the grains straddle two lines (measured)
+//   SmoothPacked 24 bytes per grain (measured)
+//
+// Measured in tests/bench/dsmc_bench.cpp (BM_Layout_*), N = 1e6, one core, rough constant: see the
+// table in the report of issue 3 / the README; the defaults above are the winners.
+//
+// Storage comes from HugePageBuffer: 2 MiB-aligned and madvise(MADV_HUGEPAGE) on Linux, so a
+// random grain access costs no page walk (with 4 KiB pages, 64 MB of grains span 16384 pages,
+// eight times what the second-level TLB holds).
+//
+// Particles of species s occupy the index range [offset_s, offset_s + count_s) (dsmc/species.hpp):
+// no species field is stored. A work unit of a later spatial or random partition is a set of such
+// ranges after a permutation of the store (swap_grains).
+#include "roughgas/core/vec.hpp"
+
+#include <cstddef>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+#include <string_view>
+#include <utility>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+namespace roughgas {
+
+// A fixed-size buffer of trivially copyable T, value-initialised, on (transparent) huge pages.
+template <class T>
+class HugePageBuffer {
+public:
+    HugePageBuffer() = default;
+    explicit HugePageBuffer(std::size_t n) : size_(n) {
+        if (n == 0) return;
+        constexpr std::size_t huge = std::size_t{2} << 20;
+        const std::size_t bytes = (n * sizeof(T) + huge - 1) / huge * huge;
+        void* p = std::aligned_alloc(huge, bytes);
+        if (!p) throw std::bad_alloc();
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+        madvise(p, bytes, MADV_HUGEPAGE); // a hint: without it the store still works, on 4 KiB pages
+#endif
+        std::memset(p, 0, bytes);
+        data_ = static_cast<T*>(p);
+    }
+    HugePageBuffer(const HugePageBuffer& o) : HugePageBuffer(o.size_) {
+        if (size_) std::memcpy(data_, o.data_, size_ * sizeof(T));
+    }
+    HugePageBuffer(HugePageBuffer&& o) noexcept : data_(std::exchange(o.data_, nullptr)), size_(std::exchange(o.size_, 0)) {}
+    HugePageBuffer& operator=(HugePageBuffer o) noexcept {
+        std::swap(data_, o.data_);
+        std::swap(size_, o.size_);
+        return *this;
+    }
+    ~HugePageBuffer() { std::free(data_); }
+
+    T* data() { return data_; }
+    const T* data() const { return data_; }
+    std::size_t size() const { return size_; }
+    T& operator[](std::size_t i) { return data_[i]; }
+    const T& operator[](std::size_t i) const { return data_[i]; }
+
+private:
+    T* data_ = nullptr;
+    std::size_t size_ = 0;
+};
+
+// A read prefetch: most candidates are rejected and never written (a write prefetch, which requests
+// ownership of the line, measured 1.3-1.7x slower at N = 1e6).
+inline void prefetch_line(const void* p) { __builtin_prefetch(p, 0, 3); }
+
+// ---- rough stores: v and omega are hot ----
+
+struct alignas(64) RoughGrain {
+    Vec3 v;
+    Vec3 w; // omega
+};
+static_assert(sizeof(RoughGrain) == 64);
+
+class RoughAoS {
+public:
+    static constexpr std::string_view name = "RoughAoS";
+    static constexpr bool rotation_hot = true;
+    static constexpr std::size_t bytes_per_particle = sizeof(RoughGrain);
+    explicit RoughAoS(std::size_t n = 0) : g_(n) {}
+    std::size_t size() const { return g_.size(); }
+    Vec3& v(std::size_t i) { return g_[i].v; }
+    Vec3& w(std::size_t i) { return g_[i].w; }
+    const Vec3& v(std::size_t i) const { return g_[i].v; }
+    const Vec3& w(std::size_t i) const { return g_[i].w; }
+    void prefetch(std::size_t i) const { prefetch_line(&g_[i]); }
+    void swap_grains(std::size_t i, std::size_t j) { std::swap(g_[i], g_[j]); }
+    Vec3Column velocities() const { return column_of(g_.data(), offsetof(RoughGrain, v)); }
+    Vec3Column angular_velocities() const { return column_of(g_.data(), offsetof(RoughGrain, w)); }
+
+private:
+    HugePageBuffer<RoughGrain> g_;
+};
+
+struct PackedGrain {
+    Vec3 v;
+    Vec3 w;
+};
+static_assert(sizeof(PackedGrain) == 48);
+
+class RoughPacked {
+public:
+    static constexpr std::string_view name = "RoughPacked";
+    static constexpr bool rotation_hot = true;
+    static constexpr std::size_t bytes_per_particle = sizeof(PackedGrain);
+    explicit RoughPacked(std::size_t n = 0) : g_(n) {}
+    std::size_t size() const { return g_.size(); }
+    Vec3& v(std::size_t i) { return g_[i].v; }
+    Vec3& w(std::size_t i) { return g_[i].w; }
+    const Vec3& v(std::size_t i) const { return g_[i].v; }
+    const Vec3& w(std::size_t i) const { return g_[i].w; }
+    void prefetch(std::size_t i) const {
+        const char* p = reinterpret_cast<const char*>(&g_[i]);
+        prefetch_line(p);
+        prefetch_line(p + sizeof(PackedGrain) - 1);
+    }
+    void swap_grains(std::size_t i, std::size_t j) { std::swap(g_[i], g_[j]); }
+    Vec3Column velocities() const { return column_of(g_.data(), offsetof(PackedGrain, v)); }
+    Vec3Column angular_velocities() const { return column_of(g_.data(), offsetof(PackedGrain, w)); }
+
+private:
+    HugePageBuffer<PackedGrain> g_;
+};
+
+class RoughSoA {
+public:
+    static constexpr std::string_view name = "RoughSoA";
+    static constexpr bool rotation_hot = true;
+    static constexpr std::size_t bytes_per_particle = 2 * sizeof(Vec3);
+    explicit RoughSoA(std::size_t n = 0) : v_(n), w_(n) {}
+    std::size_t size() const { return v_.size(); }
+    Vec3& v(std::size_t i) { return v_[i]; }
+    Vec3& w(std::size_t i) { return w_[i]; }
+    const Vec3& v(std::size_t i) const { return v_[i]; }
+    const Vec3& w(std::size_t i) const { return w_[i]; }
+    void prefetch(std::size_t i) const {
+        prefetch_line(&v_[i]);
+        prefetch_line(reinterpret_cast<const char*>(&v_[i]) + sizeof(Vec3) - 1);
+        prefetch_line(&w_[i]);
+        prefetch_line(reinterpret_cast<const char*>(&w_[i]) + sizeof(Vec3) - 1);
+    }
+    void swap_grains(std::size_t i, std::size_t j) {
+        std::swap(v_[i], v_[j]);
+        std::swap(w_[i], w_[j]);
+    }
+    Vec3Column velocities() const { return column_of(v_.data(), 0); }
+    Vec3Column angular_velocities() const { return column_of(w_.data(), 0); }
+
+private:
+    HugePageBuffer<Vec3> v_, w_;
+};
+
+// ---- smooth stores: only v is hot; omega is kept (the moments report T_rot) but never touched ----
+
+struct alignas(32) SmoothGrain {
+    Vec3 v;
+};
+static_assert(sizeof(SmoothGrain) == 32);
+
+class SmoothAoS {
+public:
+    static constexpr std::string_view name = "SmoothAoS";
+    static constexpr bool rotation_hot = false;
+    static constexpr std::size_t bytes_per_particle = sizeof(SmoothGrain) + sizeof(Vec3);
+    explicit SmoothAoS(std::size_t n = 0) : g_(n), w_(n) {}
+    std::size_t size() const { return g_.size(); }
+    Vec3& v(std::size_t i) { return g_[i].v; }
+    const Vec3& v(std::size_t i) const { return g_[i].v; }
+    // Cold: initialisation and observers only.
+    Vec3& w(std::size_t i) { return w_[i]; }
+    const Vec3& w(std::size_t i) const { return w_[i]; }
+    void prefetch(std::size_t i) const { prefetch_line(&g_[i]); }
+    void swap_grains(std::size_t i, std::size_t j) {
+        std::swap(g_[i], g_[j]);
+        std::swap(w_[i], w_[j]);
+    }
+    Vec3Column velocities() const { return column_of(g_.data(), offsetof(SmoothGrain, v)); }
+    Vec3Column angular_velocities() const { return column_of(w_.data(), 0); }
+
+private:
+    HugePageBuffer<SmoothGrain> g_;
+    HugePageBuffer<Vec3> w_;
+};
+
+class SmoothPacked {
+public:
+    static constexpr std::string_view name = "SmoothPacked";
+    static constexpr bool rotation_hot = false;
+    static constexpr std::size_t bytes_per_particle = 2 * sizeof(Vec3);
+    explicit SmoothPacked(std::size_t n = 0) : v_(n), w_(n) {}
+    std::size_t size() const { return v_.size(); }
+    Vec3& v(std::size_t i) { return v_[i]; }
+    const Vec3& v(std::size_t i) const { return v_[i]; }
+    Vec3& w(std::size_t i) { return w_[i]; }
+    const Vec3& w(std::size_t i) const { return w_[i]; }
+    void prefetch(std::size_t i) const {
+        prefetch_line(&v_[i]);
+        prefetch_line(reinterpret_cast<const char*>(&v_[i]) + sizeof(Vec3) - 1);
+    }
+    void swap_grains(std::size_t i, std::size_t j) {
+        std::swap(v_[i], v_[j]);
+        std::swap(w_[i], w_[j]);
+    }
+    Vec3Column velocities() const { return column_of(v_.data(), 0); }
+    Vec3Column angular_velocities() const { return column_of(w_.data(), 0); }
+
+private:
+    HugePageBuffer<Vec3> v_, w_;
+};
+
+} // namespace roughgas

@@ -1,0 +1,56 @@
+#pragma once
+// One DSMC run of the homogeneous gas (issue 3): the columns it reports and the run itself.
+#include "roughgas/dsmc/output_columns.hpp"
+#include "roughgas/dsmc/run_spec.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace roughgas {
+
+class RestitutionTables; // dsmc/tables.hpp
+
+// Progress of a run: collisions per particle done so far, the end, and collisions done.
+using ProgressSink = std::function<void(double done, double end, double collisions)>;
+
+// Columns of moments.csv for this spec, in the order of interface.md: t, coll_per_particle, T_tr,
+// T_rot, theta, a20, a02, a11, A_cw, coll_rate, E_diss_rate, then per species X.NAME and ratios
+// (mixtures). Replica errors (X_err) and theory columns are added by the writer, not here.
+// Definitions (dsmc/run.cpp has the details): coll_per_particle = 2 x collisions / N; coll_rate =
+// collisions per particle per unit time (2 x collisions / N / time) over the interval since the
+// previous row; E_diss_rate = energy dissipated per unit volume and time over that interval; both
+// are NaN in the row at t = 0. Mixtures: T_tr, T_rot, theta, a20, a02, a11, A_cw, coll_rate per species
+// (coll_rate.NAME: collisions of a NAME grain per NAME grain and unit time), then T_tr.A/T_tr.B and
+// T_rot.A/T_rot.B for every species pair A before B. Runs with a brilliantov pair end with
+// beta_clamped: collisions so far whose model beta left [-1, 1] (restitution_policy.hpp, clamp_beta).
+std::vector<Column> dsmc_columns(const RunSpec& spec);
+
+// Runs replica `replica` (0-based; its RNG streams derive from spec.seed and the replica index),
+// calling `sink` once per spec.output_times entry (and once at t = 0 first). Deterministic for a
+// given (spec, replica) whatever spec.threads is.
+// Builds (or loads from spec.cache_file) the restitution tables first: defined in roughgas_io
+// (src/io/run_tables.cpp), since it reads the cache file. To run several replicas, build the tables
+// once with build_run_tables (io/run_tables.hpp) and call the overload below.
+void run_replica(const RunSpec& spec, int replica, const RowSink& sink, const ProgressSink& progress = {});
+
+// What one replica did, for the caller to report (the solver never prints).
+struct ReplicaSummary {
+    std::string kernel;             // the specialised collision loop that ran, e.g. "RoughAoS, constant, one species"
+    std::size_t bytes_per_particle = 0;
+    std::int64_t collisions = 0;
+    std::int64_t candidates = 0;    // candidate pairs drawn (collisions/candidates: the majorant's acceptance)
+    std::int64_t steps = 0;
+    std::int64_t bound_raises = 0;  // collisions that raised the majorant within a step
+    std::int64_t beta_clamped = 0;  // collisions whose model beta was clamped to [-1, 1]
+    double max_mean_drift = 0;      // largest residual centre-of-mass speed over the rms speed (round-off)
+    double seconds = 0;             // wall time of the collision loop and the moments
+};
+
+// The same with tables built by the caller (RestitutionTables::build, or build_run_tables for the
+// cache file): in the physics library. `summary` (optional) receives what the run did.
+void run_replica(const RunSpec& spec, const RestitutionTables& tables, int replica, const RowSink& sink,
+                 const ProgressSink& progress = {}, ReplicaSummary* summary = nullptr);
+
+} // namespace roughgas

@@ -1,0 +1,57 @@
+#pragma once
+// What one DSMC run needs, as plain values (built from the case file by io/run_spec_from_case.hpp).
+// The physics never sees the parser (style.md §2.4).
+#include "roughgas/contact/contact_pair.hpp"
+#include "roughgas/contact/tolerance.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace roughgas {
+
+struct SpeciesSpec {
+    std::string name = "grain";
+    double mass = 1, radius = 0.5, inertia = 0.4; // q = J/(m R^2)
+    double fraction = 1;
+    double temperature = 1, rotational_temperature = 1; // initial T_tr, T_rot (k_B = 1)
+};
+
+// Restitution models of one species pair (interface.md [collision] model = ...).
+struct ConstantRestitution { double alpha = 1, beta = -1; };
+struct CoulombRestitution { double alpha = 1, beta0 = 1, mu = 0; };         // Walton's model
+struct ViscoelasticRestitution { ContactPair pair; double beta = -1; bool direct = false; };
+struct BrilliantovRestitution { ContactPair pair; bool direct = false; };
+using PairRestitution = std::variant<ConstantRestitution, CoulombRestitution, ViscoelasticRestitution,
+                                     BrilliantovRestitution>;
+
+struct RunSpec {
+    std::vector<SpeciesSpec> species;
+    // Model of species pair (a, b), a <= b, at index pair_index(a, b, species.size()).
+    std::vector<PairRestitution> pairs;
+    std::int64_t particles = 1000;
+    double density = 1;                 // number density n
+    std::uint64_t seed = 1;
+    int replicas = 1;
+    double end = 10;                    // collisions per particle
+    std::vector<double> output_times;   // collisions per particle, increasing, the last one == end
+    int threads = 1;
+    // DSMC step length in mean free times. A step only refreshes the collision majorant (and the
+    // frame); the collision statistics do not depend on it (dsmc/engine.hpp).
+    double step = 1.0;
+    // Contact tables (viscoelastic, brilliantov): integration tolerance, cache file ("" = none),
+    // and the range of g_N the tangential tables cover (outside: direct integration).
+    Tolerance contact_tolerance{};
+    std::filesystem::path cache_file;
+    bool use_cache = true;
+    double table_g_min = 1e-6, table_g_max = 1e2;
+};
+
+constexpr std::size_t pair_index(std::size_t a, std::size_t b, std::size_t n_species) {
+    if (a > b) { const std::size_t t = a; a = b; b = t; }
+    return a * n_species - a * (a + 1) / 2 + b; // upper triangle, row-major
+}
+
+} // namespace roughgas

@@ -1,0 +1,22 @@
+#pragma once
+// The validated case (io/case_config.hpp) as what the DSMC needs (dsmc/run_spec.hpp).
+#include "roughgas/dsmc/run_spec.hpp"
+#include "roughgas/io/case_config.hpp"
+
+#include <vector>
+
+namespace roughgas {
+
+// Output times in collisions per particle, increasing, the last one == end:
+//   linear: every, 2 every, ... below end, then end;
+//   log:    every x 10^(k/10), k = 0, 1, ... below end, then end (ten per decade).
+// every > 0 and end > 0 (validated by the case file reader); an output closer than 1e-9 relative
+// to end merges with end.
+std::vector<double> output_times(double every, double end, OutputSpacing spacing);
+
+// Species, the model of every species pair (its [[pair]] table, else [collision]), particles,
+// density, seed, replicas, end and output times, and the contact settings. run.kind = "shear"
+// is not a homogeneous cooling run: std::invalid_argument.
+RunSpec run_spec_from_case(const CaseConfig& cfg);
+
+} // namespace roughgas

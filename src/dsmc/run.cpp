@@ -1,0 +1,243 @@
+// One replica of a homogeneous cooling run: the kernel is chosen once (std::visit over the pairs'
+// restitution models, style.md §2.3) and the loop below only pauses it at the output times.
+#include "roughgas/dsmc/run.hpp"
+
+#include "roughgas/dsmc/engine.hpp"
+#include "roughgas/dsmc/init.hpp"
+#include "roughgas/dsmc/particles.hpp"
+#include "roughgas/dsmc/tables.hpp"
+#include "roughgas/observables/moments.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+namespace roughgas {
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+bool has_brilliantov(const RunSpec& spec) {
+    return std::any_of(spec.pairs.begin(), spec.pairs.end(),
+                       [](const PairRestitution& p) { return std::holds_alternative<BrilliantovRestitution>(p); });
+}
+
+const char* const group_quantities[] = {"T_tr", "T_rot", "theta", "a20", "a02", "a11", "A_cw", "coll_rate"};
+const char* const group_units[] = {"energy", "energy", "-", "-", "-", "-", "-", "1/time"};
+
+void require(bool ok, const std::string& what) {
+    if (!ok) throw std::invalid_argument("run_replica: " + what);
+}
+
+void validate(const RunSpec& spec) {
+    const std::size_t S = spec.species.size();
+    require(S > 0, "no species");
+    for (const SpeciesSpec& s : spec.species) {
+        require(s.mass > 0 && s.radius > 0 && s.inertia > 0, "species " + s.name + ": mass, radius and inertia must be > 0");
+        require(s.temperature >= 0 && s.rotational_temperature >= 0, "species " + s.name + ": negative temperature");
+    }
+    require(spec.pairs.size() == S * (S + 1) / 2, "one restitution model per species pair needed");
+    require(spec.particles >= 2, "at least two particles needed");
+    require(spec.density > 0, "density must be > 0");
+    require(spec.step > 0, "step must be > 0");
+    double prev = 0;
+    for (double t : spec.output_times) {
+        require(std::isfinite(t) && t > prev, "output times must be positive and increasing");
+        prev = t;
+    }
+    require(!spec.output_times.empty() || (std::isfinite(spec.end) && spec.end > 0), "end must be > 0");
+}
+
+// Sums over the collisions since the last output row.
+struct Tally {
+    double dE = 0;                      // energy change of the gas (<= 0)
+    std::vector<std::int64_t> per_type; // collisions per pair type
+    std::int64_t clamped = 0;           // all collisions so far with beta clamped
+    void operator()(const CollisionRecord& r, std::size_t k) {
+        dE += r.dE_tr + r.dE_rot;
+        ++per_type[k];
+        clamped += r.beta_clamped;
+    }
+};
+
+template <class Policy, bool Mixture>
+void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies, int replica,
+           const RowSink& sink, const ProgressSink& progress, ReplicaSummary* summary) {
+    using Store = std::conditional_t<Policy::needs_rotation, RoughAoS, SmoothAoS>;
+    const auto wall0 = std::chrono::steady_clock::now();
+    const std::size_t N = static_cast<std::size_t>(spec.particles);
+    const auto rep = static_cast<std::uint64_t>(replica);
+    Store store(N);
+    init_maxwellian(store, blocks, spec.seed, rep);
+    Engine<Store, Policy, Mixture> engine(blocks, std::move(policies), std::move(store),
+                                         EngineOptions{spec.density, spec.step, spec.seed, rep});
+
+    const std::size_t S = blocks.size();
+    std::vector<SpeciesSlice> slices(S);
+    for (std::size_t s = 0; s < S; ++s)
+        slices[s] = {blocks[s].offset, blocks[s].count, blocks[s].grain.mass, blocks[s].moment_of_inertia()};
+    const auto& types = engine.pair_types();
+    const bool clamp_column = has_brilliantov(spec);
+    const std::size_t columns = dsmc_columns(spec).size();
+
+    Tally tally;
+    tally.per_type.assign(types.size(), 0);
+    double t_prev = 0;
+    std::int64_t c_prev = 0;
+    std::vector<double> row;
+    row.reserve(columns);
+
+    const auto emit = [&] {
+        const Moments m = compute_moments(engine.store().velocities(), engine.store().angular_velocities(), slices);
+        const double t = engine.time();
+        const std::int64_t c = engine.collisions();
+        const double dt = t - t_prev;
+        const bool first = c == 0 && t == 0;
+        const double inv_dt = !first && dt > 0 ? 1.0 / dt : nan;
+        row.clear();
+        row.push_back(t);
+        row.push_back(2.0 * static_cast<double>(c) / static_cast<double>(N));
+        const auto group = [&](const GroupMoments& g) {
+            for (double x : {g.T_tr, g.T_rot, g.theta, g.a20, g.a02, g.a11, g.A_cw}) row.push_back(x);
+        };
+        group(m.all);
+        row.push_back(2.0 * static_cast<double>(c - c_prev) / static_cast<double>(N) * inv_dt);
+        row.push_back(-tally.dE / engine.volume() * inv_dt);
+        if (S > 1) {
+            std::vector<double> per_species(S, 0.0);
+            for (std::size_t k = 0; k < types.size(); ++k) {
+                per_species[types[k].a] += static_cast<double>(tally.per_type[k]);
+                per_species[types[k].b] += static_cast<double>(tally.per_type[k]);
+            }
+            for (std::size_t s = 0; s < S; ++s) {
+                group(m.species[s]);
+                row.push_back(per_species[s] / static_cast<double>(blocks[s].count) * inv_dt);
+            }
+            for (std::size_t a = 0; a < S; ++a) {
+                for (std::size_t b = a + 1; b < S; ++b) {
+                    row.push_back(m.species[a].T_tr / m.species[b].T_tr);
+                    row.push_back(m.species[a].T_rot / m.species[b].T_rot);
+                }
+            }
+        }
+        if (clamp_column) row.push_back(static_cast<double>(tally.clamped));
+        if (row.size() != columns) throw std::logic_error("run_replica: row and columns differ");
+        sink(row);
+        t_prev = t;
+        c_prev = c;
+        tally.dE = 0;
+        std::fill(tally.per_type.begin(), tally.per_type.end(), 0);
+    };
+
+    emit();
+    std::vector<double> outputs = spec.output_times;
+    if (outputs.empty()) outputs.push_back(spec.end);
+    const double end = outputs.back();
+    const std::int64_t chunk = std::max<std::int64_t>(std::int64_t{1} << 16, spec.particles / 2);
+    for (double out : outputs) {
+        const auto target = static_cast<std::int64_t>(std::llround(out * static_cast<double>(N) / 2.0));
+        while (engine.collisions() < target) {
+            const std::int64_t next = std::min(target, engine.collisions() + chunk);
+            if (engine.run(next, std::numeric_limits<double>::infinity(), tally) == StopReason::stalled) {
+                throw std::runtime_error("run_replica: no collision can happen: every grain is at rest in the "
+                                         "centre-of-mass frame (translational temperature 0)");
+            }
+            if (progress) {
+                const auto c = static_cast<double>(engine.collisions());
+                progress(2.0 * c / static_cast<double>(N), end, c);
+            }
+        }
+        emit();
+    }
+
+    if (summary) {
+        const EngineCounters& k = engine.counters();
+        summary->kernel = std::string(Store::name) + ", " + std::string(Policy::name) + ", " +
+                          (Mixture ? std::to_string(S) + " species" : "one species");
+        summary->bytes_per_particle = Store::bytes_per_particle;
+        summary->collisions = k.collisions;
+        summary->candidates = k.candidates;
+        summary->steps = k.steps;
+        summary->bound_raises = k.bound_raises;
+        summary->beta_clamped = tally.clamped;
+        summary->max_mean_drift = k.max_mean_drift;
+        summary->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    }
+}
+
+} // namespace
+
+std::vector<Column> dsmc_columns(const RunSpec& spec) {
+    std::vector<Column> c = {{"t", "time"},       {"coll_per_particle", "-"}, {"T_tr", "energy"},
+                             {"T_rot", "energy"}, {"theta", "-"},             {"a20", "-"},
+                             {"a02", "-"},        {"a11", "-"},               {"A_cw", "-"},
+                             {"coll_rate", "1/time"}, {"E_diss_rate", "energy/(volume*time)"}};
+    const std::size_t S = spec.species.size();
+    if (S > 1) {
+        for (const SpeciesSpec& s : spec.species)
+            for (std::size_t q = 0; q < std::size(group_quantities); ++q)
+                c.push_back({std::string(group_quantities[q]) + "." + s.name, group_units[q]});
+        for (std::size_t a = 0; a < S; ++a) {
+            for (std::size_t b = a + 1; b < S; ++b) {
+                const std::string& A = spec.species[a].name;
+                const std::string& B = spec.species[b].name;
+                c.push_back({"T_tr." + A + "/T_tr." + B, "-"});
+                c.push_back({"T_rot." + A + "/T_rot." + B, "-"});
+            }
+        }
+    }
+    if (has_brilliantov(spec)) c.push_back({"beta_clamped", "-"});
+    return c;
+}
+
+void run_replica(const RunSpec& spec, const RestitutionTables& tables, int replica, const RowSink& sink,
+                 const ProgressSink& progress, ReplicaSummary* summary) {
+    validate(spec);
+    require(replica >= 0, "negative replica index");
+    const std::vector<SpeciesBlock> blocks = make_species_blocks(spec.species, spec.particles);
+    const std::vector<PairType> types = make_pair_types(blocks);
+    std::vector<AnyPolicy> policies;
+    for (std::size_t k = 0; k < types.size(); ++k) policies.push_back(make_policy(spec, tables, k, types[k]));
+    // In a mixture with a rough pair, smooth pairs take their rough form (beta = -1), so that e.g.
+    // constant smooth and constant rough pairs share one policy type and need no per-collision variant.
+    if (std::any_of(policies.begin(), policies.end(), [](const AnyPolicy& p) { return needs_rotation(p); }))
+        for (AnyPolicy& p : policies) p = as_rough(p);
+
+    if (blocks.size() == 1) { // one species, one model: a fully specialised loop
+        std::visit(
+            [&](const auto& p) {
+                using P = std::decay_t<decltype(p)>;
+                drive<P, false>(spec, blocks, {p}, replica, sink, progress, summary);
+            },
+            policies[0]);
+        return;
+    }
+    const bool same_type = std::all_of(policies.begin(), policies.end(),
+                                       [&](const AnyPolicy& p) { return p.index() == policies[0].index(); });
+    if (same_type) { // one policy type, per-pair values: no variant in the loop
+        std::visit(
+            [&](const auto& p0) {
+                using P = std::decay_t<decltype(p0)>;
+                std::vector<P> v;
+                for (const AnyPolicy& p : policies) v.push_back(std::get<P>(p));
+                drive<P, true>(spec, blocks, std::move(v), replica, sink, progress, summary);
+            },
+            policies[0]);
+        return;
+    }
+    if (std::none_of(policies.begin(), policies.end(), [](const AnyPolicy& p) { return needs_rotation(p); })) {
+        std::vector<AnySmoothPolicy> v;
+        for (const AnyPolicy& p : policies) v.push_back(to_any_smooth(p));
+        drive<AnySmoothPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary);
+        return;
+    }
+    std::vector<AnyRoughPolicy> v;
+    for (const AnyPolicy& p : policies) v.push_back(to_any_rough(p));
+    drive<AnyRoughPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary);
+}
+
+} // namespace roughgas

@@ -1,0 +1,74 @@
+#include "roughgas/io/run_spec_from_case.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace roughgas {
+
+std::vector<double> output_times(double every, double end, OutputSpacing spacing) {
+    if (!(every > 0) || !(end > 0) || !std::isfinite(every) || !std::isfinite(end))
+        throw std::invalid_argument("output_times: every and end must be positive and finite");
+    std::vector<double> t;
+    const double merge = end * (1.0 - 1e-9);
+    for (long k = 0;; ++k) {
+        const double x = spacing == OutputSpacing::linear ? static_cast<double>(k + 1) * every
+                                                          : every * std::pow(10.0, static_cast<double>(k) / 10.0);
+        if (!(x < merge)) break;
+        t.push_back(x);
+    }
+    t.push_back(end);
+    return t;
+}
+
+RunSpec run_spec_from_case(const CaseConfig& cfg) {
+    if (cfg.run.kind != RunKind::cooling)
+        throw std::invalid_argument("run.kind = \"" + std::string(name(cfg.run.kind)) +
+                                    "\": only homogeneous cooling runs are implemented");
+    RunSpec spec;
+    for (const SpeciesConfig& s : cfg.species) {
+        SpeciesSpec sp;
+        sp.name = s.name;
+        sp.mass = s.mass;
+        sp.radius = s.radius;
+        sp.inertia = s.inertia;
+        sp.fraction = s.fraction;
+        sp.temperature = s.temperature;
+        sp.rotational_temperature = s.rotational_temperature;
+        spec.species.push_back(sp);
+    }
+    const std::size_t n = cfg.species.size();
+    spec.pairs.resize(n * (n + 1) / 2);
+    for (std::size_t a = 0; a < n; ++a) {
+        for (std::size_t b = a; b < n; ++b) {
+            const CollisionConfig& c = collision_for(cfg, a, b);
+            PairRestitution& r = spec.pairs[pair_index(a, b, n)];
+            switch (c.model) {
+            case CollisionModel::constant:
+                r = ConstantRestitution{c.alpha.value(), c.beta.value_or(-1.0)};
+                break;
+            case CollisionModel::coulomb:
+                r = CoulombRestitution{c.alpha.value(), c.beta0.value(), c.friction.value()};
+                break;
+            case CollisionModel::viscoelastic:
+                r = ViscoelasticRestitution{contact_pair(cfg, a, b), c.beta.value_or(-1.0), c.direct};
+                break;
+            case CollisionModel::brilliantov:
+                r = BrilliantovRestitution{contact_pair(cfg, a, b), c.direct};
+                break;
+            }
+        }
+    }
+    spec.particles = cfg.run.particles;
+    spec.density = cfg.run.density;
+    spec.seed = cfg.run.seed;
+    spec.replicas = static_cast<int>(cfg.run.replicas);
+    spec.end = cfg.run.end;
+    spec.output_times = output_times(cfg.run.output_every, cfg.run.end, cfg.run.output_spacing);
+    spec.contact_tolerance = cfg.contact.tolerance;
+    spec.cache_file = cfg.contact.cache_file;
+    spec.use_cache = cfg.contact.cache;
+    return spec;
+}
+
+} // namespace roughgas

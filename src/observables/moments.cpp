@@ -1,0 +1,121 @@
+#include "roughgas/observables/moments.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace roughgas {
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+struct Sums { // over reduced vectors
+    double c2 = 0, w2 = 0, c4 = 0, w4 = 0, c2w2 = 0, cw2 = 0;
+};
+
+void finish(GroupMoments& g, const Sums& s, double n, bool has_rotation) {
+    if (!(n > 0)) {
+        g.T_tr = g.T_rot = g.theta = g.a20 = g.a02 = g.a11 = g.A_cw = nan;
+        return;
+    }
+    g.a20 = (4.0 / 15.0) * s.c4 / n - 1.0;
+    if (has_rotation) {
+        g.a02 = (4.0 / 15.0) * s.w4 / n - 1.0;
+        g.a11 = (4.0 / 9.0) * s.c2w2 / n - 1.0;
+        g.A_cw = (s.cw2 / n) / ((s.c2 / n) * (s.w2 / n)) - 1.0 / 3.0;
+    } else {
+        g.a02 = g.a11 = g.A_cw = nan;
+    }
+}
+
+void add(Sums& s, const Vec3& c, const Vec3& w) {
+    const double c2 = norm2(c), w2 = norm2(w), cw = dot(c, w);
+    s.c2 += c2;
+    s.w2 += w2;
+    s.c4 += c2 * c2;
+    s.w4 += w2 * w2;
+    s.c2w2 += c2 * w2;
+    s.cw2 += cw * cw;
+}
+
+} // namespace
+
+Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesSlice> species) {
+    Moments m;
+    m.species.resize(species.size());
+
+    // Pass 1: centre-of-mass velocity.
+    Vec3 p{};
+    double mass = 0;
+    std::size_t n_all = 0;
+    for (const SpeciesSlice& sp : species) {
+        Vec3 ps{};
+        for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i) ps += v[i];
+        p += sp.mass * ps;
+        mass += sp.mass * static_cast<double>(sp.count);
+        n_all += sp.count;
+    }
+    const Vec3 u = mass > 0 ? (1.0 / mass) * p : Vec3{};
+    m.mean_velocity = u;
+
+    // Pass 2: second moments -> temperatures; the raw <c^2>, <omega^2> of all particles.
+    std::vector<double> c2(species.size(), 0.0), w2(species.size(), 0.0);
+    double mc2_all = 0, Jw2_all = 0, c2_all = 0, w2_all = 0;
+    for (std::size_t s = 0; s < species.size(); ++s) {
+        const SpeciesSlice& sp = species[s];
+        for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i) {
+            c2[s] += norm2(v[i] - u);
+            w2[s] += norm2(omega[i]);
+        }
+        const double n = static_cast<double>(sp.count);
+        GroupMoments& g = m.species[s];
+        g.count = sp.count;
+        g.T_tr = sp.mass * c2[s] / (3.0 * n);
+        g.T_rot = sp.moment_of_inertia * w2[s] / (3.0 * n);
+        g.theta = g.T_rot / g.T_tr;
+        mc2_all += sp.mass * c2[s];
+        Jw2_all += sp.moment_of_inertia * w2[s];
+        c2_all += c2[s];
+        w2_all += w2[s];
+    }
+    const double N = static_cast<double>(n_all);
+    m.all.count = n_all;
+    m.all.T_tr = mc2_all / (3.0 * N);
+    m.all.T_rot = Jw2_all / (3.0 * N);
+    m.all.theta = m.all.T_rot / m.all.T_tr;
+    const bool rot_all = m.all.T_rot > 0;
+
+    // Pass 3: fourth moments on reduced vectors. Per species: c* = c sqrt(m/(2 T_tr,s)); over all,
+    // the same with the mixture's temperatures. A_cw over all uses c/sqrt(<c^2>), omega/sqrt(<omega^2>)
+    // (raw, unweighted), accumulated separately.
+    Sums all;
+    double cw2_all = 0;
+    const double sc_raw = 1.0 / std::sqrt(c2_all / N), sw_raw = w2_all > 0 ? 1.0 / std::sqrt(w2_all / N) : 0.0;
+    for (std::size_t s = 0; s < species.size(); ++s) {
+        const SpeciesSlice& sp = species[s];
+        GroupMoments& g = m.species[s];
+        const bool rot = g.T_rot > 0;
+        const double sc = std::sqrt(sp.mass / (2.0 * g.T_tr));
+        const double sw = rot ? std::sqrt(sp.moment_of_inertia / (2.0 * g.T_rot)) : 0.0;
+        const double sc_all = std::sqrt(sp.mass / (2.0 * m.all.T_tr));
+        const double sw_all = rot_all ? std::sqrt(sp.moment_of_inertia / (2.0 * m.all.T_rot)) : 0.0;
+        Sums own, mix;
+        for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i) {
+            const Vec3 c = v[i] - u;
+            const Vec3& w = omega[i];
+            add(own, sc * c, sw * w);
+            add(mix, sc_all * c, sw_all * w);
+            const double cw = dot(sc_raw * c, sw_raw * w);
+            cw2_all += cw * cw;
+        }
+        finish(g, own, static_cast<double>(sp.count), rot);
+        all.c4 += mix.c4;
+        all.w4 += mix.w4;
+        all.c2w2 += mix.c2w2;
+    }
+    all.c2 = all.w2 = N; // A_cw over all: raw vectors scaled to <c^2> = <omega^2> = 1
+    all.cw2 = cw2_all;
+    finish(m.all, all, N, rot_all);
+    return m;
+}
+
+} // namespace roughgas

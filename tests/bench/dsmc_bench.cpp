@@ -1,0 +1,124 @@
+// Collisions per second of the DSMC collision loop on one core (issue 3 "Speed", issue 5 items 1-2).
+// Run: build/tests/bench/dsmc_bench [--benchmark_filter=...] [--benchmark_repetitions=3]
+//
+// Each benchmark builds a homogeneous cooling gas (Maxwellian start, T = 1, n = 1, unit grains;
+// the ice cases in SI units with speeds ~0.1 m/s), warms it up for half a collision per particle
+// and then times chunks of 1e5 collisions. items_per_second = collisions per second. Counters:
+// acceptance = collisions/candidates of the majorant, bytes = bytes per particle of the store.
+//
+//   BM_Case<...>         the kernels run_replica selects: constant rough / smooth / elastic smooth,
+//                        coulomb, viscoelastic and brilliantov from cached tables
+//   BM_Layout<...>       the same rough and smooth constant kernels on the other particle layouts
+//   BM_Skip<...>         what each compile-time skip is worth: the rough kernel at beta = -1 (omega
+//                        loaded and updated by zero) vs the smooth kernel; the mixture kernel with one
+//                        species (species look-ups); per-collision variant dispatch (AnyRoughPolicy)
+#include "roughgas/collision/restitution_policy.hpp"
+#include "roughgas/dsmc/engine.hpp"
+#include "roughgas/dsmc/init.hpp"
+#include "roughgas/dsmc/particles.hpp"
+#include "roughgas/dsmc/tables.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace roughgas {
+namespace {
+
+constexpr std::int64_t chunk = 100000;
+
+template <class Store, class Policy, bool Mixture = false>
+void run_bench(benchmark::State& state, const SpeciesSpec& species, const Policy& policy) {
+    const auto N = static_cast<std::int64_t>(state.range(0));
+    const auto blocks = make_species_blocks({species}, N);
+    Store store(static_cast<std::size_t>(N));
+    init_maxwellian(store, blocks, 1, 0);
+    Engine<Store, Policy, Mixture> e(blocks, {policy}, std::move(store), EngineOptions{1.0 / std::pow(2 * species.radius, 3), 1.0, 1, 0});
+    e.run_collisions(N / 4); // half a collision per particle: steps, rings and pages warm
+    const std::int64_t c0 = e.collisions(), k0 = e.counters().candidates;
+    for (auto _ : state) e.run_collisions(e.collisions() + chunk);
+    state.SetItemsProcessed(e.collisions() - c0);
+    state.counters["acceptance"] =
+        static_cast<double>(e.collisions() - c0) / static_cast<double>(e.counters().candidates - k0);
+    state.counters["bytes"] = static_cast<double>(Store::bytes_per_particle);
+}
+
+SpeciesSpec unit_grain() { return SpeciesSpec{}; }
+
+// Ice (seed 000 Fig. 2c, the restitution benchmark's pair): R = 1 cm, A = 5.3e-5 s,
+// zeta_0 = 1e-3 R_eff, mu = sqrt(1e-3); T such that each velocity component has rms 0.1 m/s.
+ContactPair ice_pair() {
+    const double R = 0.01, m = 4.0 / 3.0 * std::numbers::pi * R * R * R * 1000.0;
+    const Material mat{1e10, 0.3, 5.3e-5, std::sqrt(1e-3), 1e-3 * R / 2};
+    return make_contact_pair(mat, {}, m, R, 0.4, m, R, 0.4);
+}
+SpeciesSpec ice_grain() {
+    const ContactPair p = ice_pair();
+    SpeciesSpec s;
+    s.mass = 2 * p.m_eff;
+    s.radius = 2 * p.R_eff;
+    s.temperature = s.rotational_temperature = s.mass * 0.01;
+    return s;
+}
+const NormalTable& normal_table() {
+    static const NormalTable t = NormalTable::build({});
+    return t;
+}
+const TangentialTable& tangential_table() {
+    static const TangentialTable t = [] {
+        TangentialTableOptions opt;
+        opt.g_min = 1e-3; // g_N < 1e-3 m/s: probability 2.5e-5 at this temperature (direct fall-back)
+        opt.g_max = 1.0;
+        return TangentialTable::build(ice_pair(), opt);
+    }();
+    return t;
+}
+
+void BM_Case_RoughConstant(benchmark::State& s) { run_bench<RoughAoS>(s, unit_grain(), make_rough_constant(0.9, 0.5)); }
+void BM_Case_SmoothConstant(benchmark::State& s) { run_bench<SmoothAoS>(s, unit_grain(), make_smooth_constant(0.9)); }
+void BM_Case_SmoothElastic(benchmark::State& s) { run_bench<SmoothAoS>(s, unit_grain(), make_smooth_constant(1.0)); }
+void BM_Case_Coulomb(benchmark::State& s) {
+    run_bench<RoughAoS>(s, unit_grain(), make_coulomb(0.9, 0.5, 0.2, make_pair_constants({1, 0.5, 0.4}, {1, 0.5, 0.4}).kappa));
+}
+void BM_Case_ViscoelasticSmooth(benchmark::State& s) {
+    run_bench<SmoothAoS>(s, ice_grain(), make_viscoelastic_smooth(normal_table(), ice_pair()));
+}
+void BM_Case_Viscoelastic(benchmark::State& s) {
+    run_bench<RoughAoS>(s, ice_grain(), make_viscoelastic(normal_table(), ice_pair(), 0.5));
+}
+void BM_Case_Brilliantov(benchmark::State& s) {
+    run_bench<RoughAoS>(s, ice_grain(), make_brilliantov(normal_table(), tangential_table(), ice_pair()));
+}
+
+void BM_Layout_RoughPacked48(benchmark::State& s) { run_bench<RoughPacked>(s, unit_grain(), make_rough_constant(0.9, 0.5)); }
+void BM_Layout_RoughSoA(benchmark::State& s) { run_bench<RoughSoA>(s, unit_grain(), make_rough_constant(0.9, 0.5)); }
+void BM_Layout_SmoothPacked24(benchmark::State& s) { run_bench<SmoothPacked>(s, unit_grain(), make_smooth_constant(0.9)); }
+
+void BM_Skip_RoughKernelAtBetaMinusOne(benchmark::State& s) {
+    run_bench<RoughAoS>(s, unit_grain(), make_rough_constant(0.9, -1.0));
+}
+void BM_Skip_MixtureKernelOneSpecies(benchmark::State& s) {
+    run_bench<RoughAoS, RoughConstant, true>(s, unit_grain(), make_rough_constant(0.9, 0.5));
+}
+void BM_Skip_VariantPerCollision(benchmark::State& s) {
+    run_bench<RoughAoS, AnyRoughPolicy, true>(s, unit_grain(), AnyRoughPolicy{make_rough_constant(0.9, 0.5)});
+}
+
+#define ROUGHGAS_SIZES ->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->MinTime(2.0)
+BENCHMARK(BM_Case_RoughConstant) ROUGHGAS_SIZES;
+BENCHMARK(BM_Case_SmoothConstant) ROUGHGAS_SIZES;
+BENCHMARK(BM_Case_SmoothElastic) ROUGHGAS_SIZES;
+BENCHMARK(BM_Case_Coulomb) ROUGHGAS_SIZES;
+BENCHMARK(BM_Case_ViscoelasticSmooth) ROUGHGAS_SIZES;
+BENCHMARK(BM_Case_Viscoelastic) ROUGHGAS_SIZES;
+BENCHMARK(BM_Case_Brilliantov) ROUGHGAS_SIZES;
+BENCHMARK(BM_Layout_RoughPacked48) ROUGHGAS_SIZES;
+BENCHMARK(BM_Layout_RoughSoA) ROUGHGAS_SIZES;
+BENCHMARK(BM_Layout_SmoothPacked24) ROUGHGAS_SIZES;
+BENCHMARK(BM_Skip_RoughKernelAtBetaMinusOne) ROUGHGAS_SIZES;
+BENCHMARK(BM_Skip_MixtureKernelOneSpecies) ROUGHGAS_SIZES;
+BENCHMARK(BM_Skip_VariantPerCollision) ROUGHGAS_SIZES;
+
+} // namespace
+} // namespace roughgas
