@@ -3,6 +3,7 @@
 
 #include "roughgas/io/case_schema.hpp"
 
+#include <numbers>
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
@@ -574,11 +575,12 @@ class Builder {
         return c;
     }
 
-    static SpeciesConfig species(const Reader& r) {
+    SpeciesConfig species(const Reader& r) {
         SpeciesConfig s;
         s.name = r.string("name");
-        s.mass = r.real("mass");
         s.radius = r.real("radius");
+        s.density = r.opt_real("density");
+        s.mass = mass(r, s);
         s.inertia = r.real("inertia");
         s.fraction = r.real("fraction");
         s.temperature = r.real("temperature");
@@ -595,6 +597,21 @@ class Builder {
         c.friction = r.opt_real("friction");
         c.direct = r.boolean("direct");
         return c;
+    }
+
+    // m is given directly or from the density of a uniform sphere: never both, never neither.
+    double mass(const Reader& r, const SpeciesConfig& s) {
+        if (r.has("mass")) {
+            if (s.density)
+                add("species.mass", "species.mass: give either mass or density, not both");
+            return r.real("mass");
+        }
+        if (!s.density) {
+            add("species.mass", fmt::format("species.mass: required key is missing (must be {}; or give density)",
+                                            expectation(*find_key("species.mass"))));
+            return 0;
+        }
+        return 4.0 / 3.0 * std::numbers::pi * s.radius * s.radius * s.radius * *s.density;
     }
 
     // A [[pair]] is [collision] with the pair's own keys on top.
@@ -940,7 +957,11 @@ std::string emit_case(const CaseConfig& c) {
     for (const SpeciesConfig& s : c.species) {
         e.header("[[species]]");
         e.put("name", s.name);
-        e.put("mass", s.mass);
+        if (s.density) { // the mass was derived: echo what the user gave, so that it reads back the same
+            e.put("density", s.density);
+        } else {
+            e.put("mass", s.mass);
+        }
         e.put("radius", s.radius);
         e.put("inertia", s.inertia);
         e.put("fraction", s.fraction);

@@ -146,7 +146,16 @@ std::vector<Key> keys() {
         Key("species.name", T::string)
             .fallback(std::string("grain"))
             .doc("unique name, used by [[pair]] and in column names"),
-        Key("species.mass", T::real).unit("mass").required().gt(0).doc("particle mass m"),
+        Key("species.mass", T::real)
+            .unit("mass")
+            .when("required unless density is given")
+            .gt(0)
+            .doc("particle mass m"),
+        Key("species.density", T::real)
+            .unit("mass/length^3")
+            .when("unset")
+            .gt(0)
+            .doc("material density of the grain (uniform sphere): m = (4/3) pi R^3 density, instead of mass"),
         Key("species.radius", T::real).unit("length").required().gt(0).doc("particle radius R"),
         Key("species.inertia", T::real)
             .fallback(0.4)

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <numbers>
+
 namespace roughgas {
 namespace {
 
@@ -215,6 +217,22 @@ TEST(CaseFile, DissipationFromViscosities) {
         error_of(replaced(small_case(), "dissipation = 1.0e-5", "")).find("material.dissipation: required"),
         std::string::npos);
     EXPECT_NE(error_of(viscous, {"material.poisson_ratio=0"}).find("poisson_ratio != 0"), std::string::npos);
+}
+
+TEST(CaseFile, MassFromDensity) {
+    // A uniform sphere: m = (4/3) pi R^3 density (R = 0.01 m in small_case).
+    const std::string by_density = replaced(small_case(), "mass = 4.188790204786391e-3", "density = 1000.0");
+    const CaseConfig c = parse_case(by_density, "c.toml");
+    EXPECT_NEAR(c.species[0].mass, 4.0 / 3.0 * std::numbers::pi * 1e-6 * 1000.0, 1e-18);
+    EXPECT_EQ(parse_case(emit_case(c), "c.toml"), c) << "the density reads back as given";
+    EXPECT_NE(error_of(replaced(small_case(), "mass = 4.188790204786391e-3",
+                                "mass = 4.188790204786391e-3\ndensity = 1000.0"))
+                  .find("not both"),
+              std::string::npos);
+    EXPECT_NE(error_of(replaced(small_case(), "mass = 4.188790204786391e-3", "")).find("species.mass: required"),
+              std::string::npos);
+    EXPECT_NE(error_of(by_density, {"species.0.density=-1"}).find("species.0.density = -1: must be > 0"),
+              std::string::npos);
 }
 
 std::string mixture() {

@@ -69,7 +69,8 @@ struct RunConfig {
 // One [[species]] table.
 struct SpeciesConfig {
     std::string name = "grain";
-    double mass = 0;                     // m
+    double mass = 0;                     // m (given, or from density)
+    std::optional<double> density;      // material density, when the mass came from it
     double radius = 0;                   // R
     double inertia = 0.4;                // q = J/(m R^2), physics.md §1
     double fraction = 1.0;               // number fraction
