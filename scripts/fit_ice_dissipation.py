@@ -22,6 +22,8 @@ import tempfile
 
 import numpy as np
 
+from roughgas_csv import read_csv
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 V_C = 0.0077e-2  # m/s
 EXPONENT = -0.234
@@ -32,12 +34,6 @@ def bridges(v):
     return (v / V_C) ** EXPONENT
 
 
-def read_csv(path):
-    with open(path) as f:
-        lines = [line for line in f if not line.startswith("#")]
-    names = [n.strip() for n in lines[0].split(",")]
-    data = np.array([[float(v) for v in line.split(",")] for line in lines[1:] if line.strip()])
-    return {n: data[:, i] for i, n in enumerate(names)}
 
 
 def case_dissipation(case_path):

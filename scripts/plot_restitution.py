@@ -15,15 +15,9 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from roughgas_csv import read_csv  # noqa: E402
 
 
-def read_csv(path):
-    """The CSV's '#' lines are metadata; the first other line names the columns."""
-    with open(path) as f:
-        lines = [line for line in f if not line.startswith("#")]
-    names = [n.strip() for n in lines[0].split(",")]
-    data = np.array([[float(v) for v in line.split(",")] for line in lines[1:] if line.strip()])
-    return {n: data[:, i] for i, n in enumerate(names)}
 
 
 def bridges(v_cm_s):
