@@ -1,15 +1,41 @@
-// roughgas run CASE.toml --out DIR ... | roughgas run --resume DIR: the DSMC (issue 3).
-// The options of interface.md are all accepted now, so scripts can be written against them.
+// roughgas run CASE.toml --out DIR ... : the DSMC of the homogeneous gas (issue 3), writing
+// DIR/moments.csv (interface.md "Output", io/moments_csv.hpp).
+//
+// Order of work: validate the case and the output directory (exit 2, nothing written), build the
+// restitution tables, then run the replicas (in parallel over --threads when replicas > 1; each
+// replica is deterministic, so the file does not depend on the thread count). The file is
+// rewritten atomically as rows complete (every row complete over all replicas, at most once a
+// second, and at the end), so a crash or a kill keeps what was computed.
+// `roughgas run --resume DIR` and `--checkpoint-every` are accepted but not implemented yet (exit 1).
 #include "commands.hpp"
+#include "progress.hpp"
 
+#include "roughgas/dsmc/run.hpp"
 #include "roughgas/io/case_file.hpp"
+#include "roughgas/io/csv_writer.hpp"
+#include "roughgas/io/moments_csv.hpp"
+#include "roughgas/io/run_spec_from_case.hpp"
+#include "roughgas/io/run_tables.hpp"
 
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cstdint>
+#include <exception>
+#include <filesystem>
 #include <iostream>
 #include <memory>
+#include <mutex>
 
 namespace roughgas::cli {
 namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* output_file = "moments.csv";
 
 struct RunOptions {
     std::string case_file;
@@ -23,37 +49,164 @@ struct RunOptions {
     std::string resume;
 };
 
+// Never overwrite earlier results by accident: that is an input error, reported before any work.
+void check_output_dir(const fs::path& dir, bool force) {
+    if (fs::exists(dir) && !fs::is_directory(dir))
+        throw InputError(dir.string(), "--out", "--out " + dir.string() + ": exists and is not a directory");
+    if (!force && fs::exists(dir / output_file))
+        throw InputError(dir.string(), "--out",
+                         fmt::format("--out {}: {} exists (use --force to overwrite)", dir.string(), output_file));
+}
+
+// Thrown from a replica's row sink when another replica failed: ends the run early.
+struct Cancelled {};
+
 int run_run(const RunOptions& o, const CLI::App& app) {
-    if (o.resume.empty()) {
-        if (o.case_file.empty() || o.out.empty()) {
-            throw InputError("", "", "roughgas run: give CASE.toml and --out DIR, or --resume DIR");
-        }
-        std::vector<std::string> sets = o.sets;
-        if (app.count("--seed") > 0) {
-            sets.push_back("run.seed=" + std::to_string(o.seed)); // --seed is --set run.seed=S
-        }
-        (void)load_case(o.case_file, sets, CaseUse::run); // invalid input is reported now: exit 2
+    if (!o.resume.empty()) {
+        std::cerr << "roughgas run --resume: not implemented yet (checkpoints are planned)\n";
+        return exit_failure;
     }
-    std::cerr << "roughgas run: not implemented yet (DSMC: issue 3)\n";
-    return exit_failure;
+    if (o.case_file.empty() || o.out.empty())
+        throw InputError("", "", "roughgas run: give CASE.toml and --out DIR, or --resume DIR");
+    std::vector<std::string> sets = o.sets;
+    if (app.count("--seed") > 0) sets.push_back("run.seed=" + std::to_string(o.seed)); // --seed is --set run.seed=S
+    const CaseConfig cfg = load_case(o.case_file, sets, CaseUse::run); // invalid input: exit 2
+    if (app.count("--checkpoint-every") > 0) {
+        std::cerr << "roughgas run --checkpoint-every: not implemented yet (checkpoints are planned)\n";
+        return exit_failure;
+    }
+    const fs::path dir(o.out);
+    check_output_dir(dir, o.force);
+
+    RunSpec spec;
+    try {
+        spec = run_spec_from_case(cfg);
+    } catch (const std::invalid_argument& e) { // e.g. run.kind = "shear": valid, not implemented
+        throw std::runtime_error(e.what());
+    }
+    spec.threads = o.threads > 0 ? o.threads : omp_get_max_threads();
+    const int K = spec.replicas;
+
+    MomentsTable table(spec);
+    CsvProvenance prov;
+    prov.case_file = o.case_file;
+    prov.overrides = sets;
+    prov.seed = cfg.run.seed;
+    prov.resolved_case = emit_case(cfg);
+    prov.notes = {
+        "t in the case's time unit; coll_per_particle = 2 x collisions / N; T in energy units (k_B = 1)",
+        fmt::format("replicas: {}{}", K,
+                    K > 1 ? " (X = mean over replicas, X_err = its standard error)" : ""),
+    };
+    if (table.has_theory())
+        prov.notes.push_back("*_theory: Maxwellian approximation for constant alpha, beta at the row's t "
+                             "(observables/theory.hpp; Haff's law for smooth spheres)");
+    prov.units = table.units();
+    CsvWriter csv(table.names(), prov);
+
+    const auto tables = build_run_tables(spec); // before anything is written: a failure writes nothing
+    if (!o.quiet) {
+        if (!tables->cache_rejected().empty())
+            std::cerr << fmt::format("roughgas: cache file {} rejected ({}): rebuilt\n", spec.cache_file.string(),
+                                     tables->cache_rejected());
+        for (const TableBuildInfo& i : tables->info())
+            std::cerr << fmt::format("roughgas: {}: {}\n", i.what,
+                                     i.from_cache ? fmt::format("loaded from {}", spec.cache_file.string())
+                                                  : fmt::format("built in {:.2f} s", i.seconds));
+    }
+    fs::create_directories(dir);
+    const fs::path path = dir / output_file;
+
+    // rows[r][k]: replica r's row at output k. A row goes to the file once every replica has it.
+    std::vector<std::vector<std::vector<double>>> rows(static_cast<std::size_t>(K));
+    std::mutex mutex;
+    std::size_t combined = 0, on_disk = 0;
+    auto last_write = std::chrono::steady_clock::now() - std::chrono::hours(1);
+    const auto flush = [&](bool now) { // under `mutex`
+        std::size_t complete = rows[0].size();
+        for (const auto& r : rows) complete = std::min(complete, r.size());
+        for (; combined < complete; ++combined) {
+            std::vector<std::span<const double>> spans;
+            for (const auto& r : rows) spans.emplace_back(r[combined]);
+            csv.add_row(table.combine(spans));
+        }
+        const auto t = std::chrono::steady_clock::now();
+        if (csv.rows() > on_disk && (now || t - last_write >= std::chrono::seconds(1))) {
+            csv.write(path);
+            on_disk = csv.rows();
+            last_write = t;
+        }
+    };
+
+    ProgressLine progress(o.quiet ? nullptr : &std::cerr, K);
+    std::vector<ReplicaSummary> summaries(static_cast<std::size_t>(K));
+    std::atomic<bool> cancel{false};
+    std::exception_ptr error;
+    const int threads = std::min(spec.threads, K);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+    for (int r = 0; r < K; ++r) {
+        try {
+            if (cancel) throw Cancelled{};
+            const RowSink sink = [&, r](std::span<const double> row) {
+                if (cancel) throw Cancelled{};
+                table.check(row); // NonFiniteValue: stop, naming the column and t
+                std::lock_guard lock(mutex);
+                rows[static_cast<std::size_t>(r)].emplace_back(row.begin(), row.end());
+                flush(false);
+            };
+            const ProgressSink report = [&, r](double done, double end, double coll) {
+                progress.update(r, done, end, coll);
+            };
+            run_replica(spec, *tables, r, sink, report, &summaries[static_cast<std::size_t>(r)]);
+        } catch (const Cancelled&) {
+        } catch (...) {
+            std::lock_guard lock(mutex);
+            if (!error) error = std::current_exception();
+            cancel = true;
+        }
+    }
+    progress.finish();
+    {
+        std::lock_guard lock(mutex);
+        flush(true);
+    }
+    if (error) {
+        try {
+            std::rethrow_exception(error);
+        } catch (const NonFiniteValue& e) {
+            throw std::runtime_error(fmt::format("{}; the {} rows before it are in {}", e.what(), on_disk,
+                                                 path.string()));
+        }
+    }
+
+    double collisions = 0, seconds = progress.seconds();
+    for (const ReplicaSummary& s : summaries) collisions += static_cast<double>(s.collisions);
+    std::cout << fmt::format("roughgas run: wrote {} ({} rows, {} columns, {} replica{}): {:.4g} collisions in "
+                             "{:.3g} s ({:.3g} collisions/s; kernel {})\n",
+                             path.string(), csv.rows(), table.columns().size(), K, K > 1 ? "s" : "", collisions,
+                             seconds, seconds > 0 ? collisions / seconds : 0.0, summaries[0].kernel);
+    return exit_ok;
 }
 
 } // namespace
 
 Subcommand add_run_command(CLI::App& parent) {
     auto o = std::make_shared<RunOptions>();
-    CLI::App* app = parent.add_subcommand("run", "run a DSMC simulation (not implemented yet)");
+    CLI::App* app = parent.add_subcommand("run", "run a DSMC simulation of the homogeneous cooling state, "
+                                                 "writing DIR/moments.csv");
     CLI::Option* case_opt = app->add_option("CASE", o->case_file, "case file (TOML)");
-    app->add_option("--out", o->out, "output directory");
+    app->add_option("--out", o->out, "output directory (moments.csv)");
     add_set_option(*app, o->sets);
     app->add_option("--seed", o->seed, "random seed (overrides run.seed)");
-    app->add_option("--threads", o->threads, "OpenMP threads")->check(CLI::PositiveNumber);
-    app->add_flag("--quiet", o->quiet, "no progress output");
-    app->add_flag("--force", o->force, "overwrite an existing output directory");
-    app->add_option("--checkpoint-every", o->checkpoint_every,
-                    "checkpoint interval in collisions per particle")
+    app->add_option("--threads", o->threads, "threads for the replicas (default: all; results do not depend on it)")
         ->check(CLI::PositiveNumber);
-    app->add_option("--resume", o->resume, "continue the checkpointed run in DIR")->excludes(case_opt);
+    app->add_flag("--quiet", o->quiet, "no progress output");
+    app->add_flag("--force", o->force, "overwrite moments.csv in an existing output directory");
+    app->add_option("--checkpoint-every", o->checkpoint_every,
+                    "checkpoint interval in collisions per particle (not implemented yet)")
+        ->check(CLI::PositiveNumber);
+    app->add_option("--resume", o->resume, "continue the checkpointed run in DIR (not implemented yet)")
+        ->excludes(case_opt);
     return {app, [o, app] { return run_run(*o, *app); }};
 }
 

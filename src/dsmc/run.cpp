@@ -44,6 +44,7 @@ void validate(const RunSpec& spec) {
     require(spec.particles >= 2, "at least two particles needed");
     require(spec.density > 0, "density must be > 0");
     require(spec.step > 0, "step must be > 0");
+    require(spec.speed_classes >= 1 && spec.speed_classes <= 6, "speed_classes must be in 1 .. 6");
     double prev = 0;
     for (double t : spec.output_times) {
         require(std::isfinite(t) && t > prev, "output times must be positive and increasing");
@@ -74,7 +75,7 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
     Store store(N);
     init_maxwellian(store, blocks, spec.seed, rep);
     Engine<Store, Policy, Mixture> engine(blocks, std::move(policies), std::move(store),
-                                         EngineOptions{spec.density, spec.step, spec.seed, rep});
+                                         EngineOptions{spec.density, spec.step, spec.seed, rep, spec.speed_classes});
 
     const std::size_t S = blocks.size();
     std::vector<SpeciesSlice> slices(S);
@@ -163,8 +164,10 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
         summary->candidates = k.candidates;
         summary->steps = k.steps;
         summary->bound_raises = k.bound_raises;
+        summary->promotions = k.promotions;
         summary->beta_clamped = tally.clamped;
         summary->max_mean_drift = k.max_mean_drift;
+        summary->recentrings = k.recentrings;
         summary->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     }
 }

@@ -74,6 +74,17 @@ CsvWriter::CsvWriter(std::vector<std::string> columns, const CsvProvenance& p)
         comment(text_, "resolved case (every default filled in):");
         comment_block(text_, p.resolved_case);
     }
+    if (!p.units.empty()) {
+        if (p.units.size() != columns_.size()) {
+            throw std::invalid_argument(
+                fmt::format("CSV header has {} units for {} columns", p.units.size(), columns_.size()));
+        }
+        std::string line = "units: ";
+        for (std::size_t i = 0; i < p.units.size(); ++i) {
+            line += (i ? "," : "") + p.units[i];
+        }
+        comment(text_, line);
+    }
     for (std::size_t i = 0; i < columns_.size(); ++i) {
         text_ += (i ? "," : "") + columns_[i];
     }

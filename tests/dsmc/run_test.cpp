@@ -109,7 +109,7 @@ TEST(Run, RowsAtZeroAndEveryOutputTime) {
     EXPECT_EQ(summary.collisions, 4000);
     EXPECT_EQ(summary.kernel, "RoughAoS, constant, one species");
     EXPECT_LE(summary.bytes_per_particle, 64u);
-    EXPECT_LT(summary.max_mean_drift, 1e-12);
+    EXPECT_LT(summary.max_mean_drift, 1e-14); // 4 steps of round-off
 }
 
 TEST(Run, EnergyDissipationRateMatchesTheTemperatureDrop) {
@@ -181,7 +181,10 @@ TEST(Run, CoolsThroughFortyDecadesWithoutUnderflow) {
         for (std::size_t k = 1; k < rows.size(); ++k)
             for (std::size_t c = 0; c < rows[k].size(); ++c) EXPECT_TRUE(std::isfinite(rows[k][c])) << dsmc_columns(s)[c].name;
         EXPECT_LT(std::abs(rows.back()[column(s, "a20")]), 1.0);
-        EXPECT_LT(summary.max_mean_drift, 1e-12);
+        // Round-off drift of the centre of mass, relative to the falling thermal speed: removed
+        // whenever it exceeds 1e-10, so it never gets beyond one step's growth above that.
+        EXPECT_LT(summary.max_mean_drift, 1e-9);
+        EXPECT_GT(summary.recentrings, 0) << "speeds fell by 25 decades: the frame must have been re-centred";
     }
 }
 

@@ -140,8 +140,9 @@ TEST(Cli, EveryShippedCasePassesCheck) {
         const std::string f = e.path().string();
         const test::CommandResult r = run_roughgas("check '" + f + "'", dir);
         EXPECT_EQ(r.status, 0) << f << "\n" << r.err;
-        EXPECT_EQ(run_roughgas("check '" + f + "' --for restitution", dir).status, 0) << f;
         const CaseConfig c = load_case(f);
+        if (c.material) // cases with a contact model also tabulate it (roughgas restitution)
+            EXPECT_EQ(run_roughgas("check '" + f + "' --for restitution", dir).status, 0) << f;
         EXPECT_EQ(parse_case(emit_case(c), "emitted.toml"), c) << f; // the echo in CSV headers reads back
     }
     EXPECT_GE(n, 4);
@@ -158,15 +159,16 @@ TEST(Cli, MalformedCommandLineIsInvalidInput) {
     EXPECT_EQ(run_roughgas("--help", dir).status, 0);
 }
 
-TEST(Cli, RunAndSweepAreNotImplementedYet) {
+TEST(Cli, SweepAndResumeAreNotImplementedYet) {
     const test::ScratchDir dir;
     const fs::path f = dir.write("ok.toml", small_case());
     const std::string out = (dir / "out").string();
-    test::CommandResult r =
-        run_roughgas("run '" + f.string() + "' --out '" + out + "' --seed 3 --threads 2", dir);
+    test::CommandResult r = run_roughgas("run --resume '" + out + "'", dir);
     EXPECT_EQ(r.status, 1);
-    EXPECT_NE(r.err.find("not implemented yet (DSMC: issue 3)"), std::string::npos) << r.err;
-    EXPECT_EQ(run_roughgas("run --resume '" + out + "'", dir).status, 1);
+    EXPECT_NE(r.err.find("not implemented yet"), std::string::npos) << r.err;
+    r = run_roughgas("run '" + f.string() + "' --out '" + out + "' --checkpoint-every 5", dir);
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find("not implemented yet"), std::string::npos) << r.err;
     EXPECT_EQ(run_roughgas("run '" + f.string() + "' --out '" + out + "' --set run.end=-1", dir).status, 2);
     r = run_roughgas("sweep '" + f.string() + "' --param run.end=1:100:5 --out '" + out + "'", dir);
     EXPECT_EQ(r.status, 1);

@@ -30,7 +30,7 @@ inline CollisionRecord collide(const PairConstants& pc, const Policy& policy, Ve
     const double g_dot_n = dot(g, n); // = g_c . n: rotation has no normal part
     const Vec3 g_T = g - g_dot_n * n;
     const double g_n = std::abs(g_dot_n);
-    const double g_t = std::sqrt(norm2(g_T));
+    const double g_t = sqrt_nonneg(norm2(g_T));
     const Coefficients c = policy(g_n, g_t);
 
     const double a = -(1.0 + c.alpha) * g_dot_n;

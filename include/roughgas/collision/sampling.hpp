@@ -18,7 +18,7 @@ inline Vec3 uniform_direction(Rng& rng) {
         y = uniform_pm1(rng);
         s = x * x + y * y;
     } while (s >= 1.0);
-    const double f = 2.0 * std::sqrt(1.0 - s);
+    const double f = 2.0 * sqrt_nonneg(1.0 - s);
     return {x * f, y * f, 1.0 - 2.0 * s};
 }
 
@@ -32,7 +32,7 @@ inline Vec3 sample_impact_normal(Rng& rng, const Vec3& g_c, double g_abs) {
     for (;;) {
         const Vec3 d = g_c + g_abs * uniform_direction(rng); // |g_c| (g^ + u)
         const double d2 = norm2(d);
-        if (d2 > 0) return (-1.0 / std::sqrt(d2)) * d;
+        if (d2 > 0) return (-1.0 / sqrt_nonneg(d2)) * d;
     }
 }
 

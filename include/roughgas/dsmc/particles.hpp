@@ -17,8 +17,9 @@
 // eight times what the second-level TLB holds).
 //
 // Particles of species s occupy the index range [offset_s, offset_s + count_s) (dsmc/species.hpp):
-// no species field is stored. A work unit of a later spatial or random partition is a set of such
-// ranges after a permutation of the store (swap_grains).
+// no species field is stored. Within it the engine keeps the grains sorted into speed classes
+// (swap_hot). A work unit of a later spatial or random partition is a set of such ranges after a
+// permutation of the store.
 #include "roughgas/core/vec.hpp"
 
 #include <cstddef>
@@ -97,6 +98,8 @@ public:
     const Vec3& v(std::size_t i) const { return g_[i].v; }
     const Vec3& w(std::size_t i) const { return g_[i].w; }
     void prefetch(std::size_t i) const { prefetch_line(&g_[i]); }
+    // The engine moves grains between speed classes (engine.hpp): v and omega together.
+    void swap_hot(std::size_t i, std::size_t j) { swap_grains(i, j); }
     void swap_grains(std::size_t i, std::size_t j) { std::swap(g_[i], g_[j]); }
     Vec3Column velocities() const { return column_of(g_.data(), offsetof(RoughGrain, v)); }
     Vec3Column angular_velocities() const { return column_of(g_.data(), offsetof(RoughGrain, w)); }
@@ -127,6 +130,8 @@ public:
         prefetch_line(p);
         prefetch_line(p + sizeof(PackedGrain) - 1);
     }
+    // The engine moves grains between speed classes (engine.hpp): v and omega together.
+    void swap_hot(std::size_t i, std::size_t j) { swap_grains(i, j); }
     void swap_grains(std::size_t i, std::size_t j) { std::swap(g_[i], g_[j]); }
     Vec3Column velocities() const { return column_of(g_.data(), offsetof(PackedGrain, v)); }
     Vec3Column angular_velocities() const { return column_of(g_.data(), offsetof(PackedGrain, w)); }
@@ -152,6 +157,8 @@ public:
         prefetch_line(&w_[i]);
         prefetch_line(reinterpret_cast<const char*>(&w_[i]) + sizeof(Vec3) - 1);
     }
+    // The engine moves grains between speed classes (engine.hpp): v and omega together.
+    void swap_hot(std::size_t i, std::size_t j) { swap_grains(i, j); }
     void swap_grains(std::size_t i, std::size_t j) {
         std::swap(v_[i], v_[j]);
         std::swap(w_[i], w_[j]);
@@ -183,6 +190,8 @@ public:
     Vec3& w(std::size_t i) { return w_[i]; }
     const Vec3& w(std::size_t i) const { return w_[i]; }
     void prefetch(std::size_t i) const { prefetch_line(&g_[i]); }
+    // The engine moves v only: omega is never read by a smooth collision (engine.hpp, "Particle order").
+    void swap_hot(std::size_t i, std::size_t j) { std::swap(g_[i], g_[j]); }
     void swap_grains(std::size_t i, std::size_t j) {
         std::swap(g_[i], g_[j]);
         std::swap(w_[i], w_[j]);
@@ -210,6 +219,8 @@ public:
         prefetch_line(&v_[i]);
         prefetch_line(reinterpret_cast<const char*>(&v_[i]) + sizeof(Vec3) - 1);
     }
+    // The engine moves v only: omega is never read by a smooth collision (engine.hpp, "Particle order").
+    void swap_hot(std::size_t i, std::size_t j) { std::swap(v_[i], v_[j]); }
     void swap_grains(std::size_t i, std::size_t j) {
         std::swap(v_[i], v_[j]);
         std::swap(w_[i], w_[j]);

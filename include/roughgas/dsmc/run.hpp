@@ -43,8 +43,11 @@ struct ReplicaSummary {
     std::int64_t candidates = 0;    // candidate pairs drawn (collisions/candidates: the majorant's acceptance)
     std::int64_t steps = 0;
     std::int64_t bound_raises = 0;  // collisions that raised the majorant within a step
+    std::int64_t promotions = 0;    // grains moved to a faster speed class within a step
     std::int64_t beta_clamped = 0;  // collisions whose model beta was clamped to [-1, 1]
-    double max_mean_drift = 0;      // largest residual centre-of-mass speed over the rms speed (round-off)
+    double max_mean_drift = 0;      // largest centre-of-mass speed over the rms speed seen at a step start:
+                                    // round-off, removed once above 1e-10 (dsmc/engine.hpp)
+    std::int64_t recentrings = 0;   // steps that removed it
     double seconds = 0;             // wall time of the collision loop and the moments
 };
 

@@ -41,6 +41,9 @@ struct RunSpec {
     // DSMC step length in mean free times. A step only refreshes the collision majorant (and the
     // frame); the collision statistics do not depend on it (dsmc/engine.hpp).
     double step = 1.0;
+    // Speed classes per species of the collision majorant (dsmc/engine.hpp), 1 .. 6: 1 is the plain
+    // bound vmax_a + vmax_b; no influence on the statistics, only on the speed.
+    int speed_classes = 2;
     // Contact tables (viscoelastic, brilliantov): integration tolerance, cache file ("" = none),
     // and the range of g_N the tangential tables cover (outside: direct integration).
     Tolerance contact_tolerance{};

@@ -17,13 +17,18 @@ struct CsvProvenance {
     std::optional<std::uint64_t> seed;
     std::string resolved_case;      // emit_case(cfg): every key with defaults filled in
     std::vector<std::string> notes; // further "# ..." lines, e.g. what the table holds
+    // The unit of every column, in column order: written as the last '#' line, right above the
+    // header, as "# units: u1,u2,..." (one entry per column, so a reader can zip it with the
+    // header). Empty: no such line.
+    std::vector<std::string> units;
 };
 
 class CsvWriter {
   public:
     CsvWriter(std::vector<std::string> columns, const CsvProvenance& provenance);
 
-    // Throws std::invalid_argument unless there is one value per column.
+    // Throws std::invalid_argument unless there is one value per column (and one unit per column
+    // when units are given: in the constructor).
     void add_row(std::span<const double> values);
     void add_row(std::initializer_list<double> values) { add_row(std::span(values.begin(), values.size())); }
 

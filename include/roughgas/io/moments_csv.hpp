@@ -1,0 +1,67 @@
+#pragma once
+// The rows of moments.csv (interface.md "Output"): the solver's columns (dsmc_columns), with
+// replicas > 1 each followed by its standard error X_err, then, for constant-restitution runs, the
+// Maxwellian-approximation theory (observables/theory.hpp) at the row's t:
+//   T_tr_theory, T_rot_theory, theta_theory          (over all grains)
+//   T_tr_theory.NAME, T_rot_theory.NAME, theta_theory.NAME   (mixtures: per species, in order)
+// and the rule that no value is NaN or infinite unless it is undefined by definition.
+#include "roughgas/dsmc/output_columns.hpp"
+#include "roughgas/dsmc/run_spec.hpp"
+#include "roughgas/observables/theory.hpp"
+
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace roughgas {
+
+// A row holds a value that is neither finite nor undefined by definition: the run must stop.
+class NonFiniteValue : public std::runtime_error {
+  public:
+    NonFiniteValue(std::string column, double t, double value, const std::string& what)
+        : std::runtime_error(what), column_(std::move(column)), t_(t), value_(value) {}
+    const std::string& column() const { return column_; }
+    double t() const { return t_; }
+    double value() const { return value_; }
+
+  private:
+    std::string column_;
+    double t_, value_;
+};
+
+class MomentsTable {
+  public:
+    explicit MomentsTable(const RunSpec& spec);
+
+    // Every CSV column in order, with its unit.
+    const std::vector<Column>& columns() const { return columns_; }
+    std::vector<std::string> names() const;
+    std::vector<std::string> units() const;
+    const std::vector<Column>& solver_columns() const { return solver_; }
+    bool has_theory() const { return trajectory_.has_value(); }
+    int replicas() const { return replicas_; }
+
+    // Throws NonFiniteValue, naming the column and t, unless every value of a solver row (one
+    // replica, dsmc_columns order) is finite or undefined by definition:
+    //   coll_rate, coll_rate.NAME, E_diss_rate in the row at t = 0 (no interval yet);
+    //   theta, a20, a11, T_tr.A/T_tr.B with the T_tr they divide by equal to 0;
+    //   a02, a11, A_cw, T_rot.A/T_rot.B with the T_rot they divide by equal to 0 (e.g. smooth
+    //   grains started without rotation).
+    void check(std::span<const double> solver_row) const;
+
+    // The CSV row from the replicas' solver rows of the same output time (one per replica, in
+    // replica order): the mean, with replicas > 1 the standard error of the mean
+    // sqrt(sum (x - mean)^2/(K (K - 1))), then the theory at the mean t. Call once per output
+    // time, in order (the theory is integrated on from the previous row).
+    std::vector<double> combine(std::span<const std::span<const double>> replica_rows);
+
+  private:
+    std::vector<Column> solver_, columns_;
+    std::vector<std::string> species_names_;
+    int replicas_ = 1;
+    std::optional<HcsTrajectory> trajectory_;
+};
+
+} // namespace roughgas
