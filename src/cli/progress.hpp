@@ -1,7 +1,8 @@
 #pragma once
 // The progress line of `roughgas run` on stderr: collisions per second and time to go, rewritten
-// in place with '\r' at most every `interval` seconds. Thread-safe: replicas running in parallel
-// report their own progress and the line shows the sum.
+// in place with '\r' at most every `interval` seconds on a terminal; when stderr is a file or a
+// pipe (a batch job's log), a complete line at most every `log_interval` seconds instead.
+// Thread-safe: replicas running in parallel report their own progress and the line shows the sum.
 #include <chrono>
 #include <cstdint>
 #include <mutex>
@@ -13,7 +14,8 @@ namespace roughgas::cli {
 class ProgressLine {
   public:
     // `replicas` reports, each going from 0 to `end` collisions per particle. `out` null: silent.
-    ProgressLine(std::ostream* out, int replicas, double interval_seconds = 0.25);
+    ProgressLine(std::ostream* out, int replicas, bool terminal, double interval_seconds = 0.25,
+                 double log_interval_seconds = 10);
     // Replica `r` has done `done` of `end` collisions per particle, `collisions` collisions.
     void update(int r, double done, double end, double collisions);
     // Ends the line (a newline after the last update), once.
@@ -25,6 +27,7 @@ class ProgressLine {
     void draw(bool final);
     std::ostream* out_;
     std::chrono::steady_clock::time_point start_, last_draw_;
+    bool terminal_;
     double interval_;
     mutable std::mutex mutex_;
     std::vector<double> done_, end_, collisions_;

@@ -29,6 +29,7 @@
 #include <iostream>
 #include <memory>
 #include <mutex>
+#include <unistd.h>
 
 namespace roughgas::cli {
 namespace {
@@ -54,8 +55,9 @@ void check_output_dir(const fs::path& dir, bool force) {
     if (fs::exists(dir) && !fs::is_directory(dir))
         throw InputError(dir.string(), "--out", "--out " + dir.string() + ": exists and is not a directory");
     if (!force && fs::exists(dir / output_file))
-        throw InputError(dir.string(), "--out",
-                         fmt::format("--out {}: {} exists (use --force to overwrite)", dir.string(), output_file));
+        throw InputError(
+            dir.string(), "--out",
+            fmt::format("--out {}: {} exists (use --force to overwrite)", dir.string(), output_file));
 }
 
 // Thrown from a replica's row sink when another replica failed: ends the run early.
@@ -69,7 +71,8 @@ int run_run(const RunOptions& o, const CLI::App& app) {
     if (o.case_file.empty() || o.out.empty())
         throw InputError("", "", "roughgas run: give CASE.toml and --out DIR, or --resume DIR");
     std::vector<std::string> sets = o.sets;
-    if (app.count("--seed") > 0) sets.push_back("run.seed=" + std::to_string(o.seed)); // --seed is --set run.seed=S
+    if (app.count("--seed") > 0)
+        sets.push_back("run.seed=" + std::to_string(o.seed));          // --seed is --set run.seed=S
     const CaseConfig cfg = load_case(o.case_file, sets, CaseUse::run); // invalid input: exit 2
     if (app.count("--checkpoint-every") > 0) {
         std::cerr << "roughgas run --checkpoint-every: not implemented yet (checkpoints are planned)\n";
@@ -107,8 +110,8 @@ int run_run(const RunOptions& o, const CLI::App& app) {
     const auto tables = build_run_tables(spec); // before anything is written: a failure writes nothing
     if (!o.quiet) {
         if (!tables->cache_rejected().empty())
-            std::cerr << fmt::format("roughgas: cache file {} rejected ({}): rebuilt\n", spec.cache_file.string(),
-                                     tables->cache_rejected());
+            std::cerr << fmt::format("roughgas: cache file {} rejected ({}): rebuilt\n",
+                                     spec.cache_file.string(), tables->cache_rejected());
         for (const TableBuildInfo& i : tables->info())
             std::cerr << fmt::format("roughgas: {}: {}\n", i.what,
                                      i.from_cache ? fmt::format("loaded from {}", spec.cache_file.string())
@@ -124,10 +127,12 @@ int run_run(const RunOptions& o, const CLI::App& app) {
     auto last_write = std::chrono::steady_clock::now() - std::chrono::hours(1);
     const auto flush = [&](bool now) { // under `mutex`
         std::size_t complete = rows[0].size();
-        for (const auto& r : rows) complete = std::min(complete, r.size());
+        for (const auto& r : rows)
+            complete = std::min(complete, r.size());
         for (; combined < complete; ++combined) {
             std::vector<std::span<const double>> spans;
-            for (const auto& r : rows) spans.emplace_back(r[combined]);
+            for (const auto& r : rows)
+                spans.emplace_back(r[combined]);
             csv.add_row(table.combine(spans));
         }
         const auto t = std::chrono::steady_clock::now();
@@ -138,7 +143,7 @@ int run_run(const RunOptions& o, const CLI::App& app) {
         }
     };
 
-    ProgressLine progress(o.quiet ? nullptr : &std::cerr, K);
+    ProgressLine progress(o.quiet ? nullptr : &std::cerr, K, ::isatty(STDERR_FILENO) == 1);
     std::vector<ReplicaSummary> summaries(static_cast<std::size_t>(K));
     std::atomic<bool> cancel{false};
     std::exception_ptr error;
@@ -146,9 +151,11 @@ int run_run(const RunOptions& o, const CLI::App& app) {
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int r = 0; r < K; ++r) {
         try {
-            if (cancel) throw Cancelled{};
+            if (cancel)
+                throw Cancelled{};
             const RowSink sink = [&, r](std::span<const double> row) {
-                if (cancel) throw Cancelled{};
+                if (cancel)
+                    throw Cancelled{};
                 table.check(row); // NonFiniteValue: stop, naming the column and t
                 std::lock_guard lock(mutex);
                 rows[static_cast<std::size_t>(r)].emplace_back(row.begin(), row.end());
@@ -161,7 +168,8 @@ int run_run(const RunOptions& o, const CLI::App& app) {
         } catch (const Cancelled&) {
         } catch (...) {
             std::lock_guard lock(mutex);
-            if (!error) error = std::current_exception();
+            if (!error)
+                error = std::current_exception();
             cancel = true;
         }
     }
@@ -174,17 +182,19 @@ int run_run(const RunOptions& o, const CLI::App& app) {
         try {
             std::rethrow_exception(error);
         } catch (const NonFiniteValue& e) {
-            throw std::runtime_error(fmt::format("{}; the {} rows before it are in {}", e.what(), on_disk,
-                                                 path.string()));
+            throw std::runtime_error(
+                fmt::format("{}; the {} rows before it are in {}", e.what(), on_disk, path.string()));
         }
     }
 
     double collisions = 0, seconds = progress.seconds();
-    for (const ReplicaSummary& s : summaries) collisions += static_cast<double>(s.collisions);
-    std::cout << fmt::format("roughgas run: wrote {} ({} rows, {} columns, {} replica{}): {:.4g} collisions in "
-                             "{:.3g} s ({:.3g} collisions/s; kernel {})\n",
-                             path.string(), csv.rows(), table.columns().size(), K, K > 1 ? "s" : "", collisions,
-                             seconds, seconds > 0 ? collisions / seconds : 0.0, summaries[0].kernel);
+    for (const ReplicaSummary& s : summaries)
+        collisions += static_cast<double>(s.collisions);
+    std::cout << fmt::format(
+        "roughgas run: wrote {} ({} rows, {} columns, {} replica{}): {:.4g} collisions in "
+        "{:.3g} s ({:.3g} collisions/s; kernel {})\n",
+        path.string(), csv.rows(), table.columns().size(), K, K > 1 ? "s" : "", collisions, seconds,
+        seconds > 0 ? collisions / seconds : 0.0, summaries[0].kernel);
     return exit_ok;
 }
 
@@ -198,7 +208,8 @@ Subcommand add_run_command(CLI::App& parent) {
     app->add_option("--out", o->out, "output directory (moments.csv)");
     add_set_option(*app, o->sets);
     app->add_option("--seed", o->seed, "random seed (overrides run.seed)");
-    app->add_option("--threads", o->threads, "threads for the replicas (default: all; results do not depend on it)")
+    app->add_option("--threads", o->threads,
+                    "threads for the replicas (default: all; results do not depend on it)")
         ->check(CLI::PositiveNumber);
     app->add_flag("--quiet", o->quiet, "no progress output");
     app->add_flag("--force", o->force, "overwrite moments.csv in an existing output directory");

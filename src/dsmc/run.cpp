@@ -22,23 +22,27 @@ namespace {
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
 bool has_brilliantov(const RunSpec& spec) {
-    return std::any_of(spec.pairs.begin(), spec.pairs.end(),
-                       [](const PairRestitution& p) { return std::holds_alternative<BrilliantovRestitution>(p); });
+    return std::any_of(spec.pairs.begin(), spec.pairs.end(), [](const PairRestitution& p) {
+        return std::holds_alternative<BrilliantovRestitution>(p);
+    });
 }
 
 const char* const group_quantities[] = {"T_tr", "T_rot", "theta", "a20", "a02", "a11", "A_cw", "coll_rate"};
 const char* const group_units[] = {"energy", "energy", "-", "-", "-", "-", "-", "1/time"};
 
 void require(bool ok, const std::string& what) {
-    if (!ok) throw std::invalid_argument("run_replica: " + what);
+    if (!ok)
+        throw std::invalid_argument("run_replica: " + what);
 }
 
 void validate(const RunSpec& spec) {
     const std::size_t S = spec.species.size();
     require(S > 0, "no species");
     for (const SpeciesSpec& s : spec.species) {
-        require(s.mass > 0 && s.radius > 0 && s.inertia > 0, "species " + s.name + ": mass, radius and inertia must be > 0");
-        require(s.temperature >= 0 && s.rotational_temperature >= 0, "species " + s.name + ": negative temperature");
+        require(s.mass > 0 && s.radius > 0 && s.inertia > 0,
+                "species " + s.name + ": mass, radius and inertia must be > 0");
+        require(s.temperature >= 0 && s.rotational_temperature >= 0,
+                "species " + s.name + ": negative temperature");
     }
     require(spec.pairs.size() == S * (S + 1) / 2, "one restitution model per species pair needed");
     require(spec.particles >= 2, "at least two particles needed");
@@ -66,16 +70,17 @@ struct Tally {
 };
 
 template <class Policy, bool Mixture>
-void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies, int replica,
-           const RowSink& sink, const ProgressSink& progress, ReplicaSummary* summary) {
+void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
+           int replica, const RowSink& sink, const ProgressSink& progress, ReplicaSummary* summary) {
     using Store = std::conditional_t<Policy::needs_rotation, RoughAoS, SmoothAoS>;
     const auto wall0 = std::chrono::steady_clock::now();
     const std::size_t N = static_cast<std::size_t>(spec.particles);
     const auto rep = static_cast<std::uint64_t>(replica);
     Store store(N);
     init_maxwellian(store, blocks, spec.seed, rep);
-    Engine<Store, Policy, Mixture> engine(blocks, std::move(policies), std::move(store),
-                                         EngineOptions{spec.density, spec.step, spec.seed, rep, spec.speed_classes});
+    Engine<Store, Policy, Mixture> engine(
+        blocks, std::move(policies), std::move(store),
+        EngineOptions{spec.density, spec.step, spec.seed, rep, spec.speed_classes});
 
     const std::size_t S = blocks.size();
     std::vector<SpeciesSlice> slices(S);
@@ -93,7 +98,8 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
     row.reserve(columns);
 
     const auto emit = [&] {
-        const Moments m = compute_moments(engine.store().velocities(), engine.store().angular_velocities(), slices);
+        const Moments m =
+            compute_moments(engine.store().velocities(), engine.store().angular_velocities(), slices);
         const double t = engine.time();
         const std::int64_t c = engine.collisions();
         const double dt = t - t_prev;
@@ -103,7 +109,8 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
         row.push_back(t);
         row.push_back(2.0 * static_cast<double>(c) / static_cast<double>(N));
         const auto group = [&](const GroupMoments& g) {
-            for (double x : {g.T_tr, g.T_rot, g.theta, g.a20, g.a02, g.a11, g.A_cw}) row.push_back(x);
+            for (double x : {g.T_tr, g.T_rot, g.theta, g.a20, g.a02, g.a11, g.A_cw})
+                row.push_back(x);
         };
         group(m.all);
         row.push_back(2.0 * static_cast<double>(c - c_prev) / static_cast<double>(N) * inv_dt);
@@ -125,8 +132,10 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
                 }
             }
         }
-        if (clamp_column) row.push_back(static_cast<double>(tally.clamped));
-        if (row.size() != columns) throw std::logic_error("run_replica: row and columns differ");
+        if (clamp_column)
+            row.push_back(static_cast<double>(tally.clamped));
+        if (row.size() != columns)
+            throw std::logic_error("run_replica: row and columns differ");
         sink(row);
         t_prev = t;
         c_prev = c;
@@ -136,7 +145,8 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
 
     emit();
     std::vector<double> outputs = spec.output_times;
-    if (outputs.empty()) outputs.push_back(spec.end);
+    if (outputs.empty())
+        outputs.push_back(spec.end);
     const double end = outputs.back();
     const std::int64_t chunk = std::max<std::int64_t>(std::int64_t{1} << 16, spec.particles / 2);
     for (double out : outputs) {
@@ -144,8 +154,9 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
         while (engine.collisions() < target) {
             const std::int64_t next = std::min(target, engine.collisions() + chunk);
             if (engine.run(next, std::numeric_limits<double>::infinity(), tally) == StopReason::stalled) {
-                throw std::runtime_error("run_replica: no collision can happen: every grain is at rest in the "
-                                         "centre-of-mass frame (translational temperature 0)");
+                throw std::runtime_error(
+                    "run_replica: no collision can happen: every grain is at rest in the "
+                    "centre-of-mass frame (translational temperature 0)");
             }
             if (progress) {
                 const auto c = static_cast<double>(engine.collisions());
@@ -175,10 +186,17 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
 } // namespace
 
 std::vector<Column> dsmc_columns(const RunSpec& spec) {
-    std::vector<Column> c = {{"t", "time"},       {"coll_per_particle", "-"}, {"T_tr", "energy"},
-                             {"T_rot", "energy"}, {"theta", "-"},             {"a20", "-"},
-                             {"a02", "-"},        {"a11", "-"},               {"A_cw", "-"},
-                             {"coll_rate", "1/time"}, {"E_diss_rate", "energy/(volume*time)"}};
+    std::vector<Column> c = {{"t", "time"},
+                             {"coll_per_particle", "-"},
+                             {"T_tr", "energy"},
+                             {"T_rot", "energy"},
+                             {"theta", "-"},
+                             {"a20", "-"},
+                             {"a02", "-"},
+                             {"a11", "-"},
+                             {"A_cw", "-"},
+                             {"coll_rate", "1/time"},
+                             {"E_diss_rate", "energy/(volume*time)"}};
     const std::size_t S = spec.species.size();
     if (S > 1) {
         for (const SpeciesSpec& s : spec.species)
@@ -193,7 +211,8 @@ std::vector<Column> dsmc_columns(const RunSpec& spec) {
             }
         }
     }
-    if (has_brilliantov(spec)) c.push_back({"beta_clamped", "-"});
+    if (has_brilliantov(spec))
+        c.push_back({"beta_clamped", "-"});
     return c;
 }
 
@@ -204,11 +223,13 @@ void run_replica(const RunSpec& spec, const RestitutionTables& tables, int repli
     const std::vector<SpeciesBlock> blocks = make_species_blocks(spec.species, spec.particles);
     const std::vector<PairType> types = make_pair_types(blocks);
     std::vector<AnyPolicy> policies;
-    for (std::size_t k = 0; k < types.size(); ++k) policies.push_back(make_policy(spec, tables, k, types[k]));
+    for (std::size_t k = 0; k < types.size(); ++k)
+        policies.push_back(make_policy(spec, tables, k, types[k]));
     // In a mixture with a rough pair, smooth pairs take their rough form (beta = -1), so that e.g.
     // constant smooth and constant rough pairs share one policy type and need no per-collision variant.
     if (std::any_of(policies.begin(), policies.end(), [](const AnyPolicy& p) { return needs_rotation(p); }))
-        for (AnyPolicy& p : policies) p = as_rough(p);
+        for (AnyPolicy& p : policies)
+            p = as_rough(p);
 
     if (blocks.size() == 1) { // one species, one model: a fully specialised loop
         std::visit(
@@ -226,20 +247,24 @@ void run_replica(const RunSpec& spec, const RestitutionTables& tables, int repli
             [&](const auto& p0) {
                 using P = std::decay_t<decltype(p0)>;
                 std::vector<P> v;
-                for (const AnyPolicy& p : policies) v.push_back(std::get<P>(p));
+                for (const AnyPolicy& p : policies)
+                    v.push_back(std::get<P>(p));
                 drive<P, true>(spec, blocks, std::move(v), replica, sink, progress, summary);
             },
             policies[0]);
         return;
     }
-    if (std::none_of(policies.begin(), policies.end(), [](const AnyPolicy& p) { return needs_rotation(p); })) {
+    if (std::none_of(policies.begin(), policies.end(),
+                     [](const AnyPolicy& p) { return needs_rotation(p); })) {
         std::vector<AnySmoothPolicy> v;
-        for (const AnyPolicy& p : policies) v.push_back(to_any_smooth(p));
+        for (const AnyPolicy& p : policies)
+            v.push_back(to_any_smooth(p));
         drive<AnySmoothPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary);
         return;
     }
     std::vector<AnyRoughPolicy> v;
-    for (const AnyPolicy& p : policies) v.push_back(to_any_rough(p));
+    for (const AnyPolicy& p : policies)
+        v.push_back(to_any_rough(p));
     drive<AnyRoughPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary);
 }
 

@@ -7,15 +7,20 @@
 
 namespace roughgas {
 
-std::vector<SpeciesBlock> make_species_blocks(const std::vector<SpeciesSpec>& species, std::int64_t particles) {
-    if (species.empty()) throw std::invalid_argument("no species");
-    if (particles < 0) throw std::invalid_argument("negative particle number");
+std::vector<SpeciesBlock> make_species_blocks(const std::vector<SpeciesSpec>& species,
+                                              std::int64_t particles) {
+    if (species.empty())
+        throw std::invalid_argument("no species");
+    if (particles < 0)
+        throw std::invalid_argument("negative particle number");
     double total = 0;
     for (const auto& s : species) {
-        if (!(s.fraction >= 0)) throw std::invalid_argument("species " + s.name + ": negative fraction");
+        if (!(s.fraction >= 0))
+            throw std::invalid_argument("species " + s.name + ": negative fraction");
         total += s.fraction;
     }
-    if (!(total > 0)) throw std::invalid_argument("species fractions sum to zero");
+    if (!(total > 0))
+        throw std::invalid_argument("species fractions sum to zero");
     const auto N = static_cast<std::size_t>(particles);
     std::vector<SpeciesBlock> out(species.size());
     std::vector<double> rest(species.size());
@@ -28,8 +33,10 @@ std::vector<SpeciesBlock> make_species_blocks(const std::vector<SpeciesSpec>& sp
     }
     std::vector<std::size_t> order(species.size());
     std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rest[a] > rest[b]; });
-    for (std::size_t k = 0; assigned < N; ++k, ++assigned) out[order[k % order.size()]].count += 1;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return rest[a] > rest[b]; });
+    for (std::size_t k = 0; assigned < N; ++k, ++assigned)
+        out[order[k % order.size()]].count += 1;
     std::size_t offset = 0;
     for (std::size_t s = 0; s < species.size(); ++s) {
         const SpeciesSpec& sp = species[s];
@@ -52,7 +59,8 @@ std::vector<PairType> make_pair_types(const std::vector<SpeciesBlock>& species) 
             p.a = a;
             p.b = b;
             p.pc = make_pair_constants(species[a].grain, species[b].grain);
-            const double Na = static_cast<double>(species[a].count), Nb = static_cast<double>(species[b].count);
+            const double Na = static_cast<double>(species[a].count),
+                         Nb = static_cast<double>(species[b].count);
             p.pairs = a == b ? 0.5 * Na * (Na - 1.0) : Na * Nb;
         }
     }

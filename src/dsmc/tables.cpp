@@ -13,15 +13,20 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }
 
 bool cached_pair(const RunSpec& spec, const PairRestitution& r) {
-    if (!spec.use_cache) return false;
-    if (const auto* v = std::get_if<ViscoelasticRestitution>(&r)) return !v->direct;
-    if (const auto* b = std::get_if<BrilliantovRestitution>(&r)) return !b->direct;
+    if (!spec.use_cache)
+        return false;
+    if (const auto* v = std::get_if<ViscoelasticRestitution>(&r))
+        return !v->direct;
+    if (const auto* b = std::get_if<BrilliantovRestitution>(&r))
+        return !b->direct;
     return false;
 }
 
 const ContactPair* contact_pair_of(const PairRestitution& r) {
-    if (const auto* v = std::get_if<ViscoelasticRestitution>(&r)) return &v->pair;
-    if (const auto* b = std::get_if<BrilliantovRestitution>(&r)) return &b->pair;
+    if (const auto* v = std::get_if<ViscoelasticRestitution>(&r))
+        return &v->pair;
+    if (const auto* b = std::get_if<BrilliantovRestitution>(&r))
+        return &b->pair;
     return nullptr;
 }
 
@@ -41,7 +46,8 @@ Table load_or_build(TableCache* cache, const std::string& key, const std::functi
         }
     }
     Table t = build();
-    if (cache) cache->put(key, t.serialize());
+    if (cache)
+        cache->put(key, t.serialize());
     *was_loaded = false;
     return t;
 }
@@ -61,7 +67,8 @@ std::shared_ptr<const RestitutionTables> RestitutionTables::build(const RunSpec&
     out->tangential_.resize(spec.pairs.size());
     for (std::size_t p = 0; p < spec.pairs.size(); ++p) {
         const PairRestitution& r = spec.pairs[p];
-        if (!cached_pair(spec, r)) continue;
+        if (!cached_pair(spec, r))
+            continue;
         const ContactPair& cp = *contact_pair_of(r);
         if (!out->normal(cp.model)) {
             const NormalTableOptions opt{};
@@ -69,7 +76,8 @@ std::shared_ptr<const RestitutionTables> RestitutionTables::build(const RunSpec&
             bool loaded = false;
             auto table = std::make_unique<NormalTable>(load_or_build<NormalTable>(
                 file, NormalTable::key_for(cp.model, opt), [&] { return NormalTable::build(cp.model, opt); },
-                [&](const std::vector<double>& d) { return NormalTable::deserialize(cp.model, opt, d); }, &loaded));
+                [&](const std::vector<double>& d) { return NormalTable::deserialize(cp.model, opt, d); },
+                &loaded));
             std::ostringstream what;
             what << "eps^N(w) table " << name(cp.model.form) << "/" << name(cp.model.end) << ", "
                  << table->intervals() << " intervals";
@@ -82,9 +90,11 @@ std::shared_ptr<const RestitutionTables> RestitutionTables::build(const RunSpec&
             bool loaded = false;
             auto table = std::make_unique<TangentialTable>(load_or_build<TangentialTable>(
                 file, TangentialTable::key_for(cp, opt), [&] { return TangentialTable::build(cp, opt); },
-                [&](const std::vector<double>& d) { return TangentialTable::deserialize(cp, opt, d); }, &loaded));
+                [&](const std::vector<double>& d) { return TangentialTable::deserialize(cp, opt, d); },
+                &loaded));
             std::ostringstream what;
-            what << "eps^T(g_N, g_T) table of pair " << p << ", g_N in [" << opt.g_min << ", " << opt.g_max << "]";
+            what << "eps^T(g_N, g_T) table of pair " << p << ", g_N in [" << opt.g_min << ", " << opt.g_max
+                 << "]";
             out->info_.push_back({what.str(), loaded, seconds_since(t0)});
             out->tangential_[p] = std::move(table);
         }
@@ -94,7 +104,8 @@ std::shared_ptr<const RestitutionTables> RestitutionTables::build(const RunSpec&
 
 const NormalTable* RestitutionTables::normal(const ContactModel& model) const {
     for (const auto& [m, t] : normal_)
-        if (m == model) return t.get();
+        if (m == model)
+            return t.get();
     return nullptr;
 }
 
@@ -102,33 +113,40 @@ const TangentialTable* RestitutionTables::tangential(std::size_t pair) const {
     return pair < tangential_.size() ? tangential_[pair].get() : nullptr;
 }
 
-AnyPolicy make_policy(const RunSpec& spec, const RestitutionTables& tables, std::size_t pair, const PairType& type) {
+AnyPolicy make_policy(const RunSpec& spec, const RestitutionTables& tables, std::size_t pair,
+                      const PairType& type) {
     const PairRestitution& r = spec.pairs.at(pair);
     const bool cached = cached_pair(spec, r);
     return std::visit(
         [&](const auto& m) -> AnyPolicy {
             using M = std::decay_t<decltype(m)>;
             if constexpr (std::is_same_v<M, ConstantRestitution>) {
-                if (m.beta == -1.0) return make_smooth_constant(m.alpha);
+                if (m.beta == -1.0)
+                    return make_smooth_constant(m.alpha);
                 return make_rough_constant(m.alpha, m.beta);
             } else if constexpr (std::is_same_v<M, CoulombRestitution>) {
-                if (m.beta0 == -1.0 || m.mu == 0.0) return make_smooth_constant(m.alpha); // beta = -1 always
+                if (m.beta0 == -1.0 || m.mu == 0.0)
+                    return make_smooth_constant(m.alpha); // beta = -1 always
                 return make_coulomb(m.alpha, m.beta0, m.mu, type.pc.kappa);
             } else if constexpr (std::is_same_v<M, ViscoelasticRestitution>) {
                 if (cached) {
                     const NormalTable* t = tables.normal(m.pair.model);
-                    if (!t) throw std::logic_error("make_policy: eps^N table not built");
-                    if (m.beta == -1.0) return make_viscoelastic_smooth(*t, m.pair);
+                    if (!t)
+                        throw std::logic_error("make_policy: eps^N table not built");
+                    if (m.beta == -1.0)
+                        return make_viscoelastic_smooth(*t, m.pair);
                     return make_viscoelastic(*t, m.pair, m.beta);
                 }
-                if (m.beta == -1.0) return make_viscoelastic_smooth_direct(m.pair, spec.contact_tolerance);
+                if (m.beta == -1.0)
+                    return make_viscoelastic_smooth_direct(m.pair, spec.contact_tolerance);
                 return make_viscoelastic_direct(m.pair, m.beta, spec.contact_tolerance);
             } else {
                 static_assert(std::is_same_v<M, BrilliantovRestitution>);
                 if (cached) {
                     const NormalTable* n = tables.normal(m.pair.model);
                     const TangentialTable* t = tables.tangential(pair);
-                    if (!n || !t) throw std::logic_error("make_policy: restitution tables not built");
+                    if (!n || !t)
+                        throw std::logic_error("make_policy: restitution tables not built");
                     return make_brilliantov(*n, *t, m.pair);
                 }
                 return make_brilliantov_direct(m.pair, spec.contact_tolerance);

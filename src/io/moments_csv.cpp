@@ -14,17 +14,20 @@ namespace {
 // "a02.ice" -> {"a02", ".ice"}; "T_tr.a/T_tr.b" stays whole.
 std::pair<std::string, std::string> split(const std::string& name) {
     const std::size_t dot = name.find('.');
-    if (dot == std::string::npos || name.find('/') != std::string::npos) return {name, ""};
+    if (dot == std::string::npos || name.find('/') != std::string::npos)
+        return {name, ""};
     return {name.substr(0, dot), name.substr(dot)};
 }
 
 } // namespace
 
 MomentsTable::MomentsTable(const RunSpec& spec) : solver_(dsmc_columns(spec)), replicas_(spec.replicas) {
-    if (replicas_ < 1) throw std::invalid_argument("MomentsTable: replicas must be >= 1");
+    if (replicas_ < 1)
+        throw std::invalid_argument("MomentsTable: replicas must be >= 1");
     for (const Column& c : solver_) {
         columns_.push_back(c);
-        if (replicas_ > 1) columns_.push_back({c.name + "_err", c.unit});
+        if (replicas_ > 1)
+            columns_.push_back({c.name + "_err", c.unit});
     }
     if (std::optional<HcsTheory> th = hcs_theory(spec)) {
         trajectory_.emplace(std::move(*th), initial_temperatures(spec));
@@ -43,21 +46,25 @@ MomentsTable::MomentsTable(const RunSpec& spec) : solver_(dsmc_columns(spec)), r
 
 std::vector<std::string> MomentsTable::names() const {
     std::vector<std::string> v;
-    for (const Column& c : columns_) v.push_back(c.name);
+    for (const Column& c : columns_)
+        v.push_back(c.name);
     return v;
 }
 
 std::vector<std::string> MomentsTable::units() const {
     std::vector<std::string> v;
-    for (const Column& c : columns_) v.push_back(c.unit);
+    for (const Column& c : columns_)
+        v.push_back(c.unit);
     return v;
 }
 
 void MomentsTable::check(std::span<const double> row) const {
     if (row.size() != solver_.size())
-        throw std::invalid_argument(fmt::format("moments row has {} values for {} columns", row.size(), solver_.size()));
+        throw std::invalid_argument(
+            fmt::format("moments row has {} values for {} columns", row.size(), solver_.size()));
     std::map<std::string, double> value;
-    for (std::size_t j = 0; j < row.size(); ++j) value[solver_[j].name] = row[j];
+    for (std::size_t j = 0; j < row.size(); ++j)
+        value[solver_[j].name] = row[j];
     const auto zero = [&](const std::string& name) {
         const auto it = value.find(name);
         return it != value.end() && it->second == 0;
@@ -65,38 +72,46 @@ void MomentsTable::check(std::span<const double> row) const {
     const double t = row[0];
     const bool first = value.count("coll_per_particle") && value["coll_per_particle"] == 0;
     for (std::size_t j = 0; j < row.size(); ++j) {
-        if (std::isfinite(row[j])) continue;
+        if (std::isfinite(row[j]))
+            continue;
         const std::string& name = solver_[j].name;
         const auto [base, suffix] = split(name);
         bool undefined = false;
-        if (base == "coll_rate" || base == "E_diss_rate") undefined = first;
-        if (base == "theta" || base == "a20" || base == "a11") undefined |= zero("T_tr" + suffix);
-        if (base == "a02" || base == "a11" || base == "A_cw") undefined |= zero("T_rot" + suffix);
+        if (base == "coll_rate" || base == "E_diss_rate")
+            undefined = first;
+        if (base == "theta" || base == "a20" || base == "a11")
+            undefined |= zero("T_tr" + suffix);
+        if (base == "a02" || base == "a11" || base == "A_cw")
+            undefined |= zero("T_rot" + suffix);
         if (const std::size_t slash = name.find('/'); slash != std::string::npos)
             undefined = zero(name.substr(slash + 1)); // T_tr.A/T_tr.B with T_tr.B = 0
         if (!undefined) {
-            throw NonFiniteValue(name, t, row[j],
-                                 fmt::format("column {} is {} at t = {:.17g} (coll_per_particle = {:.17g})", name,
-                                             row[j], t, value.count("coll_per_particle") ? value["coll_per_particle"] : 0.0));
+            throw NonFiniteValue(
+                name, t, row[j],
+                fmt::format("column {} is {} at t = {:.17g} (coll_per_particle = {:.17g})", name, row[j], t,
+                            value.count("coll_per_particle") ? value["coll_per_particle"] : 0.0));
         }
     }
 }
 
 std::vector<double> MomentsTable::combine(std::span<const std::span<const double>> rows) {
     if (rows.size() != static_cast<std::size_t>(replicas_))
-        throw std::invalid_argument(fmt::format("MomentsTable: {} replica rows for {} replicas", rows.size(), replicas_));
+        throw std::invalid_argument(
+            fmt::format("MomentsTable: {} replica rows for {} replicas", rows.size(), replicas_));
     const std::size_t n = solver_.size();
     std::vector<double> out;
     out.reserve(columns_.size());
     const double K = static_cast<double>(replicas_);
     for (std::size_t j = 0; j < n; ++j) {
         double sum = 0;
-        for (const auto& r : rows) sum += r[j];
+        for (const auto& r : rows)
+            sum += r[j];
         const double mean = sum / K;
         out.push_back(mean);
         if (replicas_ > 1) {
             double ss = 0;
-            for (const auto& r : rows) ss += (r[j] - mean) * (r[j] - mean);
+            for (const auto& r : rows)
+                ss += (r[j] - mean) * (r[j] - mean);
             out.push_back(std::sqrt(ss / (K * (K - 1))));
         }
     }
@@ -115,6 +130,115 @@ std::vector<double> MomentsTable::combine(std::span<const std::span<const double
                 out.push_back(T.T_rot[s] / T.T_tr[s]);
             }
         }
+    }
+    return out;
+}
+
+namespace {
+
+const std::map<std::string, std::string>& meanings() {
+    static const std::map<std::string, std::string> m = {
+        {"t", "time since the start (the case's time unit: the density n and the species set it)"},
+        {"coll_per_particle", "collisions per particle so far, 2 x collisions / N"},
+        {"T_tr", "translational temperature (1/3)<m c^2>, c = v - u (physics.md §5)"},
+        {"T_rot", "rotational temperature (1/3)<J omega^2>"},
+        {"theta", "T_rot/T_tr"},
+        {"a20", "(4/15)<c*^4> - 1, c* = c/sqrt(2 T_tr/m): 0 for a Maxwellian"},
+        {"a02", "(4/15)<w*^4> - 1, w* = omega/sqrt(2 T_rot/J)"},
+        {"a11", "(4/9)<c*^2 w*^2> - 1"},
+        {"A_cw", "<(c.omega)^2>/(<c^2><omega^2>) - 1/3: translation-rotation alignment"},
+        {"coll_rate", "collisions per particle per unit time since the previous row (NaN at t = 0)"},
+        {"E_diss_rate", "energy dissipated per unit volume and time since the previous row (NaN at t = 0)"},
+        {"beta_clamped",
+         "collisions so far whose brilliantov beta left [-1, 1] and was clamped (brilliantov runs)"},
+        {"T_tr_theory",
+         "T_tr of the Maxwellian approximation at t (constant alpha, beta; Haff's law when smooth)"},
+        {"T_rot_theory", "T_rot of the Maxwellian approximation at t (constant alpha, beta)"},
+        {"theta_theory", "T_rot_theory/T_tr_theory"},
+    };
+    return m;
+}
+
+} // namespace
+
+std::string moments_column_meaning(const std::string& name) {
+    if (name.size() > 4 && name.ends_with("_err")) {
+        const std::string x = name.substr(0, name.size() - 4);
+        return moments_column_meaning(x).empty()
+                   ? ""
+                   : "standard error of the mean of " + x + " over the replicas";
+    }
+    if (const std::size_t slash = name.find('/'); slash != std::string::npos) {
+        const auto [num, a] = split(name.substr(0, slash));
+        const auto [den, b] = split(name.substr(slash + 1));
+        if (num != den || a.empty() || b.empty() || !meanings().count(num))
+            return "";
+        return "ratio of " + num + " of species " + a.substr(1) + " to that of species " + b.substr(1);
+    }
+    const auto [base, suffix] = split(name);
+    const auto it = meanings().find(base);
+    if (it == meanings().end())
+        return "";
+    if (suffix.empty())
+        return it->second;
+    if (base == "coll_rate")
+        return "collisions of a " + suffix.substr(1) + " grain per " + suffix.substr(1) +
+               " grain and unit time since the previous row";
+    return "as " + base + ", over the grains of species " + suffix.substr(1);
+}
+
+std::string moments_columns_markdown() {
+    // Columns of representative runs: one species with constant restitution and replicas (every
+    // base column, X_err, theory), and a brilliantov mixture of species A and B (the per-species
+    // columns and ratios); per-species columns are shown once, for NAME.
+    RunSpec one;
+    one.species = {SpeciesSpec{}};
+    one.pairs = {ConstantRestitution{0.9, 0.0}};
+    one.replicas = 2;
+    RunSpec mix;
+    mix.species = {SpeciesSpec{}, SpeciesSpec{}};
+    mix.species[0].name = "A";
+    mix.species[1].name = "B";
+    mix.pairs = {BrilliantovRestitution{}, BrilliantovRestitution{}, BrilliantovRestitution{}};
+    RunSpec mix_constant = mix;
+    mix_constant.pairs = {ConstantRestitution{}, ConstantRestitution{}, ConstantRestitution{}};
+    std::vector<Column> rows;
+    const auto add = [&](const Column& c) {
+        for (const Column& r : rows)
+            if (r.name == c.name)
+                return;
+        rows.push_back(c);
+    };
+    const MomentsTable t1(one);
+    for (const Column& c : t1.columns())
+        if (!c.name.ends_with("_err") || c.name == "t_err")
+            add(c);
+    const MomentsTable t2(mix), t3(mix_constant);
+    for (const Column& c : t2.columns())
+        add(c);
+    for (const Column& c : t3.columns())
+        add(c);
+    std::string out = "`DIR/moments.csv` (one row per output time, the first at t = 0):\n\n"
+                      "| Column | Unit | Meaning |\n|--------|------|---------|\n";
+    for (Column c : rows) {
+        if (c.name == "t_err") {
+            out += "| `X_err` | as X | standard error of the mean of X over the replicas (replicas > 1): one "
+                   "after "
+                   "every column X of the solver, sqrt(sum (X_r - X)^2/(K (K - 1))) |\n";
+            continue;
+        }
+        std::string meaning = moments_column_meaning(c.name);
+        std::string name = c.name;
+        if (name.find('/') == std::string::npos) { // per-species: A stands for every NAME; B is left out
+            const auto [base, suffix] = split(name);
+            if (suffix == ".B")
+                continue;
+            if (suffix == ".A") {
+                name = base + ".NAME";
+                meaning = moments_column_meaning(base + ".NAME");
+            }
+        }
+        out += "| `" + name + "` | " + c.unit + " | " + meaning + " |\n";
     }
     return out;
 }

@@ -12,9 +12,11 @@ std::vector<double> output_times(double every, double end, OutputSpacing spacing
     std::vector<double> t;
     const double merge = end * (1.0 - 1e-9);
     for (long k = 0;; ++k) {
-        const double x = spacing == OutputSpacing::linear ? static_cast<double>(k + 1) * every
-                                                          : every * std::pow(10.0, static_cast<double>(k) / 10.0);
-        if (!(x < merge)) break;
+        const double x = spacing == OutputSpacing::linear
+                             ? static_cast<double>(k + 1) * every
+                             : every * std::pow(10.0, static_cast<double>(k) / 10.0);
+        if (!(x < merge))
+            break;
         t.push_back(x);
     }
     t.push_back(end);

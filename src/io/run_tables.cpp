@@ -7,19 +7,22 @@ namespace roughgas {
 namespace {
 
 class FileCache final : public TableCache {
-public:
+  public:
     explicit FileCache(TableCacheFile& f) : f_(f) {}
     std::optional<std::vector<double>> find(const std::string& key) override { return f_.find(key); }
-    void put(const std::string& key, std::vector<double> payload) override { f_.put(key, std::move(payload)); }
+    void put(const std::string& key, std::vector<double> payload) override {
+        f_.put(key, std::move(payload));
+    }
 
-private:
+  private:
     TableCacheFile& f_;
 };
 
 } // namespace
 
 std::shared_ptr<const RestitutionTables> build_run_tables(const RunSpec& spec) {
-    if (!spec.use_cache || spec.cache_file.empty()) return RestitutionTables::build(spec);
+    if (!spec.use_cache || spec.cache_file.empty())
+        return RestitutionTables::build(spec);
     TableCacheFile file(spec.cache_file);
     FileCache cache(file);
     auto built = RestitutionTables::build(spec, &cache);

@@ -49,7 +49,8 @@ Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesS
     std::size_t n_all = 0;
     for (const SpeciesSlice& sp : species) {
         Vec3 ps{};
-        for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i) ps += v[i];
+        for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i)
+            ps += v[i];
         p += sp.mass * ps;
         mass += sp.mass * static_cast<double>(sp.count);
         n_all += sp.count;
@@ -89,7 +90,8 @@ Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesS
     // (raw, unweighted), accumulated separately.
     Sums all;
     double cw2_all = 0;
-    const double sc_raw = 1.0 / std::sqrt(c2_all / N), sw_raw = w2_all > 0 ? 1.0 / std::sqrt(w2_all / N) : 0.0;
+    const double sc_raw = 1.0 / std::sqrt(c2_all / N),
+                 sw_raw = w2_all > 0 ? 1.0 / std::sqrt(w2_all / N) : 0.0;
     for (std::size_t s = 0; s < species.size(); ++s) {
         const SpeciesSlice& sp = species[s];
         GroupMoments& g = m.species[s];

@@ -19,10 +19,14 @@ namespace roughgas {
 namespace {
 
 void require(bool ok, const std::string& what) {
-    if (!ok) throw std::invalid_argument("HcsTheory: " + what);
+    if (!ok)
+        throw std::invalid_argument("HcsTheory: " + what);
 }
 
-double pos(double x) { return x > 0 ? x : 0.0; } // integration round-off never makes a T negative
+// Integration round-off never makes a temperature negative.
+double pos(double x) {
+    return x > 0 ? x : 0.0;
+}
 
 // Error control of the scaled state (ln(E/E0), T_k/E): absolute on ln E (= relative on E), relative
 // on every fraction T_k/E, so a temperature 40 decades below the others is still integrated to
@@ -37,7 +41,8 @@ class ScaleFreeErrorChecker {
     double error(Algebra&, const State& x_old, const Deriv& dxdt_old, Err& x_err, Time dt) const {
         double worst = std::abs(x_err[0]) / rel_tol_;
         for (std::size_t k = 1; k < x_err.size(); ++k) {
-            const double scale = rel_tol_ * (std::abs(x_old[k]) + std::abs(dt) * std::abs(dxdt_old[k])) + 1e-300;
+            const double scale =
+                rel_tol_ * (std::abs(x_old[k]) + std::abs(dt) * std::abs(dxdt_old[k])) + 1e-300;
             worst = std::max(worst, std::abs(x_err[k]) / scale);
         }
         return std::isfinite(worst) ? worst : 1e300;
@@ -75,10 +80,12 @@ PairExchange HcsTheory::exchange(std::size_t a, std::size_t b, std::span<const d
     const HcsSpecies& A = species_[a];
     const HcsSpecies& B = species_[b];
     const ConstantRestitution& r = pairs_[pair_index(a, b, species_.size())];
-    const PairConstants pc = make_pair_constants({A.mass, A.radius, A.inertia}, {B.mass, B.radius, B.inertia});
+    const PairConstants pc =
+        make_pair_constants({A.mass, A.radius, A.inertia}, {B.mass, B.radius, B.inertia});
     const double Ta = pos(T_tr[a]), Tb = pos(T_tr[b]);
-    const double s = Ta / A.mass + Tb / B.mass;                                     // variance of v_ij
-    const double s_w = pos(T_rot[a]) / (A.inertia * A.mass) + pos(T_rot[b]) / (B.inertia * B.mass); // of Omega
+    const double s = Ta / A.mass + Tb / B.mass; // variance of v_ij
+    const double s_w =
+        pos(T_rot[a]) / (A.inertia * A.mass) + pos(T_rot[b]) / (B.inertia * B.mass); // of Omega
     const double a_n = pc.m_eff * (1 + r.alpha);
     const double a_t = pc.kappa * pc.m_eff * (1 + r.beta);
     PairExchange x;
@@ -95,7 +102,8 @@ void HcsTheory::rates(std::span<const double> T_tr, std::span<const double> T_ro
     for (std::size_t a = 0; a < S; ++a) {
         double tr = 0, rot = 0;
         for (std::size_t b = 0; b < S; ++b) {
-            if (species_[b].fraction == 0) continue;
+            if (species_[b].fraction == 0)
+                continue;
             const PairExchange x = exchange(a, b, T_tr, T_rot);
             tr += x.frequency * x.dE_tr;
             rot += x.frequency * x.dE_rot;
@@ -128,7 +136,8 @@ double HcsTheory::mixture_T_rot(const HcsTemperatures& T) const {
 HcsTrajectory::HcsTrajectory(HcsTheory theory, HcsTemperatures initial, double rel_tol, bool closed_form)
     : theory_(std::move(theory)), initial_(std::move(initial)), rel_tol_(rel_tol) {
     const std::size_t S = theory_.species_count();
-    require(initial_.T_tr.size() == S && initial_.T_rot.size() == S, "one initial T_tr and T_rot per species");
+    require(initial_.T_tr.size() == S && initial_.T_rot.size() == S,
+            "one initial T_tr and T_rot per species");
     require(rel_tol_ > 0, "rel_tol must be > 0");
     for (std::size_t s = 0; s < S; ++s)
         require(initial_.T_tr[s] >= 0 && initial_.T_rot[s] >= 0 && std::isfinite(initial_.T_tr[s]) &&
@@ -136,7 +145,8 @@ HcsTrajectory::HcsTrajectory(HcsTheory theory, HcsTemperatures initial, double r
                 "initial temperatures must be finite and >= 0");
     // Haff's law only where nothing else moves: one species, beta = -1.
     haff_ = closed_form && S == 1 && theory_.pairs()[0].beta == -1;
-    for (std::size_t s = 0; s < S; ++s) E0_ += initial_.T_tr[s] + initial_.T_rot[s];
+    for (std::size_t s = 0; s < S; ++s)
+        E0_ += initial_.T_tr[s] + initial_.T_rot[s];
     y_.assign(1 + 2 * S, 0.0);
     if (E0_ > 0)
         for (std::size_t s = 0; s < S; ++s) {
@@ -149,7 +159,8 @@ HcsTemperatures HcsTrajectory::current() const {
     const std::size_t S = theory_.species_count();
     HcsTemperatures T{std::vector<double>(S), std::vector<double>(S)};
     double norm = 0;
-    for (std::size_t k = 1; k < y_.size(); ++k) norm += pos(y_[k]);
+    for (std::size_t k = 1; k < y_.size(); ++k)
+        norm += pos(y_[k]);
     const double E = norm > 0 ? E0_ * std::exp(y_[0]) / norm : 0.0;
     for (std::size_t s = 0; s < S; ++s) {
         T.T_tr[s] = E * pos(y_[1 + s]);
@@ -181,7 +192,8 @@ HcsTemperatures HcsTrajectory::at(double t) {
     const double scale = std::sqrt(E0_);
     const auto system = [&](const State& y, State& dydt, double) {
         double norm = 0;
-        for (std::size_t k = 1; k < y.size(); ++k) norm += pos(y[k]);
+        for (std::size_t k = 1; k < y.size(); ++k)
+            norm += pos(y[k]);
         const double inv = norm > 0 ? 1.0 / norm : 0.0;
         for (std::size_t s = 0; s < S; ++s) {
             p_tr[s] = pos(y[1 + s]) * inv;
@@ -189,7 +201,8 @@ HcsTemperatures HcsTrajectory::at(double t) {
         }
         theory_.rates(p_tr, p_rot, f_tr, f_rot);
         double sum = 0;
-        for (std::size_t s = 0; s < S; ++s) sum += f_tr[s] + f_rot[s];
+        for (std::size_t s = 0; s < S; ++s)
+            sum += f_tr[s] + f_rot[s];
         const double root_E = scale * std::exp(0.5 * y[0]);
         dydt[0] = root_E * sum;
         for (std::size_t s = 0; s < S; ++s) {
@@ -203,7 +216,8 @@ HcsTemperatures HcsTrajectory::at(double t) {
         State d(y_.size());
         system(y_, d, 0.0);
         double rate = std::abs(d[0]);
-        for (std::size_t k = 1; k < d.size(); ++k) rate = std::max(rate, std::abs(d[k]));
+        for (std::size_t k = 1; k < d.size(); ++k)
+            rate = std::max(rate, std::abs(d[k]));
         dt_ = rate > 0 ? 1e-3 / rate : t - t_;
     }
     const double dt = std::min(dt_, t - t_);
@@ -213,7 +227,8 @@ HcsTemperatures HcsTrajectory::at(double t) {
     double last_t = t_;
     double last_dt = dt;
     steps_ += odeint::integrate_adaptive(stepper, system, y_, t_, t, dt, [&](const State&, double tt) {
-        if (tt > last_t) last_dt = tt - last_t;
+        if (tt > last_t)
+            last_dt = tt - last_t;
         last_t = tt;
     });
     dt_ = std::max(dt_, last_dt);
@@ -227,12 +242,14 @@ std::optional<HcsTheory> hcs_theory(const RunSpec& spec) {
     std::vector<ConstantRestitution> pairs;
     for (const PairRestitution& p : spec.pairs) {
         const auto* c = std::get_if<ConstantRestitution>(&p);
-        if (!c) return std::nullopt;
+        if (!c)
+            return std::nullopt;
         pairs.push_back(*c);
     }
     std::vector<HcsSpecies> species;
     double total = 0;
-    for (const SpeciesSpec& s : spec.species) total += s.fraction;
+    for (const SpeciesSpec& s : spec.species)
+        total += s.fraction;
     for (const SpeciesSpec& s : spec.species)
         species.push_back({s.mass, s.radius, s.inertia, total > 0 ? s.fraction / total : s.fraction});
     return HcsTheory(std::move(species), std::move(pairs), spec.density);
@@ -249,8 +266,8 @@ HcsTemperatures initial_temperatures(const RunSpec& spec) {
 
 // --- equal spheres ---
 
-EqualSphereCoefficients equal_sphere_coefficients(double alpha, double beta, double q, double mass, double sigma,
-                                                  double density) {
+EqualSphereCoefficients equal_sphere_coefficients(double alpha, double beta, double q, double mass,
+                                                  double sigma, double density) {
     EqualSphereCoefficients c;
     c.eta = q * (1 + beta) / (2 * (1 + q));
     c.A = (1 - alpha * alpha) / 4 + c.eta * (1 - c.eta);
@@ -274,7 +291,8 @@ double haff_temperature(double t, double T0, double alpha, double mass, double s
 
 double theta_fixed_point(double alpha, double beta, double q) {
     const EqualSphereCoefficients c = equal_sphere_coefficients(alpha, beta, q, 1.0, 1.0, 1.0);
-    if (c.B == 0) return c.A > 0 ? std::numeric_limits<double>::infinity() : std::numeric_limits<double>::quiet_NaN();
+    if (c.B == 0)
+        return c.A > 0 ? std::numeric_limits<double>::infinity() : std::numeric_limits<double>::quiet_NaN();
     const double d = c.A - c.C;
     // The positive root of B theta^2 - d theta - B = 0, written without cancellation for d < 0.
     const double r = std::sqrt(d * d + 4 * c.B * c.B);

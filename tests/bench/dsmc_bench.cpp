@@ -35,8 +35,9 @@ void run_bench(benchmark::State& state, const SpeciesSpec& species, const Policy
     const auto blocks = make_species_blocks({species}, N);
     Store store(static_cast<std::size_t>(N));
     init_maxwellian(store, blocks, 1, 0);
-    Engine<Store, Policy, Mixture> e(blocks, {policy}, std::move(store),
-                                     EngineOptions{1.0 / std::pow(2 * species.radius, 3), 1.0, 1, 0, classes});
+    Engine<Store, Policy, Mixture> e(
+        blocks, {policy}, std::move(store),
+        EngineOptions{1.0 / std::pow(2 * species.radius, 3), 1.0, 1, 0, classes});
     e.run_collisions(N / 4); // half a collision per particle: steps, rings and pages warm
     // The gas cools; velocity-dependent restitution would drift out of its regime (and out of the
     // tangential table's range), so between timed chunks v and omega are scaled back to the initial
@@ -68,10 +69,13 @@ void run_bench(benchmark::State& state, const SpeciesSpec& species, const Policy
     state.counters["acceptance"] =
         static_cast<double>(e.collisions() - c0) / static_cast<double>(e.counters().candidates - k0);
     state.counters["bytes"] = static_cast<double>(Store::bytes_per_particle);
-    state.counters["promotions"] = static_cast<double>(e.counters().promotions) / static_cast<double>(e.collisions());
+    state.counters["promotions"] =
+        static_cast<double>(e.counters().promotions) / static_cast<double>(e.collisions());
 }
 
-SpeciesSpec unit_grain() { return SpeciesSpec{}; }
+SpeciesSpec unit_grain() {
+    return SpeciesSpec{};
+}
 
 // Ice (seed 000 Fig. 2c, the restitution benchmark's pair): R = 1 cm, A = 5.3e-5 s,
 // zeta_0 = 1e-3 R_eff, mu = sqrt(1e-3); T such that each velocity component has rms 0.1 m/s.
@@ -102,11 +106,18 @@ const TangentialTable& tangential_table() {
     return t;
 }
 
-void BM_Case_RoughConstant(benchmark::State& s) { run_bench<RoughAoS>(s, unit_grain(), make_rough_constant(0.9, 0.5)); }
-void BM_Case_SmoothConstant(benchmark::State& s) { run_bench<SmoothAoS>(s, unit_grain(), make_smooth_constant(0.9)); }
-void BM_Case_SmoothElastic(benchmark::State& s) { run_bench<SmoothAoS>(s, unit_grain(), make_smooth_constant(1.0)); }
+void BM_Case_RoughConstant(benchmark::State& s) {
+    run_bench<RoughAoS>(s, unit_grain(), make_rough_constant(0.9, 0.5));
+}
+void BM_Case_SmoothConstant(benchmark::State& s) {
+    run_bench<SmoothAoS>(s, unit_grain(), make_smooth_constant(0.9));
+}
+void BM_Case_SmoothElastic(benchmark::State& s) {
+    run_bench<SmoothAoS>(s, unit_grain(), make_smooth_constant(1.0));
+}
 void BM_Case_Coulomb(benchmark::State& s) {
-    run_bench<RoughAoS>(s, unit_grain(), make_coulomb(0.9, 0.5, 0.2, make_pair_constants({1, 0.5, 0.4}, {1, 0.5, 0.4}).kappa));
+    run_bench<RoughAoS>(s, unit_grain(),
+                        make_coulomb(0.9, 0.5, 0.2, make_pair_constants({1, 0.5, 0.4}, {1, 0.5, 0.4}).kappa));
 }
 void BM_Case_ViscoelasticSmooth(benchmark::State& s) {
     run_bench<SmoothAoS>(s, ice_grain(), make_viscoelastic_smooth(normal_table(), ice_pair()));
@@ -126,9 +137,15 @@ void BM_Classes_SmoothConstant(benchmark::State& s) {
     run_bench<SmoothAoS>(s, unit_grain(), make_smooth_constant(0.9), static_cast<int>(s.range(1)));
 }
 
-void BM_Layout_RoughPacked48(benchmark::State& s) { run_bench<RoughPacked>(s, unit_grain(), make_rough_constant(0.9, 0.5)); }
-void BM_Layout_RoughSoA(benchmark::State& s) { run_bench<RoughSoA>(s, unit_grain(), make_rough_constant(0.9, 0.5)); }
-void BM_Layout_SmoothPacked24(benchmark::State& s) { run_bench<SmoothPacked>(s, unit_grain(), make_smooth_constant(0.9)); }
+void BM_Layout_RoughPacked48(benchmark::State& s) {
+    run_bench<RoughPacked>(s, unit_grain(), make_rough_constant(0.9, 0.5));
+}
+void BM_Layout_RoughSoA(benchmark::State& s) {
+    run_bench<RoughSoA>(s, unit_grain(), make_rough_constant(0.9, 0.5));
+}
+void BM_Layout_SmoothPacked24(benchmark::State& s) {
+    run_bench<SmoothPacked>(s, unit_grain(), make_smooth_constant(0.9));
+}
 
 void BM_Skip_RoughKernelAtBetaMinusOne(benchmark::State& s) {
     run_bench<RoughAoS>(s, unit_grain(), make_rough_constant(0.9, -1.0));
@@ -148,8 +165,14 @@ BENCHMARK(BM_Case_Coulomb) ROUGHGAS_SIZES;
 BENCHMARK(BM_Case_ViscoelasticSmooth) ROUGHGAS_SIZES;
 BENCHMARK(BM_Case_Viscoelastic) ROUGHGAS_SIZES;
 BENCHMARK(BM_Case_Brilliantov) ROUGHGAS_SIZES;
-BENCHMARK(BM_Classes_RoughConstant)->ArgsProduct({{100000, 1000000}, {1, 2, 3, 4}})->Unit(benchmark::kMillisecond)->MinTime(2.0);
-BENCHMARK(BM_Classes_SmoothConstant)->ArgsProduct({{100000, 1000000}, {1, 2, 3, 4}})->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_Classes_RoughConstant)
+    ->ArgsProduct({{100000, 1000000}, {1, 2, 3, 4}})
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
+BENCHMARK(BM_Classes_SmoothConstant)
+    ->ArgsProduct({{100000, 1000000}, {1, 2, 3, 4}})
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
 BENCHMARK(BM_Layout_RoughPacked48) ROUGHGAS_SIZES;
 BENCHMARK(BM_Layout_RoughSoA) ROUGHGAS_SIZES;
 BENCHMARK(BM_Layout_SmoothPacked24) ROUGHGAS_SIZES;

@@ -32,19 +32,19 @@ Engine<Store, Policy, Mixture> make_engine(const std::vector<SpeciesSpec>& speci
     return Engine<Store, Policy, Mixture>(blocks, std::move(policies), std::move(store), opt);
 }
 
-template <class E>
-Moments moments_of(const E& e) {
+template <class E> Moments moments_of(const E& e) {
     std::vector<SpeciesSlice> s;
-    for (const auto& b : e.species()) s.push_back({b.offset, b.count, b.grain.mass, b.moment_of_inertia()});
+    for (const auto& b : e.species())
+        s.push_back({b.offset, b.count, b.grain.mass, b.moment_of_inertia()});
     return compute_moments(e.store().velocities(), e.store().angular_velocities(), s);
 }
 
-template <class E>
-double total_energy(const E& e) {
+template <class E> double total_energy(const E& e) {
     double E_ = 0;
     for (const auto& b : e.species())
         for (std::size_t i = b.offset; i < b.offset + b.count; ++i)
-            E_ += 0.5 * b.grain.mass * norm2(e.store().v(i)) + 0.5 * b.moment_of_inertia() * norm2(e.store().w(i));
+            E_ += 0.5 * b.grain.mass * norm2(e.store().v(i)) +
+                  0.5 * b.moment_of_inertia() * norm2(e.store().w(i));
     return E_;
 }
 
@@ -53,10 +53,12 @@ struct MeanErr {
 };
 MeanErr mean_err(const std::vector<double>& x) {
     double m = 0;
-    for (double v : x) m += v;
+    for (double v : x)
+        m += v;
     m /= static_cast<double>(x.size());
     double s2 = 0;
-    for (double v : x) s2 += (v - m) * (v - m);
+    for (double v : x)
+        s2 += (v - m) * (v - m);
     return {m, std::sqrt(s2 / static_cast<double>(x.size() - 1) / static_cast<double>(x.size()))};
 }
 
@@ -89,10 +91,12 @@ TEST(Engine, ElasticCollisionRateIsExact) {
     // With one speed class (the plain vmax_a + vmax_b bound) and with four (the default).
     for (int classes : {1, 4}) {
         std::vector<double> r;
-        for (std::uint64_t k = 0; k < 16; ++k) r.push_back(elastic_rate_ratio(10000, 300000, 1.0, k, classes));
+        for (std::uint64_t k = 0; k < 16; ++k)
+            r.push_back(elastic_rate_ratio(10000, 300000, 1.0, k, classes));
         const MeanErr m = mean_err(r);
-        std::printf("  %d speed classes: nu/nu_exact = %.5f +- %.5f (16 replicas, N = 1e4, 3e5 collisions each)\n",
-                    classes, m.mean, m.err);
+        std::printf(
+            "  %d speed classes: nu/nu_exact = %.5f +- %.5f (16 replicas, N = 1e4, 3e5 collisions each)\n",
+            classes, m.mean, m.err);
         EXPECT_NEAR(m.mean, 1.0, 3 * m.err) << classes << " classes";
         EXPECT_LT(m.err, 1.2e-3) << "the test must be able to see a 0.25% bias";
     }
@@ -123,11 +127,13 @@ TEST(Engine, ColdStartCountsEveryCollision) {
     // with 4 speed classes and with 1. 6 replicas each, N = 1e4: means within 4 combined standard
     // errors. A bound that is not raised (acceptance clipped at 1) undercounts here by a large factor.
     const auto count = [](double step, int classes, std::uint64_t replica) {
-        auto e = make_engine<RoughAoS>({unit_grain(1e-4, 1.0)}, 10000, std::vector{make_rough_constant(1.0, 1.0)},
-                                       EngineOptions{1.0, step, 8, replica, classes});
+        auto e =
+            make_engine<RoughAoS>({unit_grain(1e-4, 1.0)}, 10000, std::vector{make_rough_constant(1.0, 1.0)},
+                                  EngineOptions{1.0, step, 8, replica, classes});
         e.run(std::numeric_limits<std::int64_t>::max(), 10.0, IgnoreCollisions{});
         return std::array{static_cast<double>(e.collisions()), static_cast<double>(e.counters().bound_raises),
-                          static_cast<double>(e.counters().promotions), static_cast<double>(e.counters().retargets)};
+                          static_cast<double>(e.counters().promotions),
+                          static_cast<double>(e.counters().retargets)};
     };
     std::vector<double> fine, coarse, plain;
     std::array<double, 4> sum{};
@@ -135,11 +141,13 @@ TEST(Engine, ColdStartCountsEveryCollision) {
         fine.push_back(count(1e-2, 4, 300 + k)[0]);
         const auto c = count(100.0, 4, 400 + k);
         coarse.push_back(c[0]);
-        for (int q = 0; q < 4; ++q) sum[q] += c[q] / 6;
+        for (int q = 0; q < 4; ++q)
+            sum[q] += c[q] / 6;
         plain.push_back(count(100.0, 1, 500 + k)[0]);
     }
     const MeanErr a = mean_err(fine), b = mean_err(coarse), p = mean_err(plain);
-    std::printf("  collisions to t = 10: step 0.01: %.0f +- %.0f, one step: %.0f +- %.0f, one step and class: %.0f +- %.0f\n"
+    std::printf("  collisions to t = 10: step 0.01: %.0f +- %.0f, one step: %.0f +- %.0f, one step and "
+                "class: %.0f +- %.0f\n"
                 "  (one step: %.0f bound raises, %.0f promotions, %.0f re-targeted candidates per run)\n",
                 a.mean, a.err, b.mean, b.err, p.mean, p.err, sum[1], sum[2], sum[3]);
     EXPECT_GT(b.mean, 20000) << "the avalanche should take place";
@@ -166,7 +174,8 @@ TEST(Engine, ImpactSpeedFollowsTheExactLaw) {
     });
     const double expect = n / 20.0;
     double chi2 = 0;
-    for (long b : bins) chi2 += (b - expect) * (b - expect) / expect;
+    for (long b : bins)
+        chi2 += (b - expect) * (b - expect) / expect;
     std::printf("  chi-square of the g_n law: %.2f (19 dof, threshold 43.82)\n", chi2);
     EXPECT_LT(chi2, 43.82);
 }
@@ -199,7 +208,8 @@ std::vector<std::array<std::uint64_t, 3>> omega_bits(const auto& store) {
     std::vector<std::array<std::uint64_t, 3>> out;
     for (std::size_t i = 0; i < store.size(); ++i) {
         const Vec3& w = store.w(i);
-        out.push_back({std::bit_cast<std::uint64_t>(w.x), std::bit_cast<std::uint64_t>(w.y), std::bit_cast<std::uint64_t>(w.z)});
+        out.push_back({std::bit_cast<std::uint64_t>(w.x), std::bit_cast<std::uint64_t>(w.y),
+                       std::bit_cast<std::uint64_t>(w.z)});
     }
     std::sort(out.begin(), out.end());
     return out;
@@ -258,10 +268,12 @@ TEST(Engine, CumulantsDoNotDependOnTheStepLength) {
         return r;
     };
     const Result fine = run(0.02, 13), coarse = run(2.0, 14);
-    for (auto [name, a, b] : {std::tuple{"a20", fine.a20, coarse.a20}, std::tuple{"theta", fine.theta, coarse.theta},
-                              std::tuple{"t", fine.t, coarse.t}}) {
+    for (auto [name, a, b] :
+         {std::tuple{"a20", fine.a20, coarse.a20}, std::tuple{"theta", fine.theta, coarse.theta},
+          std::tuple{"t", fine.t, coarse.t}}) {
         const MeanErr x = mean_err(a), y = mean_err(b);
-        std::printf("  %-5s step 0.02: %.5f +- %.5f   step 2: %.5f +- %.5f\n", name, x.mean, x.err, y.mean, y.err);
+        std::printf("  %-5s step 0.02: %.5f +- %.5f   step 2: %.5f +- %.5f\n", name, x.mean, x.err, y.mean,
+                    y.err);
         EXPECT_NEAR(x.mean, y.mean, 4 * std::hypot(x.err, y.err)) << name;
     }
 }
@@ -275,7 +287,8 @@ TEST(Engine, SmoothSpheresFollowHaffsLaw) {
     // times; the sampling error of T is sqrt(2/(3N)) = 0.37% for N = 5e4. Tolerance 2% for
     // t > 5 t0 (T fell by 40 and more) up to 60 collisions per particle (T/T0 ~ 1e-3).
     const std::int64_t N = 50000;
-    auto e = make_engine<SmoothAoS>({unit_grain()}, N, std::vector{make_smooth_constant(0.8)}, EngineOptions{1.0, 1.0, 15, 0});
+    auto e = make_engine<SmoothAoS>({unit_grain()}, N, std::vector{make_smooth_constant(0.8)},
+                                    EngineOptions{1.0, 1.0, 15, 0});
     const double T0 = moments_of(e).all.T_tr;
     const double nu0 = 4.0 * std::sqrt(std::numbers::pi * T0) * (N - 1.0) / N;
     const double t0 = 2.0 / ((1 - 0.64) * nu0 / 3.0);
@@ -288,7 +301,8 @@ TEST(Engine, SmoothSpheresFollowHaffsLaw) {
             ++checked;
             EXPECT_NEAR(haff, 1.0, 0.02) << "t/t0 = " << t / t0 << " T/T0 = " << T / T0;
         }
-        if (k % 10 == 0) std::printf("  t/t0 = %6.2f  T/T0 = %.3e  T (1 + t/t0)^2/T0 = %.4f\n", t / t0, T / T0, haff);
+        if (k % 10 == 0)
+            std::printf("  t/t0 = %6.2f  T/T0 = %.3e  T (1 + t/t0)^2/T0 = %.4f\n", t / t0, T / T0, haff);
     }
     EXPECT_GT(checked, 10);
 }
@@ -314,8 +328,9 @@ TEST(Engine, MixtureCollisionRatesAreExact) {
         e.run(150000, inf, [&](const CollisionRecord&, std::size_t type) { counts[type] += 1; });
         for (const PairType& p : e.pair_types()) {
             const double Ta = m0.species[p.a].T_tr, Tb = m0.species[p.b].T_tr; // elastic: conserved in total
-            const double mean_g = std::sqrt(8.0 / std::numbers::pi *
-                                            (Ta / e.species()[p.a].grain.mass + Tb / e.species()[p.b].grain.mass));
+            const double mean_g =
+                std::sqrt(8.0 / std::numbers::pi *
+                          (Ta / e.species()[p.a].grain.mass + Tb / e.species()[p.b].grain.mass));
             const double rate = p.pairs * p.pc.cross_section * mean_g / e.volume();
             ratio[pair_index(p.a, p.b, 2)].push_back(counts[pair_index(p.a, p.b, 2)] / e.time() / rate);
         }
@@ -336,7 +351,8 @@ TEST(Engine, StepIsTheRequestedFractionOfTheMeanFreeTime) {
     s.radius = 0.01;
     s.temperature = s.rotational_temperature = 4e-5;
     const double n = 1e4;
-    auto e = make_engine<RoughAoS>({s}, 10000, std::vector{make_rough_constant(1.0, 1.0)}, EngineOptions{n, 0.5, 18, 0});
+    auto e = make_engine<RoughAoS>({s}, 10000, std::vector{make_rough_constant(1.0, 1.0)},
+                                   EngineOptions{n, 0.5, 18, 0});
     const double T = moments_of(e).all.T_tr;
     e.run_collisions(1);
     const double nu = 4.0 * n * 0.02 * 0.02 * std::sqrt(std::numbers::pi * T / 4e-3);
@@ -348,8 +364,10 @@ TEST(Engine, StepIsTheRequestedFractionOfTheMeanFreeTime) {
 TEST(Engine, PausingDoesNotChangeTheTrajectory) {
     // run() stops after a collision count or before a time and resumes with the pending candidate:
     // a run paused 50 times ends bitwise where an unpaused one does.
-    auto a = make_engine<RoughAoS>({unit_grain()}, 5000, std::vector{make_rough_constant(0.9, 0.3)}, EngineOptions{1.0, 0.7, 17, 0});
-    auto b = make_engine<RoughAoS>({unit_grain()}, 5000, std::vector{make_rough_constant(0.9, 0.3)}, EngineOptions{1.0, 0.7, 17, 0});
+    auto a = make_engine<RoughAoS>({unit_grain()}, 5000, std::vector{make_rough_constant(0.9, 0.3)},
+                                   EngineOptions{1.0, 0.7, 17, 0});
+    auto b = make_engine<RoughAoS>({unit_grain()}, 5000, std::vector{make_rough_constant(0.9, 0.3)},
+                                   EngineOptions{1.0, 0.7, 17, 0});
     a.run_collisions(50000);
     for (int k = 1; k <= 25; ++k) {
         b.run_collisions(k * 2000 - 7);

@@ -19,15 +19,17 @@ using Rows = std::vector<std::vector<double>>;
 Rows run(const RunSpec& spec, int replica, ReplicaSummary* summary = nullptr) {
     const auto tables = RestitutionTables::build(spec);
     Rows rows;
-    run_replica(spec, *tables, replica, [&](std::span<const double> r) { rows.emplace_back(r.begin(), r.end()); }, {},
-                summary);
+    run_replica(
+        spec, *tables, replica, [&](std::span<const double> r) { rows.emplace_back(r.begin(), r.end()); }, {},
+        summary);
     return rows;
 }
 
 std::size_t column(const RunSpec& spec, const std::string& name) {
     const auto cols = dsmc_columns(spec);
     for (std::size_t k = 0; k < cols.size(); ++k)
-        if (cols[k].name == name) return k;
+        if (cols[k].name == name)
+            return k;
     ADD_FAILURE() << "no column " << name;
     return 0;
 }
@@ -62,20 +64,24 @@ RunSpec binary_mixture() {
 }
 
 bool bitwise_equal(const Rows& a, const Rows& b) {
-    if (a.size() != b.size()) return false;
+    if (a.size() != b.size())
+        return false;
     for (std::size_t k = 0; k < a.size(); ++k)
-        if (a[k].size() != b[k].size() || std::memcmp(a[k].data(), b[k].data(), a[k].size() * sizeof(double)) != 0)
+        if (a[k].size() != b[k].size() ||
+            std::memcmp(a[k].data(), b[k].data(), a[k].size() * sizeof(double)) != 0)
             return false;
     return true;
 }
 
 TEST(Columns, FollowTheInterface) {
     const RunSpec s = one_species(ConstantRestitution{0.9, 0.5});
-    const std::vector<std::string> expected = {"t",   "coll_per_particle", "T_tr", "T_rot",     "theta",      "a20",
-                                               "a02", "a11",               "A_cw", "coll_rate", "E_diss_rate"};
+    const std::vector<std::string> expected = {
+        "t",    "coll_per_particle", "T_tr",       "T_rot", "theta", "a20", "a02", "a11",
+        "A_cw", "coll_rate",         "E_diss_rate"};
     const auto cols = dsmc_columns(s);
     ASSERT_EQ(cols.size(), expected.size());
-    for (std::size_t k = 0; k < cols.size(); ++k) EXPECT_EQ(cols[k].name, expected[k]);
+    for (std::size_t k = 0; k < cols.size(); ++k)
+        EXPECT_EQ(cols[k].name, expected[k]);
     EXPECT_EQ(cols[0].unit, "time");
     EXPECT_EQ(cols[2].unit, "energy");
 
@@ -93,7 +99,8 @@ TEST(Run, RowsAtZeroAndEveryOutputTime) {
     ReplicaSummary summary;
     const Rows rows = run(s, 0, &summary);
     ASSERT_EQ(rows.size(), 5u);
-    const std::size_t cpp = column(s, "coll_per_particle"), rate = column(s, "coll_rate"), T = column(s, "T_tr");
+    const std::size_t cpp = column(s, "coll_per_particle"), rate = column(s, "coll_rate"),
+                      T = column(s, "T_tr");
     EXPECT_EQ(rows[0][0], 0.0);
     EXPECT_TRUE(std::isnan(rows[0][rate])) << "no interval before t = 0";
     const double outputs[] = {0, 1, 2, 3, 4};
@@ -119,7 +126,8 @@ TEST(Run, EnergyDissipationRateMatchesTheTemperatureDrop) {
     const Rows rows = run(s, 0);
     const std::size_t T = column(s, "T_tr"), Tr = column(s, "T_rot"), D = column(s, "E_diss_rate");
     for (std::size_t k = 1; k < rows.size(); ++k) {
-        const double lost = 1.5 * s.density * ((rows[k - 1][T] + rows[k - 1][Tr]) - (rows[k][T] + rows[k][Tr]));
+        const double lost =
+            1.5 * s.density * ((rows[k - 1][T] + rows[k - 1][Tr]) - (rows[k][T] + rows[k][Tr]));
         EXPECT_NEAR(rows[k][D] * (rows[k][0] - rows[k - 1][0]), lost, 1e-10 * lost);
     }
 }
@@ -142,10 +150,12 @@ TEST(Run, OutputScheduleDoesNotChangeTheTrajectory) {
     RunSpec s = one_species(ConstantRestitution{0.9, 0.5});
     const Rows a = run(s, 0);
     s.output_times.clear();
-    for (int k = 1; k <= 40; ++k) s.output_times.push_back(0.1 * k);
+    for (int k = 1; k <= 40; ++k)
+        s.output_times.push_back(0.1 * k);
     s.output_times.back() = 4;
     const Rows b = run(s, 0);
-    for (std::size_t c = 0; c < 9; ++c) EXPECT_EQ(a.back()[c], b.back()[c]) << dsmc_columns(s)[c].name;
+    for (std::size_t c = 0; c < 9; ++c)
+        EXPECT_EQ(a.back()[c], b.back()[c]) << dsmc_columns(s)[c].name;
 }
 
 TEST(Run, StepLengthChangesStreamsNotStatistics) {
@@ -166,20 +176,22 @@ TEST(Run, CoolsThroughFortyDecadesWithoutUnderflow) {
     // decades; the cumulants stay finite and O(1) (computed on reduced speeds), theta stays finite
     // (for smooth grains T_rot is constant, so theta grows like 1/T_tr), and the centre-of-mass drift
     // stays at round-off.
-    for (const PairRestitution& model : {PairRestitution{ConstantRestitution{0.5, -1.0}},
-                                          PairRestitution{ConstantRestitution{0.5, 0.0}}}) {
+    for (const PairRestitution& model :
+         {PairRestitution{ConstantRestitution{0.5, -1.0}}, PairRestitution{ConstantRestitution{0.5, 0.0}}}) {
         RunSpec s = one_species(model, 4000, 450);
         s.output_times = {50, 100, 150, 200, 250, 300, 350, 400, 450};
         ReplicaSummary summary;
         const Rows rows = run(s, 0, &summary);
         const double T0 = rows.front()[column(s, "T_tr")], T1 = rows.back()[column(s, "T_tr")];
-        std::printf("  %s: T_tr/T0 = %.3e after %g collisions per particle, t = %.3e, theta = %.4f, a20 = %.4f\n",
-                    summary.kernel.c_str(), T1 / T0, rows.back()[1], rows.back()[0], rows.back()[column(s, "theta")],
-                    rows.back()[column(s, "a20")]);
+        std::printf(
+            "  %s: T_tr/T0 = %.3e after %g collisions per particle, t = %.3e, theta = %.4f, a20 = %.4f\n",
+            summary.kernel.c_str(), T1 / T0, rows.back()[1], rows.back()[0], rows.back()[column(s, "theta")],
+            rows.back()[column(s, "a20")]);
         EXPECT_LT(T1 / T0, 1e-40);
         EXPECT_GT(T1, 0);
         for (std::size_t k = 1; k < rows.size(); ++k)
-            for (std::size_t c = 0; c < rows[k].size(); ++c) EXPECT_TRUE(std::isfinite(rows[k][c])) << dsmc_columns(s)[c].name;
+            for (std::size_t c = 0; c < rows[k].size(); ++c)
+                EXPECT_TRUE(std::isfinite(rows[k][c])) << dsmc_columns(s)[c].name;
         EXPECT_LT(std::abs(rows.back()[column(s, "a20")]), 1.0);
         // Round-off drift of the centre of mass, relative to the falling thermal speed: removed
         // whenever it exceeds 1e-10, so it never gets beyond one step's growth above that.
@@ -193,9 +205,11 @@ TEST(Run, MixtureReportsSpeciesAndRatios) {
     ReplicaSummary summary;
     const Rows rows = run(s, 0, &summary);
     EXPECT_EQ(summary.kernel, "RoughAoS, constant, 2 species"); // one policy type: no variant in the loop
-    const std::size_t Ta = column(s, "T_tr.light"), Tb = column(s, "T_tr.heavy"), r = column(s, "T_tr.light/T_tr.heavy");
+    const std::size_t Ta = column(s, "T_tr.light"), Tb = column(s, "T_tr.heavy"),
+                      r = column(s, "T_tr.light/T_tr.heavy");
     EXPECT_NEAR(rows[0][Tb] / rows[0][Ta], 2.0, 0.2); // initial temperatures 1 and 2 (N = 1000 and 3000)
-    for (const auto& row : rows) EXPECT_DOUBLE_EQ(row[r], row[Ta] / row[Tb]);
+    for (const auto& row : rows)
+        EXPECT_DOUBLE_EQ(row[r], row[Ta] / row[Tb]);
     // The mixture T_tr is the number-weighted mean of the species'.
     EXPECT_NEAR(rows.back()[column(s, "T_tr")], 0.25 * rows.back()[Ta] + 0.75 * rows.back()[Tb], 1e-12);
     // Collision frequencies: every collision counts for two grains.
@@ -206,12 +220,14 @@ TEST(Run, MixtureReportsSpeciesAndRatios) {
 
 TEST(Run, MixtureOfModelsRunsThePerPairKernel) {
     RunSpec s = binary_mixture();
-    s.pairs = {ConstantRestitution{0.9, 0.0}, CoulombRestitution{0.8, 0.4, 0.2}, ConstantRestitution{0.7, -1.0}};
+    s.pairs = {ConstantRestitution{0.9, 0.0}, CoulombRestitution{0.8, 0.4, 0.2},
+               ConstantRestitution{0.7, -1.0}};
     ReplicaSummary summary;
     const Rows rows = run(s, 0, &summary);
     EXPECT_EQ(summary.kernel, "RoughAoS, per-pair policies, 2 species");
     EXPECT_LT(rows.back()[2], rows.front()[2]);
-    s.pairs = {ConstantRestitution{0.9, -1.0}, CoulombRestitution{0.8, 0.4, 0.0}, ConstantRestitution{0.7, -1.0}};
+    s.pairs = {ConstantRestitution{0.9, -1.0}, CoulombRestitution{0.8, 0.4, 0.0},
+               ConstantRestitution{0.7, -1.0}};
     run(s, 0, &summary);
     EXPECT_EQ(summary.kernel, "SmoothAoS, constant (smooth), 2 species"); // mu = 0: beta = -1 always
 }
@@ -237,8 +253,10 @@ RunSpec ice(bool brilliantov, bool direct) {
     sp.radius = R;
     sp.temperature = sp.rotational_temperature = m * 0.01; // rms speed per component 0.1 m/s
     s.species = {sp};
-    if (brilliantov) s.pairs = {BrilliantovRestitution{pair, direct}};
-    else s.pairs = {ViscoelasticRestitution{pair, 0.2, direct}};
+    if (brilliantov)
+        s.pairs = {BrilliantovRestitution{pair, direct}};
+    else
+        s.pairs = {ViscoelasticRestitution{pair, 0.2, direct}};
     s.particles = 1000;
     s.density = 1e5; // per m^3
     s.end = 2;
@@ -254,10 +272,12 @@ TEST(Run, ViscoelasticAndBrilliantovFromTablesAgreeWithDirect) {
     // so T_tr and T_rot agree far inside their sampling error sqrt(2/3000) = 2.6%: tolerance 0.5%.
     for (bool brilliantov : {false, true}) {
         ReplicaSummary st, sd;
-        const Rows cached = run(ice(brilliantov, false), 0, &st), direct = run(ice(brilliantov, true), 0, &sd);
+        const Rows cached = run(ice(brilliantov, false), 0, &st),
+                   direct = run(ice(brilliantov, true), 0, &sd);
         std::printf("  %s: %s vs %s: T_tr %.6e vs %.6e, T_rot %.6e vs %.6e (%.2f s vs %.2f s)\n",
-                    brilliantov ? "brilliantov" : "viscoelastic", st.kernel.c_str(), sd.kernel.c_str(), cached.back()[2],
-                    direct.back()[2], cached.back()[3], direct.back()[3], st.seconds, sd.seconds);
+                    brilliantov ? "brilliantov" : "viscoelastic", st.kernel.c_str(), sd.kernel.c_str(),
+                    cached.back()[2], direct.back()[2], cached.back()[3], direct.back()[3], st.seconds,
+                    sd.seconds);
         EXPECT_NEAR(cached.back()[2] / direct.back()[2], 1.0, 5e-3);
         EXPECT_NEAR(cached.back()[3] / direct.back()[3], 1.0, 5e-3);
         EXPECT_LT(cached.back()[2], cached.front()[2]);

@@ -18,7 +18,8 @@ namespace {
 double chi_square(const std::vector<long>& counts, double samples) {
     const double e = samples / static_cast<double>(counts.size());
     double x = 0;
-    for (long c : counts) x += (c - e) * (c - e) / e;
+    for (long c : counts)
+        x += (c - e) * (c - e) / e;
     return x;
 }
 // Upper 1e-3 quantiles of chi-square: 19 dof 43.82, 9 dof 27.88, 99 dof 148.23.
@@ -66,7 +67,8 @@ TEST(UniformIndex, IsUniformForSmallAndAwkwardRanges) {
     }
     // A range near 2^64: the rejection branch keeps every value below it reachable and in range.
     const std::uint64_t big = (std::uint64_t{1} << 63) + 12345;
-    for (int k = 0; k < 1000; ++k) ASSERT_LT(uniform_index(rng, big), big);
+    for (int k = 0; k < 1000; ++k)
+        ASSERT_LT(uniform_index(rng, big), big);
 }
 
 TEST(Streams, AreKeyedAndReproducible) {
@@ -76,16 +78,19 @@ TEST(Streams, AreKeyedAndReproducible) {
         e = make_stream(1, Stream::collisions, 5, 0, 1), f = make_stream(2, Stream::collisions, 5, 0, 0),
         g = make_stream(1, Stream::initial_velocity, 5, 0, 0);
     const auto first = make_stream(1, Stream::collisions, 5, 0, 0)();
-    for (Rng* r : {&c, &d, &e, &f, &g}) EXPECT_NE((*r)(), first);
+    for (Rng* r : {&c, &d, &e, &f, &g})
+        EXPECT_NE((*r)(), first);
     // State streaming: a restored engine continues identically (checkpoints).
     Rng x = make_stream(9, Stream::test, 0, 0);
-    for (int k = 0; k < 10; ++k) x();
+    for (int k = 0; k < 10; ++k)
+        x();
     std::stringstream ss;
     ss << x;
     Rng y;
     ss >> y;
     EXPECT_EQ(x, y);
-    for (int k = 0; k < 10; ++k) EXPECT_EQ(x(), y());
+    for (int k = 0; k < 10; ++k)
+        EXPECT_EQ(x(), y());
     // Uniform doubles stay in their intervals at the extremes.
     EXPECT_GT(uniform01_open0(x), 0.0);
     EXPECT_LT(uniform01(x), 1.0);

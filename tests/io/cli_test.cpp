@@ -141,8 +141,9 @@ TEST(Cli, EveryShippedCasePassesCheck) {
         const test::CommandResult r = run_roughgas("check '" + f + "'", dir);
         EXPECT_EQ(r.status, 0) << f << "\n" << r.err;
         const CaseConfig c = load_case(f);
-        if (c.material) // cases with a contact model also tabulate it (roughgas restitution)
+        if (c.material) { // cases with a contact model also tabulate it (roughgas restitution)
             EXPECT_EQ(run_roughgas("check '" + f + "' --for restitution", dir).status, 0) << f;
+        }
         EXPECT_EQ(parse_case(emit_case(c), "emitted.toml"), c) << f; // the echo in CSV headers reads back
     }
     EXPECT_GE(n, 4);

@@ -3,6 +3,7 @@
 #include "io_test_support.hpp"
 
 #include "roughgas/io/case_schema.hpp"
+#include "roughgas/io/moments_csv.hpp"
 #include "roughgas/io/restitution_csv.hpp"
 
 #include <gtest/gtest.h>
@@ -44,6 +45,15 @@ TEST(Readme, DocumentsRestitutionColumns) {
     EXPECT_NE(output.find(restitution_columns_markdown()), std::string::npos)
         << "regenerate with `roughgas keys --output`:\n"
         << restitution_columns_markdown();
+}
+
+// Enforced once README.md has the section (the DSMC's README text is merged separately).
+TEST(Readme, DocumentsMomentsColumns) {
+    const std::string columns = section(readme(), "moments.csv columns");
+    if (columns.empty()) GTEST_SKIP() << "README.md has no section '## moments.csv columns' yet";
+    EXPECT_NE(columns.find(moments_columns_markdown()), std::string::npos)
+        << "regenerate with `roughgas keys --output`:\n"
+        << moments_columns_markdown();
 }
 
 TEST(Schema, EveryKeyIsWellFormed) {

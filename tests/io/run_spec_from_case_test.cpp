@@ -15,7 +15,8 @@ TEST(OutputTimes, LinearAndLogarithmic) {
     EXPECT_DOUBLE_EQ(t[0], 0.1);
     EXPECT_NEAR(t[10], 1.0, 1e-15);
     EXPECT_EQ(t.back(), 10.0);
-    for (std::size_t k = 1; k < t.size(); ++k) EXPECT_GT(t[k], t[k - 1]);
+    for (std::size_t k = 1; k < t.size(); ++k)
+        EXPECT_GT(t[k], t[k - 1]);
     EXPECT_THROW(output_times(0.0, 1.0, OutputSpacing::linear), std::invalid_argument);
 }
 

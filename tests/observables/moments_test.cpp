@@ -13,7 +13,9 @@
 namespace roughgas {
 namespace {
 
-Vec3Column col(const std::vector<Vec3>& v) { return column_of(v.data(), 0); }
+Vec3Column col(const std::vector<Vec3>& v) {
+    return column_of(v.data(), 0);
+}
 
 // Velocities +-s e_x, +-s e_y, +-s e_z (all speeds equal) shifted by u; omega parallel to c.
 void shell(std::vector<Vec3>& v, std::vector<Vec3>& w, double s, double ws, Vec3 u) {
@@ -57,7 +59,8 @@ TEST(Moments, ScaleFreeAtFortyDecadesBelow) {
         ws[i] = 1e-30 * w[i];
     }
     const SpeciesSlice sp{0, v.size(), 1.0, 0.1};
-    const Moments a = compute_moments(col(v), col(w), {&sp, 1}), b = compute_moments(col(vs), col(ws), {&sp, 1});
+    const Moments a = compute_moments(col(v), col(w), {&sp, 1}),
+                  b = compute_moments(col(vs), col(ws), {&sp, 1});
     EXPECT_NEAR(b.all.T_tr / a.all.T_tr, 1e-50, 1e-62);
     EXPECT_NEAR(b.all.T_rot / a.all.T_rot, 1e-60, 1e-72);
     EXPECT_NEAR(b.all.a20, a.all.a20, 1e-12);

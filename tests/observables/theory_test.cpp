@@ -13,7 +13,8 @@
 namespace roughgas {
 namespace {
 
-HcsTheory one_species(double alpha, double beta, double q = 0.4, double m = 1.0, double R = 0.5, double n = 1.0) {
+HcsTheory one_species(double alpha, double beta, double q = 0.4, double m = 1.0, double R = 0.5,
+                      double n = 1.0) {
     return HcsTheory({{m, R, q, 1.0}}, {{alpha, beta}}, n);
 }
 
@@ -35,8 +36,10 @@ TEST(HcsTheory, EqualSpheresReduceToTheLiteratureCoefficients) {
                 std::vector<double> dT(1), dTr(1), vT{T}, vTr{Tr};
                 th.rates(vT, vTr, dT, dTr);
                 const double s = std::sqrt(T);
-                EXPECT_NEAR(dT[0], c.G * (-c.A * T * s + c.B * s * Tr), 1e-13 * c.G) << alpha << " " << beta << " " << q;
-                EXPECT_NEAR(dTr[0], c.G * (c.B * T * s - c.C * s * Tr), 1e-13 * c.G) << alpha << " " << beta << " " << q;
+                EXPECT_NEAR(dT[0], c.G * (-c.A * T * s + c.B * s * Tr), 1e-13 * c.G)
+                    << alpha << " " << beta << " " << q;
+                EXPECT_NEAR(dTr[0], c.G * (c.B * T * s - c.C * s * Tr), 1e-13 * c.G)
+                    << alpha << " " << beta << " " << q;
             }
     // The printed values for uniform spheres, alpha = beta = 1: eta = 2/7 and A = B = C = 10/49.
     const EqualSphereCoefficients c = equal_sphere_coefficients(1.0, 1.0, 0.4, 1.0, 1.0, 1.0);
@@ -51,7 +54,8 @@ TEST(HcsTheory, CollisionFrequencyOfEqualSpheres) {
     // 4 n sigma^2 sqrt(pi T/m) (physics.md §4, issue 3).
     const HcsTheory th = one_species(0.9, 0.0, 0.4, 2.0, 0.5, 3.0);
     std::vector<double> T{1.3}, Tr{0.2};
-    EXPECT_NEAR(th.exchange(0, 0, T, Tr).frequency, 4 * 3.0 * 1.0 * std::sqrt(std::numbers::pi * 1.3 / 2.0), 1e-13);
+    EXPECT_NEAR(th.exchange(0, 0, T, Tr).frequency, 4 * 3.0 * 1.0 * std::sqrt(std::numbers::pi * 1.3 / 2.0),
+                1e-13);
 }
 
 TEST(HcsTheory, HaffClosedFormEqualsTheIntegratedOde) {
@@ -59,7 +63,8 @@ TEST(HcsTheory, HaffClosedFormEqualsTheIntegratedOde) {
     HcsTrajectory ode(one_species(alpha, -1.0), {{T0}, {1.0}}, 1e-10, /*closed_form=*/false);
     const double t0 = haff_time(T0, alpha, m, 2 * R, n);
     // t0 = 2/(G A sqrt(T0)) with A = (1 - alpha^2)/4
-    EXPECT_NEAR(t0, 2.0 / ((16.0 / 3.0) * std::sqrt(std::numbers::pi) * 0.25 * (1 - alpha * alpha)), 1e-12 * t0);
+    EXPECT_NEAR(t0, 2.0 / ((16.0 / 3.0) * std::sqrt(std::numbers::pi) * 0.25 * (1 - alpha * alpha)),
+                1e-12 * t0);
     // Through 40 decades of T (t up to 1e20 t0): the scale-free integration keeps its accuracy.
     for (double x : {1e-3, 0.1, 1.0, 10.0, 1e3, 1e6, 1e10, 1e20}) {
         const HcsTemperatures T = ode.at(x * t0);
@@ -116,10 +121,12 @@ TEST(HcsTheory, PairEnergyChangeIsTheAveragedEnergyLoss) {
     const ConstantRestitution r = th.pairs()[pair_index(0, 1, 2)];
     const PairExchange ab = th.exchange(0, 1, T, Tr), ba = th.exchange(1, 0, T, Tr);
     const double m_eff = sp[0].mass * sp[1].mass / (sp[0].mass + sp[1].mass);
-    const double kappa = 1 / (1 + m_eff * (1 / (sp[0].inertia * sp[0].mass) + 1 / (sp[1].inertia * sp[1].mass)));
+    const double kappa =
+        1 / (1 + m_eff * (1 / (sp[0].inertia * sp[0].mass) + 1 / (sp[1].inertia * sp[1].mass)));
     const double s = T[0] / sp[0].mass + T[1] / sp[1].mass;
     const double s_w = Tr[0] / (sp[0].inertia * sp[0].mass) + Tr[1] / (sp[1].inertia * sp[1].mass);
-    const double loss = m_eff * (r.alpha * r.alpha - 1) * s + kappa * m_eff * (r.beta * r.beta - 1) * (s + s_w);
+    const double loss =
+        m_eff * (r.alpha * r.alpha - 1) * s + kappa * m_eff * (r.beta * r.beta - 1) * (s + s_w);
     EXPECT_NEAR(ab.dE_tr + ab.dE_rot + ba.dE_tr + ba.dE_rot, loss, 1e-13 * std::abs(loss));
     // Collisions a-b seen from either side: n_a nu_ab = n_b nu_ba.
     EXPECT_NEAR(sp[0].fraction * ab.frequency, sp[1].fraction * ba.frequency, 1e-13 * ab.frequency);
@@ -134,10 +141,14 @@ TEST(HcsTheory, CollisionAveragesMatchMonteCarloOfTheCollisionRule) {
     const std::vector<double> T{1.3, 0.4}, Tr{0.7, 2.2};
     std::mt19937_64 rng(12345);
     std::normal_distribution<double> normal;
-    struct V { double x, y, z; };
+    struct V {
+        double x, y, z;
+    };
     const auto add = [](V a, V b, double f) { return V{a.x + f * b.x, a.y + f * b.y, a.z + f * b.z}; };
     const auto dot = [](V a, V b) { return a.x * b.x + a.y * b.y + a.z * b.z; };
-    const auto cross = [](V a, V b) { return V{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; };
+    const auto cross = [](V a, V b) {
+        return V{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+    };
     const auto gauss = [&](double sd) { return V{sd * normal(rng), sd * normal(rng), sd * normal(rng)}; };
     for (std::size_t a = 0; a < 2; ++a)
         for (std::size_t b = 0; b < 2; ++b) {
@@ -146,7 +157,8 @@ TEST(HcsTheory, CollisionAveragesMatchMonteCarloOfTheCollisionRule) {
             const ConstantRestitution r = th.pairs()[pair_index(a, b, 2)];
             const double m_eff = A.mass * B.mass / (A.mass + B.mass);
             const double kappa = 1 / (1 + m_eff * (1 / (A.inertia * A.mass) + 1 / (B.inertia * B.mass)));
-            const double Ja = A.inertia * A.mass * A.radius * A.radius, Jb = B.inertia * B.mass * B.radius * B.radius;
+            const double Ja = A.inertia * A.mass * A.radius * A.radius,
+                         Jb = B.inertia * B.mass * B.radius * B.radius;
             const int samples = 400000;
             double sw = 0, sw2 = 0, s_tr = 0, s_tr2 = 0, s_rot = 0, s_rot2 = 0, c_tr = 0, c_rot = 0;
             for (int k = 0; k < samples; ++k) {
@@ -156,12 +168,16 @@ TEST(HcsTheory, CollisionAveragesMatchMonteCarloOfTheCollisionRule) {
                 n = add(V{0, 0, 0}, n, 1 / std::sqrt(dot(n, n)));
                 const V vij = add(vi, vj, -1);
                 double u = dot(vij, n);
-                if (u > 0) { n = add(V{0, 0, 0}, n, -1); u = -u; } // the approaching hemisphere
+                if (u > 0) {
+                    n = add(V{0, 0, 0}, n, -1);
+                    u = -u;
+                } // the approaching hemisphere
                 const double weight = -u;
                 const V g = add(add(vij, cross(wi, n), -A.radius), cross(wj, n), -B.radius);
                 const V gn = add(V{0, 0, 0}, n, dot(g, n));
                 const V gt = add(g, gn, -1);
-                const V P = add(add(V{0, 0, 0}, gn, -m_eff * (1 + r.alpha)), gt, -kappa * m_eff * (1 + r.beta));
+                const V P =
+                    add(add(V{0, 0, 0}, gn, -m_eff * (1 + r.alpha)), gt, -kappa * m_eff * (1 + r.beta));
                 const V vi2 = add(vi, P, 1 / A.mass);
                 const V wi2 = add(wi, cross(n, P), -1 / (A.inertia * A.mass * A.radius));
                 const double dtr = 0.5 * A.mass * (dot(vi2, vi2) - dot(vi, vi));
@@ -180,15 +196,18 @@ TEST(HcsTheory, CollisionAveragesMatchMonteCarloOfTheCollisionRule) {
             // frequency n_b sigma^2 2 pi <weight> (n uniform on the approaching hemisphere, area 2 pi)
             const double sigma = A.radius + B.radius;
             const double mean_w = sw / N, se_w = std::sqrt((sw2 / N - mean_w * mean_w) / N);
-            const double f_mc = th.density() * B.fraction * sigma * sigma * 2 * std::numbers::pi; // hemisphere
+            const double f_mc =
+                th.density() * B.fraction * sigma * sigma * 2 * std::numbers::pi; // hemisphere
             EXPECT_NEAR(x.frequency, f_mc * mean_w, 4 * f_mc * se_w) << a << b;
             // Ratio estimators <w dE>/<w> with their delta-method standard errors.
             const double scale = std::abs(x.dE_tr) + std::abs(x.dE_rot);
-            const auto check = [&](double sum, double sum2, double cross_sum, double theory, const char* what) {
+            const auto check = [&](double sum, double sum2, double cross_sum, double theory,
+                                   const char* what) {
                 const double R = sum / sw;
                 const double var = (sum2 - 2 * R * cross_sum + R * R * sw2) / (mean_w * mean_w * N * N);
                 const double se = std::sqrt(var);
-                EXPECT_NEAR(theory, R, 4 * se) << what << " a=" << a << " b=" << b << " (N = " << samples << ")";
+                EXPECT_NEAR(theory, R, 4 * se)
+                    << what << " a=" << a << " b=" << b << " (N = " << samples << ")";
                 EXPECT_LT(se, 0.02 * scale) << what; // the test resolves 2% of the energy exchanged
             };
             check(s_tr, s_tr2, c_tr, x.dE_tr, "dE_tr");
@@ -199,7 +218,8 @@ TEST(HcsTheory, CollisionAveragesMatchMonteCarloOfTheCollisionRule) {
 TEST(HcsTheory, TwoEqualSpeciesAreOneSpecies) {
     const double alpha = 0.8, beta = 0.2;
     HcsTrajectory one(one_species(alpha, beta, 0.4, 1.5, 0.4, 2.0), {{1.0}, {0.3}});
-    HcsTheory two_th({{1.5, 0.4, 0.4, 0.25}, {1.5, 0.4, 0.4, 0.75}}, {{alpha, beta}, {alpha, beta}, {alpha, beta}}, 2.0);
+    HcsTheory two_th({{1.5, 0.4, 0.4, 0.25}, {1.5, 0.4, 0.4, 0.75}},
+                     {{alpha, beta}, {alpha, beta}, {alpha, beta}}, 2.0);
     HcsTrajectory two(two_th, {{1.0, 1.0}, {0.3, 0.3}});
     for (double t : {0.3, 3.0, 30.0}) {
         const HcsTemperatures a = one.at(t), b = two.at(t);

@@ -7,15 +7,15 @@
 namespace roughgas {
 
 struct GrainProperties {
-    double mass = 1;    // m
-    double radius = 0.5; // R
+    double mass = 1;      // m
+    double radius = 0.5;  // R
     double inertia = 0.4; // q = J/(m R^2), physics.md §1
 };
 
 struct PairConstants {
-    double m_eff = 0;   // m_a m_b/(m_a + m_b)
-    double kappa = 0;   // 1/kappa = 1 + m_eff (1/(q_a m_a) + 1/(q_b m_b)), physics.md §1
-    double sigma = 0;   // R_a + R_b: the collision diameter
+    double m_eff = 0;         // m_a m_b/(m_a + m_b)
+    double kappa = 0;         // 1/kappa = 1 + m_eff (1/(q_a m_a) + 1/(q_b m_b)), physics.md §1
+    double sigma = 0;         // R_a + R_b: the collision diameter
     double cross_section = 0; // pi sigma^2
     double R_i = 0, R_j = 0;  // radii of the first (i, species a) and second (j, species b) grain
     double m_eff_over_m_i = 0, m_eff_over_m_j = 0; // P/m = (m_eff/m) p, p = P/m_eff

@@ -18,7 +18,8 @@ struct CollisionRecord {
     double g_t = 0;    // |g^T| before the collision; NaN when the rule never reads omega (smooth)
     double alpha = 1;  // the coefficients applied: (g^N)' = -alpha g^N, (g^T)' = -beta g^T
     double beta = -1;
-    bool beta_clamped = false; // the model's beta was outside [-1, 1] and was clamped (restitution_policy.hpp)
+    bool beta_clamped =
+        false; // the model's beta was outside [-1, 1] and was clamped (restitution_policy.hpp)
 };
 
 } // namespace roughgas

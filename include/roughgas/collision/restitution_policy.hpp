@@ -28,8 +28,10 @@ namespace roughgas {
 // therefore never applies |beta| > 1: it uses the nearest admissible value and counts the event,
 // so a run reports how often the model left its physical range (column beta_clamped).
 inline Coefficients clamp_beta(double alpha, double beta) {
-    if (beta > 1.0) return {alpha, 1.0, true};
-    if (beta < -1.0) return {alpha, -1.0, true};
+    if (beta > 1.0)
+        return {alpha, 1.0, true};
+    if (beta < -1.0)
+        return {alpha, -1.0, true};
     return {alpha, beta, false};
 }
 
@@ -84,7 +86,8 @@ struct CoulombTangential {
     double mu_over_kappa = 0; // mu/kappa of the pair
     Coefficients operator()(double g_n, double g_t, double alpha) const {
         const double limit = mu_over_kappa * (1.0 + alpha) * g_n; // (1 + beta) g_T may not exceed this
-        if ((1.0 + beta0) * g_t <= limit) return {alpha, beta0, false};
+        if ((1.0 + beta0) * g_t <= limit)
+            return {alpha, beta0, false};
         return {alpha, -1.0 + limit / g_t, false};
     }
 };
@@ -95,15 +98,15 @@ struct TableTangential {
     static constexpr bool needs_g_t = true;
     const TangentialTable* table = nullptr;
     Coefficients operator()(double g_n, double g_t, double alpha) const {
-        if (!(g_n > 0)) return {alpha, -1.0, false}; // no normal force, no friction (probability 0)
+        if (!(g_n > 0))
+            return {alpha, -1.0, false}; // no normal force, no friction (probability 0)
         return clamp_beta(alpha, -table->eps_t(g_n, g_t));
     }
 };
 
 // ---- policies ----
 
-template <class Normal, class Tangential>
-struct Restitution {
+template <class Normal, class Tangential> struct Restitution {
     static constexpr bool needs_rotation = Tangential::needs_rotation;
     static constexpr bool needs_g_t = Tangential::needs_g_t;
     Normal normal{};
@@ -145,15 +148,20 @@ struct BrilliantovDirect {
     ContactPair pair{};
     Tolerance tol{};
     Coefficients operator()(double g_n, double g_t) const {
-        if (!(g_n > 0)) return {1.0, -1.0, false};
+        if (!(g_n > 0))
+            return {1.0, -1.0, false};
         const ContactResult r = integrate_contact(pair, g_n, g_t, tol);
         return clamp_beta(r.eps_n, r.beta);
     }
 };
 
 // Smart constructors (the pair's constants in, the policy out).
-inline SmoothConstant make_smooth_constant(double alpha) { return {{{alpha}, {}}}; }
-inline RoughConstant make_rough_constant(double alpha, double beta) { return {{{alpha}, {beta}}}; }
+inline SmoothConstant make_smooth_constant(double alpha) {
+    return {{{alpha}, {}}};
+}
+inline RoughConstant make_rough_constant(double alpha, double beta) {
+    return {{{alpha}, {beta}}};
+}
 inline Coulomb make_coulomb(double alpha, double beta0, double mu, double kappa) {
     return {{{alpha}, {beta0, mu / kappa}}};
 }
@@ -172,6 +180,8 @@ inline ViscoelasticDirect make_viscoelastic_direct(const ContactPair& p, double 
 inline Brilliantov make_brilliantov(const NormalTable& n, const TangentialTable& t, const ContactPair& p) {
     return {{{&n, p.w_per_speed()}, {&t}}};
 }
-inline BrilliantovDirect make_brilliantov_direct(const ContactPair& p, Tolerance tol) { return {p, tol}; }
+inline BrilliantovDirect make_brilliantov_direct(const ContactPair& p, Tolerance tol) {
+    return {p, tol};
+}
 
 } // namespace roughgas

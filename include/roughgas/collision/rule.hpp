@@ -45,7 +45,9 @@ inline CollisionRecord collide(const PairConstants& pc, const Policy& policy, Ve
     CollisionRecord r;
     // Translational: sum of (m/2)(|v'|^2 - |v|^2) = P.g_c + |P|^2/(2 m_eff); the total is physics.md §3.
     r.dE_tr = pc.m_eff * (dot(p, g_c) + 0.5 * norm2(p));
-    const double dE = 0.5 * pc.m_eff * ((c.alpha * c.alpha - 1.0) * g_n * g_n + pc.kappa * (c.beta * c.beta - 1.0) * g_t * g_t);
+    const double dE =
+        0.5 * pc.m_eff *
+        ((c.alpha * c.alpha - 1.0) * g_n * g_n + pc.kappa * (c.beta * c.beta - 1.0) * g_t * g_t);
     r.dE_rot = dE - r.dE_tr;
     r.g_n = g_n;
     r.g_t = g_t;
@@ -58,7 +60,8 @@ inline CollisionRecord collide(const PairConstants& pc, const Policy& policy, Ve
 // Smooth grains (beta = -1): only the normal impulse P = -m_eff (1 + alpha) g^N acts, omega is neither
 // read nor written, and g_t is not evaluated (NaN in the record).
 template <class Policy>
-inline CollisionRecord collide(const PairConstants& pc, const Policy& policy, Vec3& v_i, Vec3& v_j, const Vec3& n) {
+inline CollisionRecord collide(const PairConstants& pc, const Policy& policy, Vec3& v_i, Vec3& v_j,
+                               const Vec3& n) {
     static_assert(!Policy::needs_rotation, "rough policies need omega");
     const Vec3 g_c = v_i - v_j;
     const double g_dot_n = dot(g_c, n);

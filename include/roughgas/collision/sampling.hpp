@@ -32,7 +32,8 @@ inline Vec3 sample_impact_normal(Rng& rng, const Vec3& g_c, double g_abs) {
     for (;;) {
         const Vec3 d = g_c + g_abs * uniform_direction(rng); // |g_c| (g^ + u)
         const double d2 = norm2(d);
-        if (d2 > 0) return (-1.0 / sqrt_nonneg(d2)) * d;
+        if (d2 > 0)
+            return (-1.0 / sqrt_nonneg(d2)) * d;
     }
 }
 

@@ -34,7 +34,7 @@ constexpr std::uint64_t splitmix64(std::uint64_t& x) {
 }
 
 class Xoshiro256pp {
-public:
+  public:
     using result_type = std::uint64_t;
     static constexpr result_type min() { return 0; }
     static constexpr result_type max() { return ~result_type{0}; }
@@ -42,7 +42,8 @@ public:
     Xoshiro256pp() : Xoshiro256pp(0) {}
     // The four state words are successive splitmix64 outputs from `seed` (never all zero).
     explicit Xoshiro256pp(std::uint64_t seed) {
-        for (auto& w : s_) w = splitmix64(seed);
+        for (auto& w : s_)
+            w = splitmix64(seed);
     }
 
     result_type operator()() {
@@ -65,7 +66,7 @@ public:
         return is >> r.s_[0] >> r.s_[1] >> r.s_[2] >> r.s_[3];
     }
 
-private:
+  private:
     std::uint64_t s_[4];
 };
 
@@ -90,18 +91,26 @@ constexpr std::uint64_t stream_hash(const StreamKey& k) {
     return h;
 }
 
-inline Rng make_stream(const StreamKey& k) { return Rng(stream_hash(k)); }
+inline Rng make_stream(const StreamKey& k) {
+    return Rng(stream_hash(k));
+}
 inline Rng make_stream(std::uint64_t seed, Stream purpose, std::uint64_t step, std::uint64_t unit,
                        std::uint64_t replica = 0) {
     return make_stream(StreamKey{seed, purpose, replica, step, unit});
 }
 
 // Uniform double in [0, 1): the top 53 bits.
-inline double uniform01(Rng& r) { return static_cast<double>(r() >> 11) * 0x1p-53; }
+inline double uniform01(Rng& r) {
+    return static_cast<double>(r() >> 11) * 0x1p-53;
+}
 // Uniform double in (0, 1]: never zero, so its logarithm is finite.
-inline double uniform01_open0(Rng& r) { return static_cast<double>((r() >> 11) + 1) * 0x1p-53; }
+inline double uniform01_open0(Rng& r) {
+    return static_cast<double>((r() >> 11) + 1) * 0x1p-53;
+}
 // Uniform double in (-1, 1): -1 + (k + 1/2) 2^-51 with k the top 52 bits (exact, symmetric, never +-1).
-inline double uniform_pm1(Rng& r) { return (static_cast<double>(r() >> 12) + 0.5) * 0x1p-51 - 1.0; }
+inline double uniform_pm1(Rng& r) {
+    return (static_cast<double>(r() >> 12) + 0.5) * 0x1p-51 - 1.0;
+}
 
 // Uniform integer in [0, n), n >= 1, exactly (Lemire 2019: multiply-shift with rejection of the
 // 2^64 mod n low values that would make some results more likely).

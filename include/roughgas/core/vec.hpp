@@ -19,14 +19,39 @@ struct Vec3 {
     friend bool operator==(const Vec3&, const Vec3&) = default;
 };
 
-inline Vec3 operator+(const Vec3& a, const Vec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-inline Vec3 operator-(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline Vec3 operator-(const Vec3& a) { return {-a.x, -a.y, -a.z}; }
-inline Vec3 operator*(double s, const Vec3& a) { return {s * a.x, s * a.y, s * a.z}; }
-inline Vec3 operator*(const Vec3& a, double s) { return {s * a.x, s * a.y, s * a.z}; }
-inline Vec3& operator+=(Vec3& a, const Vec3& b) { a.x += b.x; a.y += b.y; a.z += b.z; return a; }
-inline Vec3& operator-=(Vec3& a, const Vec3& b) { a.x -= b.x; a.y -= b.y; a.z -= b.z; return a; }
-inline Vec3& operator*=(Vec3& a, double s) { a.x *= s; a.y *= s; a.z *= s; return a; }
+inline Vec3 operator+(const Vec3& a, const Vec3& b) {
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+inline Vec3 operator-(const Vec3& a, const Vec3& b) {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+inline Vec3 operator-(const Vec3& a) {
+    return {-a.x, -a.y, -a.z};
+}
+inline Vec3 operator*(double s, const Vec3& a) {
+    return {s * a.x, s * a.y, s * a.z};
+}
+inline Vec3 operator*(const Vec3& a, double s) {
+    return {s * a.x, s * a.y, s * a.z};
+}
+inline Vec3& operator+=(Vec3& a, const Vec3& b) {
+    a.x += b.x;
+    a.y += b.y;
+    a.z += b.z;
+    return a;
+}
+inline Vec3& operator-=(Vec3& a, const Vec3& b) {
+    a.x -= b.x;
+    a.y -= b.y;
+    a.z -= b.z;
+    return a;
+}
+inline Vec3& operator*=(Vec3& a, double s) {
+    a.x *= s;
+    a.y *= s;
+    a.z *= s;
+    return a;
+}
 
 // sqrt of x >= 0 as one instruction. std::sqrt must set errno for x < 0, and GCC (without
 // -fno-math-errno) then emits a library call on paths it deems cold, such as the accepted branch
@@ -39,9 +64,15 @@ inline double sqrt_nonneg(double x) {
 #endif
 }
 
-inline double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline double norm2(const Vec3& a) { return dot(a, a); }
-inline double norm(const Vec3& a) { return sqrt_nonneg(norm2(a)); }
+inline double dot(const Vec3& a, const Vec3& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+inline double norm2(const Vec3& a) {
+    return dot(a, a);
+}
+inline double norm(const Vec3& a) {
+    return sqrt_nonneg(norm2(a));
+}
 inline Vec3 cross(const Vec3& a, const Vec3& b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
@@ -54,8 +85,7 @@ struct Vec3Column {
     const Vec3& operator[](std::size_t i) const { return *reinterpret_cast<const Vec3*>(base + i * stride); }
 };
 
-template <class T>
-Vec3Column column_of(const T* first, std::size_t member_offset) {
+template <class T> Vec3Column column_of(const T* first, std::size_t member_offset) {
     return {reinterpret_cast<const std::byte*>(first) + member_offset, sizeof(T)};
 }
 

@@ -76,11 +76,11 @@
 namespace roughgas {
 
 struct EngineOptions {
-    double density = 1;         // number density n of the gas
-    double step = 1.0;          // step length in mean free times (no influence on the statistics)
+    double density = 1; // number density n of the gas
+    double step = 1.0;  // step length in mean free times (no influence on the statistics)
     std::uint64_t seed = 1;
     std::uint64_t replica = 0;
-    int speed_classes = 2;      // blocks per species, 1 .. 6 (no influence on the statistics)
+    int speed_classes = 2; // blocks per species, 1 .. 6 (no influence on the statistics)
 };
 
 enum class StopReason { collisions, time, stalled };
@@ -94,8 +94,8 @@ struct EngineCounters {
     std::int64_t promotions = 0;   // grains moved to a faster block within a step
     std::int64_t range_moves = 0;  // promotions that moved a block boundary (no demotable grain at hand)
     std::int64_t retargets = 0;    // pre-drawn candidate indices redrawn because their block changed
-    double max_mean_drift = 0;     // largest centre-of-mass speed |u| found at a step start, over the rms speed
-    std::int64_t recentrings = 0;  // steps that removed u (|u| above recentre_threshold of the rms speed)
+    double max_mean_drift = 0; // largest centre-of-mass speed |u| found at a step start, over the rms speed
+    std::int64_t recentrings = 0; // steps that removed u (|u| above recentre_threshold of the rms speed)
 };
 
 // An observer that ignores every collision.
@@ -106,49 +106,58 @@ struct IgnoreCollisions {
 // Class boundaries in units of the thermal speed sqrt(T/m) (K - 1 cuts for K classes): chosen to
 // minimise the mean bound per grain of a Maxwellian at N ~ 1e5 .. 1e6.
 inline const std::vector<double>& speed_class_cuts(int classes) {
-    static const std::vector<double> cuts[] = {{}, {2.3}, {1.9, 3.0}, {1.5, 2.3, 3.2}, {1.4, 2.0, 2.6, 3.4},
-                                               {1.3, 1.8, 2.3, 2.8, 3.5}};
-    if (classes < 1 || classes > 6) throw std::invalid_argument("speed_classes must be in 1 .. 6");
+    static const std::vector<double> cuts[] = {
+        {}, {2.3}, {1.9, 3.0}, {1.5, 2.3, 3.2}, {1.4, 2.0, 2.6, 3.4}, {1.3, 1.8, 2.3, 2.8, 3.5}};
+    if (classes < 1 || classes > 6)
+        throw std::invalid_argument("speed_classes must be in 1 .. 6");
     return cuts[classes - 1];
 }
 
-template <class Store, class Policy, bool Mixture>
-class Engine {
+template <class Store, class Policy, bool Mixture> class Engine {
     static_assert(!Policy::needs_rotation || Store::rotation_hot, "a rough policy needs a store with omega");
 
-public:
+  public:
     static constexpr unsigned ring_size = 16; // candidates drawn (and prefetched) ahead per block pair
     static constexpr double recentre_threshold = 1e-10;
-    static constexpr std::size_t demotable_cap = 4096; // remembered per class (LIFO: the newest are the likeliest still valid)
+    // Demotable grains remembered per class (LIFO: the newest are the likeliest still valid).
+    static constexpr std::size_t demotable_cap = 4096;
     static constexpr std::uint32_t no_grain = std::numeric_limits<std::uint32_t>::max();
 
     // `policies[k]` is the restitution of species pair k (species.hpp); one entry without Mixture.
     Engine(std::vector<SpeciesBlock> species, std::vector<Policy> policies, Store store, EngineOptions opt)
         : species_(std::move(species)), types_(make_pair_types(species_)), policies_(std::move(policies)),
           store_(std::move(store)), opt_(opt) {
-        if (!Mixture && species_.size() != 1) throw std::invalid_argument("Engine: one-species engine given a mixture");
-        if (policies_.size() != types_.size()) throw std::invalid_argument("Engine: one policy per species pair");
+        if (!Mixture && species_.size() != 1)
+            throw std::invalid_argument("Engine: one-species engine given a mixture");
+        if (policies_.size() != types_.size())
+            throw std::invalid_argument("Engine: one policy per species pair");
         std::size_t n = 0;
-        for (const auto& s : species_) n += s.count;
-        if (n != store_.size()) throw std::invalid_argument("Engine: store size differs from the species counts");
-        if (n >= std::numeric_limits<std::uint32_t>::max()) throw std::invalid_argument("Engine: too many particles");
-        if (!(opt_.step > 0)) throw std::invalid_argument("Engine: step must be > 0");
+        for (const auto& s : species_)
+            n += s.count;
+        if (n != store_.size())
+            throw std::invalid_argument("Engine: store size differs from the species counts");
+        if (n >= std::numeric_limits<std::uint32_t>::max())
+            throw std::invalid_argument("Engine: too many particles");
+        if (!(opt_.step > 0))
+            throw std::invalid_argument("Engine: step must be > 0");
         volume_ = static_cast<double>(n) / opt_.density;
         K_ = static_cast<std::size_t>(opt_.speed_classes);
         cuts_ = speed_class_cuts(opt_.speed_classes);
         const std::size_t S = species_.size();
         blocks_.resize(S * K_);
         for (std::size_t s = 0; s < S; ++s)
-            for (std::size_t c = 0; c < K_; ++c) blocks_[s * K_ + c].species = static_cast<std::uint32_t>(s);
+            for (std::size_t c = 0; c < K_; ++c)
+                blocks_[s * K_ + c].species = static_cast<std::uint32_t>(s);
         for (std::uint32_t x = 0; x < blocks_.size(); ++x)
             for (std::uint32_t y = x; y < blocks_.size(); ++y)
-                block_pairs_.push_back({x, y,
-                                        static_cast<std::uint32_t>(pair_index(blocks_[x].species, blocks_[y].species, S)),
-                                        0.0, 0.0, 0.0});
+                block_pairs_.push_back(
+                    {x, y, static_cast<std::uint32_t>(pair_index(blocks_[x].species, blocks_[y].species, S)),
+                     0.0, 0.0, 0.0});
         cumulative_.assign(block_pairs_.size(), 0.0);
         rings_.resize(block_pairs_.size());
         demotable_.resize(blocks_.size());
-        for (auto& d : demotable_) d.reserve(demotable_cap);
+        for (auto& d : demotable_)
+            d.reserve(demotable_cap);
         class_.assign(K_ > 1 ? n : 0, 0);
         mv2_.assign(S, 0.0);
         cut2_.assign(cuts_.size(), 0.0);
@@ -161,7 +170,8 @@ public:
             double sum2 = 0;
             for (std::size_t i = species_[s].offset; i < species_[s].offset + species_[s].count; ++i)
                 sum2 += norm2(store_.v(i));
-            thermal_speed_[s] = species_[s].count ? std::sqrt(sum2 / (3.0 * static_cast<double>(species_[s].count))) : 0.0;
+            thermal_speed_[s] =
+                species_[s].count ? std::sqrt(sum2 / (3.0 * static_cast<double>(species_[s].count))) : 0.0;
         }
     }
 
@@ -170,13 +180,14 @@ public:
     // `t_stop` (returns `time`, time() = t_stop if t_stop is finite). `stalled`: no collision can
     // ever happen (every grain at rest in the centre-of-mass frame).
     // `obs(const CollisionRecord&, std::size_t species_pair)` sees every collision.
-    template <class Observer>
-    StopReason run(std::int64_t collision_target, double t_stop, Observer&& obs) {
-        if (c_.collisions >= collision_target) return StopReason::collisions;
+    template <class Observer> StopReason run(std::int64_t collision_target, double t_stop, Observer&& obs) {
+        if (c_.collisions >= collision_target)
+            return StopReason::collisions;
         for (;;) {
             if (t_next_ >= t_step_end_) {
                 if (stalled_) {
-                    if (std::isfinite(t_stop)) t_ = std::max(t_, t_stop);
+                    if (std::isfinite(t_stop))
+                        t_ = std::max(t_, t_stop);
                     return std::isfinite(t_stop) ? StopReason::time : StopReason::stalled;
                 }
                 begin_step();
@@ -220,7 +231,8 @@ public:
                     update_rates();
                 }
                 t_next_ = t_ + exponential_(rng_) * inv_rate_;
-                if (c_.collisions >= collision_target) return StopReason::collisions;
+                if (c_.collisions >= collision_target)
+                    return StopReason::collisions;
             } else {
                 t_next_ = t_ + exponential_(rng_) * inv_rate_;
             }
@@ -234,7 +246,8 @@ public:
     // state was changed from outside (e.g. velocities rescaled); exact, since the pending candidate
     // is discarded (memoryless clock).
     void restart_step() {
-        if (stalled_) return;
+        if (stalled_)
+            return;
         t_step_end_ = t_;
         t_next_ = t_;
     }
@@ -254,17 +267,17 @@ public:
     // The bound on |v| of species s: its fastest class's bound (its maximum speed at the step start).
     double vmax(std::size_t s) const { return blocks_[s * K_ + K_ - 1].bound; }
 
-private:
+  private:
     // Speed class c of species s: the store range [begin, end); every grain in it has |v| <= bound.
     struct Block {
         std::uint32_t begin = 0, end = 0;
         std::uint32_t species = 0;
-        double ceiling2 = 0;      // grains above sqrt(ceiling2) move to the next class (top: infinity)
+        double ceiling2 = 0; // grains above sqrt(ceiling2) move to the next class (top: infinity)
         double bound = 0, bound2 = 0;
         std::uint32_t size() const { return end - begin; }
     };
     struct BlockPair {
-        std::uint32_t x, y;       // blocks, x <= y
+        std::uint32_t x, y; // blocks, x <= y
         std::uint32_t species_pair;
         double gmax, rate, pairs;
     };
@@ -286,8 +299,10 @@ private:
         const Block& X = blocks_[bp.x];
         const Block& Y = blocks_[bp.y];
         Candidate c{draw_in(X), draw_in(Y), X.begin, X.end, Y.begin, Y.end};
-        if (X.size()) store_.prefetch(c.i);
-        if (Y.size()) store_.prefetch(c.j);
+        if (X.size())
+            store_.prefetch(c.i);
+        if (Y.size())
+            store_.prefetch(c.j);
         return c;
     }
 
@@ -297,12 +312,14 @@ private:
     // outside the overlap.
     std::uint32_t retarget(std::uint32_t idx, std::uint32_t b0, std::uint32_t e0, const Block& B) {
         const std::uint32_t b1 = B.begin, e1 = B.end;
-        if (b0 == b1 && e0 == e1) [[likely]] return idx;
+        if (b0 == b1 && e0 == e1) [[likely]]
+            return idx;
         ++c_.retargets;
         const std::uint32_t n = e1 - b1;
         const std::uint32_t lo = std::max(b0, b1), hi = std::min(e0, e1);
         const std::uint32_t m = hi > lo ? hi - lo : 0;
-        if (m == 0) return b1 + static_cast<std::uint32_t>(uniform_index(rng_, n));
+        if (m == 0)
+            return b1 + static_cast<std::uint32_t>(uniform_index(rng_, n));
         if (uniform_index(rng_, n) < m)
             return idx >= lo && idx < hi ? idx : lo + static_cast<std::uint32_t>(uniform_index(rng_, m));
         const std::uint32_t k = static_cast<std::uint32_t>(uniform_index(rng_, n - m));
@@ -319,8 +336,8 @@ private:
         i = retarget(c.i, c.ib, c.ie, X);
         j = retarget(c.j, c.jb, c.je, blocks_[bp.y]);
         if (bp.x == bp.y) { // i and j drawn independently from one block: a distinct pair by rejection
-            while (j == i) [[unlikely]]
-                j = X.begin + static_cast<std::uint32_t>(uniform_index(rng_, X.size()));
+            while (j == i)
+                [[unlikely]] j = X.begin + static_cast<std::uint32_t>(uniform_index(rng_, X.size()));
         }
     }
 
@@ -328,10 +345,12 @@ private:
     // rates at or below a uniform point (branch-free: the outcome is unpredictable).
     std::size_t choose_block_pair() {
         const std::size_t n = cumulative_.size();
-        if (n == 1) return 0;
+        if (n == 1)
+            return 0;
         const double x = uniform01(rng_) * rate_;
         std::size_t k = 0;
-        for (std::size_t q = 0; q + 1 < n; ++q) k += x >= cumulative_[q];
+        for (std::size_t q = 0; q + 1 < n; ++q)
+            k += x >= cumulative_[q];
         return k;
     }
 
@@ -345,16 +364,19 @@ private:
     //  - slow enough for the class below: remembered as demotable.
     // `other`, `other_block`: the collision partner, which follows if it was moved.
     // Returns whether a bound or a block range changed (the rates must then be updated).
-    bool settle(std::uint32_t& i, std::uint32_t& x, double v2, std::uint32_t& other, std::uint32_t& other_block) {
+    bool settle(std::uint32_t& i, std::uint32_t& x, double v2, std::uint32_t& other,
+                std::uint32_t& other_block) {
         bool changed = false;
         while (v2 > blocks_[x].ceiling2) {
-            const std::uint32_t y = x + 1; // the next class of the same species (the top class has no ceiling)
+            const std::uint32_t y =
+                x + 1; // the next class of the same species (the top class has no ceiling)
             std::vector<std::uint32_t>& cand = demotable_[y];
             std::uint32_t k = no_grain;
             while (!cand.empty()) {
                 const std::uint32_t q = cand.back();
                 cand.pop_back();
-                if (q >= blocks_[y].begin && q < blocks_[y].end && norm2(store_.v(q)) <= blocks_[x].ceiling2) {
+                if (q >= blocks_[y].begin && q < blocks_[y].end &&
+                    norm2(store_.v(q)) <= blocks_[x].ceiling2) {
                     k = q;
                     break;
                 }
@@ -378,7 +400,8 @@ private:
                 const std::uint32_t last = b.end - 1;
                 if (i != last) {
                     store_.swap_hot(i, last);
-                    if (other == last) other = i; // stays in block x
+                    if (other == last)
+                        other = i; // stays in block x
                     i = last;
                 }
                 --b.end;
@@ -425,7 +448,8 @@ private:
     // changed, about a quarter per mean free time, are moved).
     void begin_step() {
         const std::size_t S = species_.size();
-        for (auto& d : demotable_) d.clear();
+        for (auto& d : demotable_)
+            d.clear();
         Vec3 momentum{};
         double mass = 0, mv2_all = 0;
         std::fill(mv2_.begin(), mv2_.end(), 0.0);
@@ -444,8 +468,10 @@ private:
                 const Vec3& v = store_.v(i);
                 const double v2 = norm2(v);
                 std::uint8_t c = 0;
-                for (std::size_t q = 0; q < cuts_.size(); ++q) c += v2 > cut2_[q];
-                if (K_ > 1) class_[i] = c;
+                for (std::size_t q = 0; q < cuts_.size(); ++q)
+                    c += v2 > cut2_[q];
+                if (K_ > 1)
+                    class_[i] = c;
                 ++count_[c];
                 max2_[c] = std::max(max2_[c], v2);
                 sum2 += v2;
@@ -492,7 +518,8 @@ private:
             if (drift > recentre_threshold) {
                 const double u_abs = norm(u);
                 for (const SpeciesBlock& sp : species_)
-                    for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i) store_.v(i) -= u;
+                    for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i)
+                        store_.v(i) -= u;
                 for (Block& b : blocks_) {
                     b.bound += u_abs;
                     b.bound2 = b.bound * b.bound;
@@ -513,7 +540,8 @@ private:
             nu += 2.0 * t.pairs * t.pc.cross_section * mean_g / volume_ / static_cast<double>(store_.size());
         }
         update_rates();
-        rng_ = make_stream(StreamKey{opt_.seed, Stream::collisions, opt_.replica, static_cast<std::uint64_t>(c_.steps), 0});
+        rng_ = make_stream(
+            StreamKey{opt_.seed, Stream::collisions, opt_.replica, static_cast<std::uint64_t>(c_.steps), 0});
         ++c_.steps;
         const double t0 = t_step_end_;
         if (!(rate_ > 0) || !(nu > 0)) { // nothing moves: no collision can ever happen
@@ -527,7 +555,8 @@ private:
         for (std::size_t k = 0; k < block_pairs_.size(); ++k) {
             Ring& r = rings_[k];
             r.head = 0;
-            for (auto& c : r.c) c = draw_candidate(k);
+            for (auto& c : r.c)
+                c = draw_candidate(k);
         }
         t_next_ = t0 + exponential_(rng_) * inv_rate_;
     }
@@ -544,8 +573,8 @@ private:
 
     Rng rng_{};
     boost::random::exponential_distribution<double> exponential_{1.0};
-    std::vector<Block> blocks_;            // species-major: block s K + c
-    std::vector<BlockPair> block_pairs_;   // all x <= y
+    std::vector<Block> blocks_;          // species-major: block s K + c
+    std::vector<BlockPair> block_pairs_; // all x <= y
     std::vector<double> cumulative_;
     std::vector<Ring> rings_;
     std::vector<std::vector<std::uint32_t>> demotable_; // per block: grains slow enough for the class below

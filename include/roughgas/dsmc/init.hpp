@@ -12,20 +12,22 @@
 namespace roughgas {
 
 // Subtracts the mass-weighted mean velocity (the centre-of-mass velocity); returns it.
-template <class Store>
-Vec3 remove_mean_velocity(Store& store, const std::vector<SpeciesBlock>& species) {
+template <class Store> Vec3 remove_mean_velocity(Store& store, const std::vector<SpeciesBlock>& species) {
     Vec3 p{};
     double M = 0;
     for (const SpeciesBlock& sp : species) {
         Vec3 ps{};
-        for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i) ps += store.v(i);
+        for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i)
+            ps += store.v(i);
         p += sp.grain.mass * ps;
         M += sp.grain.mass * static_cast<double>(sp.count);
     }
-    if (!(M > 0)) return {};
+    if (!(M > 0))
+        return {};
     const Vec3 u = (1.0 / M) * p;
     for (const SpeciesBlock& sp : species)
-        for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i) store.v(i) -= u;
+        for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i)
+            store.v(i) -= u;
     return u;
 }
 

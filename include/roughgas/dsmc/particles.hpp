@@ -36,16 +36,17 @@
 namespace roughgas {
 
 // A fixed-size buffer of trivially copyable T, value-initialised, on (transparent) huge pages.
-template <class T>
-class HugePageBuffer {
-public:
+template <class T> class HugePageBuffer {
+  public:
     HugePageBuffer() = default;
     explicit HugePageBuffer(std::size_t n) : size_(n) {
-        if (n == 0) return;
+        if (n == 0)
+            return;
         constexpr std::size_t huge = std::size_t{2} << 20;
         const std::size_t bytes = (n * sizeof(T) + huge - 1) / huge * huge;
         void* p = std::aligned_alloc(huge, bytes);
-        if (!p) throw std::bad_alloc();
+        if (!p)
+            throw std::bad_alloc();
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
         madvise(p, bytes, MADV_HUGEPAGE); // a hint: without it the store still works, on 4 KiB pages
 #endif
@@ -53,30 +54,46 @@ public:
         data_ = static_cast<T*>(p);
     }
     HugePageBuffer(const HugePageBuffer& o) : HugePageBuffer(o.size_) {
-        if (size_) std::memcpy(data_, o.data_, size_ * sizeof(T));
+        if (size_)
+            std::memcpy(data_, o.data_, size_ * sizeof(T));
     }
-    HugePageBuffer(HugePageBuffer&& o) noexcept : data_(std::exchange(o.data_, nullptr)), size_(std::exchange(o.size_, 0)) {}
+    HugePageBuffer(HugePageBuffer&& o) noexcept
+        : data_(std::exchange(o.data_, nullptr)), size_(std::exchange(o.size_, 0)) {}
     HugePageBuffer& operator=(HugePageBuffer o) noexcept {
         std::swap(data_, o.data_);
         std::swap(size_, o.size_);
         return *this;
     }
-    ~HugePageBuffer() { std::free(data_); }
+    ~HugePageBuffer() {
+        std::free(data_);
+    }
 
-    T* data() { return data_; }
-    const T* data() const { return data_; }
-    std::size_t size() const { return size_; }
-    T& operator[](std::size_t i) { return data_[i]; }
-    const T& operator[](std::size_t i) const { return data_[i]; }
+    T* data() {
+        return data_;
+    }
+    const T* data() const {
+        return data_;
+    }
+    std::size_t size() const {
+        return size_;
+    }
+    T& operator[](std::size_t i) {
+        return data_[i];
+    }
+    const T& operator[](std::size_t i) const {
+        return data_[i];
+    }
 
-private:
+  private:
     T* data_ = nullptr;
     std::size_t size_ = 0;
 };
 
 // A read prefetch: most candidates are rejected and never written (a write prefetch, which requests
 // ownership of the line, measured 1.3-1.7x slower at N = 1e6).
-inline void prefetch_line(const void* p) { __builtin_prefetch(p, 0, 3); }
+inline void prefetch_line(const void* p) {
+    __builtin_prefetch(p, 0, 3);
+}
 
 // ---- rough stores: v and omega are hot ----
 
@@ -87,7 +104,7 @@ struct alignas(64) RoughGrain {
 static_assert(sizeof(RoughGrain) == 64);
 
 class RoughAoS {
-public:
+  public:
     static constexpr std::string_view name = "RoughAoS";
     static constexpr bool rotation_hot = true;
     static constexpr std::size_t bytes_per_particle = sizeof(RoughGrain);
@@ -104,7 +121,7 @@ public:
     Vec3Column velocities() const { return column_of(g_.data(), offsetof(RoughGrain, v)); }
     Vec3Column angular_velocities() const { return column_of(g_.data(), offsetof(RoughGrain, w)); }
 
-private:
+  private:
     HugePageBuffer<RoughGrain> g_;
 };
 
@@ -115,7 +132,7 @@ struct PackedGrain {
 static_assert(sizeof(PackedGrain) == 48);
 
 class RoughPacked {
-public:
+  public:
     static constexpr std::string_view name = "RoughPacked";
     static constexpr bool rotation_hot = true;
     static constexpr std::size_t bytes_per_particle = sizeof(PackedGrain);
@@ -136,12 +153,12 @@ public:
     Vec3Column velocities() const { return column_of(g_.data(), offsetof(PackedGrain, v)); }
     Vec3Column angular_velocities() const { return column_of(g_.data(), offsetof(PackedGrain, w)); }
 
-private:
+  private:
     HugePageBuffer<PackedGrain> g_;
 };
 
 class RoughSoA {
-public:
+  public:
     static constexpr std::string_view name = "RoughSoA";
     static constexpr bool rotation_hot = true;
     static constexpr std::size_t bytes_per_particle = 2 * sizeof(Vec3);
@@ -166,7 +183,7 @@ public:
     Vec3Column velocities() const { return column_of(v_.data(), 0); }
     Vec3Column angular_velocities() const { return column_of(w_.data(), 0); }
 
-private:
+  private:
     HugePageBuffer<Vec3> v_, w_;
 };
 
@@ -178,7 +195,7 @@ struct alignas(32) SmoothGrain {
 static_assert(sizeof(SmoothGrain) == 32);
 
 class SmoothAoS {
-public:
+  public:
     static constexpr std::string_view name = "SmoothAoS";
     static constexpr bool rotation_hot = false;
     static constexpr std::size_t bytes_per_particle = sizeof(SmoothGrain) + sizeof(Vec3);
@@ -199,13 +216,13 @@ public:
     Vec3Column velocities() const { return column_of(g_.data(), offsetof(SmoothGrain, v)); }
     Vec3Column angular_velocities() const { return column_of(w_.data(), 0); }
 
-private:
+  private:
     HugePageBuffer<SmoothGrain> g_;
     HugePageBuffer<Vec3> w_;
 };
 
 class SmoothPacked {
-public:
+  public:
     static constexpr std::string_view name = "SmoothPacked";
     static constexpr bool rotation_hot = false;
     static constexpr std::size_t bytes_per_particle = 2 * sizeof(Vec3);
@@ -228,7 +245,7 @@ public:
     Vec3Column velocities() const { return column_of(v_.data(), 0); }
     Vec3Column angular_velocities() const { return column_of(w_.data(), 0); }
 
-private:
+  private:
     HugePageBuffer<Vec3> v_, w_;
 };
 

@@ -22,7 +22,8 @@ struct SpeciesBlock {
 
 // Counts from the number fractions by largest remainders (ties to the lower index), so they sum to
 // `particles` exactly and each is within 1 of particles x fraction (fractions normalised).
-std::vector<SpeciesBlock> make_species_blocks(const std::vector<SpeciesSpec>& species, std::int64_t particles);
+std::vector<SpeciesBlock> make_species_blocks(const std::vector<SpeciesSpec>& species,
+                                              std::int64_t particles);
 
 // Species pair (a, b), a <= b, at index pair_index(a, b, n_species) (run_spec.hpp).
 struct PairType {

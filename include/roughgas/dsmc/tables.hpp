@@ -24,14 +24,14 @@ struct TableBuildInfo {
 // Where persisted tables come from: the physics library cannot read files (style.md §2.4), so the
 // cache file (io/table_cache_file.hpp) is reached through this interface; io/run_tables.hpp adapts it.
 class TableCache {
-public:
+  public:
     virtual ~TableCache() = default;
     virtual std::optional<std::vector<double>> find(const std::string& key) = 0;
     virtual void put(const std::string& key, std::vector<double> payload) = 0;
 };
 
 class RestitutionTables {
-public:
+  public:
     // Builds every table the pairs of `spec` use: one eps^N(w) table per contact model (form, end)
     // of a cached viscoelastic or brilliantov pair, one eps^T table per cached brilliantov pair over
     // g_N in [table_g_min, table_g_max]; each is taken from `cache` when it holds an entry with the
@@ -39,14 +39,14 @@ public:
     // Nothing is built for direct pairs or when !spec.use_cache.
     static std::shared_ptr<const RestitutionTables> build(const RunSpec& spec, TableCache* cache = nullptr);
 
-    const NormalTable* normal(const ContactModel& model) const;  // nullptr if not built
-    const TangentialTable* tangential(std::size_t pair) const;    // nullptr if not built
+    const NormalTable* normal(const ContactModel& model) const; // nullptr if not built
+    const TangentialTable* tangential(std::size_t pair) const;  // nullptr if not built
     const std::vector<TableBuildInfo>& info() const { return info_; }
     // Why the cache file was ignored, if it was (set by io/run_tables.hpp).
     const std::string& cache_rejected() const { return cache_rejected_; }
     void set_cache_rejected(std::string why) { cache_rejected_ = std::move(why); }
 
-private:
+  private:
     std::vector<std::pair<ContactModel, std::unique_ptr<NormalTable>>> normal_;
     std::vector<std::unique_ptr<TangentialTable>> tangential_;
     std::vector<TableBuildInfo> info_;
@@ -59,7 +59,8 @@ using AnyPolicy = std::variant<SmoothConstant, RoughConstant, Coulomb, Viscoelas
 
 // The policy of pair `pair` (index pair_index(a, b, n)), the smooth variant wherever beta = -1 for
 // every impact (constant beta = -1; coulomb with beta0 = -1 or mu = 0; viscoelastic with beta = -1).
-AnyPolicy make_policy(const RunSpec& spec, const RestitutionTables& tables, std::size_t pair, const PairType& type);
+AnyPolicy make_policy(const RunSpec& spec, const RestitutionTables& tables, std::size_t pair,
+                      const PairType& type);
 
 // Mixtures whose pairs need different policy types: one variant per pair, visited per collision.
 // Smooth policies among rough ones become their rough form with beta = -1 (which leaves omega

@@ -64,4 +64,11 @@ class MomentsTable {
     std::optional<HcsTrajectory> trajectory_;
 };
 
+// The README table of moments.csv columns (`roughgas keys --output`): every column the solver and
+// the writer can produce, with its unit (from the code) and meaning; mixture columns with the
+// placeholders NAME (a species) and A, B (two species, A before B).
+std::string moments_columns_markdown();
+// The meaning of a column, "" if it has none (a test requires one for every column).
+std::string moments_column_meaning(const std::string& name);
+
 } // namespace roughgas

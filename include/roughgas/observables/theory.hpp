@@ -133,8 +133,8 @@ struct EqualSphereCoefficients {
     double eta = 0, A = 0, B = 0, C = 0;
     double G = 0; // (16/3) n sigma^2 sqrt(pi/m)
 };
-EqualSphereCoefficients equal_sphere_coefficients(double alpha, double beta, double q, double mass, double sigma,
-                                                  double density);
+EqualSphereCoefficients equal_sphere_coefficients(double alpha, double beta, double q, double mass,
+                                                  double sigma, double density);
 
 // Haff's law: T0/(1 + t/t0)^2 with t0 = 2/(G A sqrt(T0)), A = (1 - alpha^2)/4 (smooth spheres).
 // alpha = 1: t0 = infinity, T = T0.

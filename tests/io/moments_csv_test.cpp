@@ -1,0 +1,115 @@
+// The rows of moments.csv (io/moments_csv.hpp): columns, replica statistics, theory, and the
+// no-silent-NaN rule.
+#include "roughgas/io/moments_csv.hpp"
+
+#include "roughgas/dsmc/run.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace roughgas {
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+RunSpec one_species(int replicas, PairRestitution r = ConstantRestitution{0.9, 0.0}) {
+    RunSpec s;
+    s.species = {SpeciesSpec{}};
+    s.pairs = {r};
+    s.replicas = replicas;
+    return s;
+}
+
+// A row of dsmc_columns for one species: t, coll_per_particle, T_tr, T_rot, theta, a20, a02, a11,
+// A_cw, coll_rate, E_diss_rate.
+std::vector<double> row(double t, double c, double T, double Tr) {
+    return {t, c, T, Tr, Tr / T, 0.01, 0.02, 0.03, 0.04, c > 0 ? 5.0 : nan, c > 0 ? 0.1 : nan};
+}
+
+TEST(MomentsTable, ColumnsWithErrorsAndTheory) {
+    const MomentsTable one(one_species(1));
+    EXPECT_EQ(one.names().size(), 11u + 3u);
+    EXPECT_EQ(one.names()[11], "T_tr_theory");
+    EXPECT_EQ(one.units()[11], "energy");
+    const MomentsTable three(one_species(3));
+    ASSERT_EQ(three.names().size(), 22u + 3u);
+    EXPECT_EQ(three.names()[2], "coll_per_particle");
+    EXPECT_EQ(three.names()[3], "coll_per_particle_err");
+    EXPECT_EQ(three.units()[5], "energy"); // T_tr_err
+    const MomentsTable coulomb(one_species(1, CoulombRestitution{0.9, 0.5, 0.2}));
+    EXPECT_FALSE(coulomb.has_theory());
+    EXPECT_EQ(coulomb.names().size(), 11u);
+}
+
+TEST(MomentsTable, MeanAndStandardErrorOverReplicas) {
+    MomentsTable table(one_species(3));
+    const std::vector<double> a = row(0, 0, 1.0, 1.0), b = row(0, 0, 1.0, 1.0), c = row(0, 0, 1.0, 1.0);
+    std::vector<std::span<const double>> rows{a, b, c};
+    std::vector<double> out = table.combine(rows);
+    EXPECT_EQ(out[0], 0.0);
+    EXPECT_EQ(out[1], 0.0);
+    EXPECT_EQ(out[out.size() - 3], 1.0); // theory at t = 0: the initial temperatures
+    const std::vector<double> d = row(0.1, 1, 0.8, 1.0), e = row(0.2, 1, 0.9, 1.0), f = row(0.3, 1, 1.3, 1.0);
+    rows = {d, e, f};
+    out = table.combine(rows);
+    EXPECT_NEAR(out[0], 0.2, 1e-15);                                 // t: mean
+    EXPECT_NEAR(out[1], std::sqrt(0.02 / 6.0), 1e-15);               // t_err: sqrt(sum (x - m)^2/(K (K - 1)))
+    EXPECT_NEAR(out[4], 1.0, 1e-15);                                 // T_tr
+    EXPECT_NEAR(out[5], std::sqrt((0.04 + 0.01 + 0.09) / 6), 1e-15); // T_tr_err
+    HcsTrajectory th(HcsTheory({{1, 0.5, 0.4, 1}}, {{0.9, 0.0}}, 1.0), {{1.0}, {1.0}});
+    EXPECT_NEAR(out[out.size() - 3], th.at(0.2).T_tr[0], 1e-12); // theory at the mean t
+}
+
+TEST(MomentsTable, NoSilentNaN) {
+    const MomentsTable table(one_species(1));
+    EXPECT_NO_THROW(table.check(row(0, 0, 1, 1))); // rates undefined at t = 0
+    EXPECT_NO_THROW(table.check(row(1, 1, 1, 1)));
+    std::vector<double> r = row(1, 1, 1, 1);
+    r[9] = nan; // coll_rate after t = 0
+    try {
+        table.check(r);
+        FAIL() << "no exception";
+    } catch (const NonFiniteValue& e) {
+        EXPECT_EQ(e.column(), "coll_rate");
+        EXPECT_EQ(e.t(), 1.0);
+        EXPECT_NE(std::string(e.what()).find("column coll_rate is nan at t = 1"), std::string::npos)
+            << e.what();
+    }
+    r = row(1, 1, 1, 1);
+    r[5] = std::numeric_limits<double>::infinity(); // a20
+    EXPECT_THROW(table.check(r), NonFiniteValue);
+    // No rotation at all (smooth grains started without spin): a02, a11, A_cw are undefined.
+    r = row(1, 1, 1, 0);
+    r[6] = r[7] = r[8] = nan;
+    EXPECT_NO_THROW(table.check(r));
+    r[3] = 0.5; // ... but not when T_rot > 0
+    EXPECT_THROW(table.check(r), NonFiniteValue);
+}
+
+TEST(MomentsTable, EveryColumnHasAMeaningAndTheReadmeTableListsIt) {
+    RunSpec mix;
+    for (const char* name : {"x", "y", "z"}) { // (GCC 12 warns, wrongly, on name = "x": -Wrestrict)
+        mix.species.emplace_back();
+        mix.species.back().name = std::string(name);
+    }
+    mix.pairs.assign(6, ConstantRestitution{0.9, 0.1});
+    mix.pairs[4] = BrilliantovRestitution{};
+    mix.replicas = 2;
+    const std::string md = moments_columns_markdown();
+    for (const RunSpec& s : {one_species(1), one_species(3), mix}) {
+        const MomentsTable table(s);
+        for (const Column& c : table.columns()) {
+            EXPECT_FALSE(moments_column_meaning(c.name).empty()) << c.name;
+        }
+    }
+    for (const char* c :
+         {"| `t` | time |", "| `X_err` |", "| `T_tr.NAME` | energy |", "| `T_tr.A/T_tr.B` | - |",
+          "| `beta_clamped` |", "| `theta_theory` | - |", "| `T_tr_theory.NAME` | energy |"})
+        EXPECT_NE(md.find(c), std::string::npos) << c << "\n" << md;
+    EXPECT_EQ(md.find("| `T_tr.B` |"), std::string::npos) << md; // B only in the ratios
+}
+
+} // namespace
+} // namespace roughgas
