@@ -2,8 +2,9 @@
 // DIR/moments.csv (interface.md "Output", io/moments_csv.hpp).
 //
 // Order of work: validate the case and the output directory (exit 2, nothing written), build the
-// restitution tables, then run the replicas (in parallel over --threads when replicas > 1; each
-// replica is deterministic, so the file does not depend on the thread count). The file is
+// restitution tables, then run the replicas (in parallel over --threads when replicas > 1, and the
+// groups of one replica over the threads left; each replica is deterministic, so the file does not
+// depend on the thread count). The file is
 // rewritten atomically as rows complete (every row complete over all replicas, at most once a
 // second, and at the end), so a crash or a kill keeps what was computed.
 // `roughgas run --resume DIR` and `--checkpoint-every` are accepted but not implemented yet (exit 1).
@@ -147,7 +148,12 @@ int run_run(const RunOptions& o, const CLI::App& app) {
     std::vector<ReplicaSummary> summaries(static_cast<std::size_t>(K));
     std::atomic<bool> cancel{false};
     std::exception_ptr error;
+    // --threads T is shared: min(T, K) replicas at a time, each with T/min(T, K) threads over the
+    // groups of its steps (dsmc/engine.hpp). Neither changes the results.
     const int threads = std::min(spec.threads, K);
+    spec.threads = std::max(1, spec.threads / threads);
+    if (threads > 1 && spec.threads > 1)
+        omp_set_max_active_levels(2);
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int r = 0; r < K; ++r) {
         try {
@@ -209,7 +215,7 @@ Subcommand add_run_command(CLI::App& parent) {
     add_set_option(*app, o->sets);
     app->add_option("--seed", o->seed, "random seed (overrides run.seed)");
     app->add_option("--threads", o->threads,
-                    "threads for the replicas (default: all; results do not depend on it)")
+                    "threads for the replicas and within each replica (default: all; results do not depend on it)")
         ->check(CLI::PositiveNumber);
     app->add_flag("--quiet", o->quiet, "no progress output");
     app->add_flag("--force", o->force, "overwrite moments.csv in an existing output directory");

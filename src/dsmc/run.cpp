@@ -49,6 +49,7 @@ void validate(const RunSpec& spec) {
     require(spec.density > 0, "density must be > 0");
     require(spec.step > 0, "step must be > 0");
     require(spec.speed_classes >= 1 && spec.speed_classes <= 6, "speed_classes must be in 1 .. 6");
+    require(spec.groups >= 0 && spec.groups <= 4096, "groups must be in 0 .. 4096");
     double prev = 0;
     for (double t : spec.output_times) {
         require(std::isfinite(t) && t > prev, "output times must be positive and increasing");
@@ -67,6 +68,18 @@ struct Tally {
         ++per_type[k];
         clamped += r.beta_clamped;
     }
+    // One per group of the engine (ForkableObserver, dsmc/engine.hpp), merged in group order.
+    Tally fork() const {
+        Tally t;
+        t.per_type.assign(per_type.size(), 0);
+        return t;
+    }
+    void merge(const Tally& o) {
+        dE += o.dE;
+        for (std::size_t k = 0; k < per_type.size(); ++k)
+            per_type[k] += o.per_type[k];
+        clamped += o.clamped;
+    }
 };
 
 template <class Policy, bool Mixture>
@@ -80,7 +93,8 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
     init_maxwellian(store, blocks, spec.seed, rep);
     Engine<Store, Policy, Mixture> engine(
         blocks, std::move(policies), std::move(store),
-        EngineOptions{spec.density, spec.step, spec.seed, rep, spec.speed_classes});
+        EngineOptions{spec.density, spec.step, spec.seed, rep, spec.speed_classes, effective_groups(spec),
+                      std::max(1, spec.threads)});
 
     const std::size_t S = blocks.size();
     std::vector<SpeciesSlice> slices(S);
@@ -170,6 +184,7 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
         const EngineCounters& k = engine.counters();
         summary->kernel = std::string(Store::name) + ", " + std::string(Policy::name) + ", " +
                           (Mixture ? std::to_string(S) + " species" : "one species");
+        summary->groups = static_cast<int>(engine.groups());
         summary->bytes_per_particle = Store::bytes_per_particle;
         summary->collisions = k.collisions;
         summary->candidates = k.candidates;

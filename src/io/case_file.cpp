@@ -568,6 +568,7 @@ class Builder {
         c.particles = r.integer("particles");
         c.density = r.real("density");
         c.replicas = r.integer("replicas");
+        c.groups = r.integer("groups");
         c.seed = static_cast<std::uint64_t>(r.integer("seed"));
         c.end = r.real("end");
         c.output_every = r.real("output_every");
@@ -950,6 +951,7 @@ std::string emit_case(const CaseConfig& c) {
     e.put("particles", c.run.particles);
     e.put("density", c.run.density);
     e.put("replicas", c.run.replicas);
+    e.put("groups", c.run.groups);
     e.put("seed", c.run.seed);
     e.put("end", c.run.end);
     e.put("output_every", c.run.output_every);

@@ -130,6 +130,13 @@ std::vector<Key> keys() {
             .fallback(std::int64_t{1})
             .ge(1)
             .doc("independent runs averaged; each column X gets X_err when > 1"),
+        Key("run.groups", T::integer)
+            .fallback(std::int64_t{0})
+            .ge(0)
+            .le(4096)
+            .doc("random groups per DSMC step that collide independently (in parallel over --threads); 0: "
+                 "automatic, particles/16384 rounded down to a power of two; results depend on it, never on "
+                 "the thread count"),
         Key("run.seed", T::integer).fallback(std::int64_t{1}).ge(0).doc("random seed (same seed, same run)"),
         Key("run.end", T::real).unit("collisions per particle").required().gt(0).doc("length of the run"),
         Key("run.output_every", T::real)

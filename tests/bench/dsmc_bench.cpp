@@ -27,17 +27,21 @@
 namespace roughgas {
 namespace {
 
-constexpr std::int64_t chunk = 100000;
+constexpr std::int64_t bench_chunk = 100000;
 
 template <class Store, class Policy, bool Mixture = false>
-void run_bench(benchmark::State& state, const SpeciesSpec& species, const Policy& policy, int classes = 2) {
+void run_bench(benchmark::State& state, const SpeciesSpec& species, const Policy& policy, int classes = 2,
+               int groups = 1, int threads = 1) {
     const auto N = static_cast<std::int64_t>(state.range(0));
     const auto blocks = make_species_blocks({species}, N);
     Store store(static_cast<std::size_t>(N));
     init_maxwellian(store, blocks, 1, 0);
     Engine<Store, Policy, Mixture> e(
         blocks, {policy}, std::move(store),
-        EngineOptions{1.0 / std::pow(2 * species.radius, 3), 1.0, 1, 0, classes});
+        EngineOptions{1.0 / std::pow(2 * species.radius, 3), 1.0, 1, 0, classes, groups, threads});
+    // A grouped run meets a collision target in parallel phases and a short serial tail
+    // (engine.hpp): chunks of at least a step (N/2 collisions), as run_replica uses.
+    const std::int64_t chunk = groups > 1 ? std::max<std::int64_t>(bench_chunk, N / 2) : bench_chunk;
     e.run_collisions(N / 4); // half a collision per particle: steps, rings and pages warm
     // The gas cools; velocity-dependent restitution would drift out of its regime (and out of the
     // tangential table's range), so between timed chunks v and omega are scaled back to the initial
@@ -157,6 +161,17 @@ void BM_Skip_VariantPerCollision(benchmark::State& s) {
     run_bench<RoughAoS, AnyRoughPolicy, true>(s, unit_grain(), AnyRoughPolicy{make_rough_constant(0.9, 0.5)});
 }
 
+// Groups and threads (engine.hpp, "Groups"): /N/G/T, wall-clock time (UseRealTime), so that
+// items_per_second is collisions per second of the run on T threads.
+void BM_Threads_RoughConstant(benchmark::State& s) {
+    run_bench<RoughAoS>(s, unit_grain(), make_rough_constant(0.9, 0.5), 2, static_cast<int>(s.range(1)),
+                        static_cast<int>(s.range(2)));
+}
+void BM_Threads_SmoothConstant(benchmark::State& s) {
+    run_bench<SmoothAoS>(s, unit_grain(), make_smooth_constant(0.9), 2, static_cast<int>(s.range(1)),
+                         static_cast<int>(s.range(2)));
+}
+
 #define ROUGHGAS_SIZES ->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->MinTime(2.0)
 BENCHMARK(BM_Case_RoughConstant) ROUGHGAS_SIZES;
 BENCHMARK(BM_Case_SmoothConstant) ROUGHGAS_SIZES;
@@ -172,6 +187,16 @@ BENCHMARK(BM_Classes_RoughConstant)
 BENCHMARK(BM_Classes_SmoothConstant)
     ->ArgsProduct({{100000, 1000000}, {1, 2, 3, 4}})
     ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
+BENCHMARK(BM_Threads_RoughConstant)
+    ->ArgsProduct({{100000, 1000000}, {1, 4, 32}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0);
+BENCHMARK(BM_Threads_SmoothConstant)
+    ->ArgsProduct({{100000, 1000000}, {1, 4, 32}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
     ->MinTime(2.0);
 BENCHMARK(BM_Layout_RoughPacked48) ROUGHGAS_SIZES;
 BENCHMARK(BM_Layout_RoughSoA) ROUGHGAS_SIZES;

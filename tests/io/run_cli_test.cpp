@@ -186,6 +186,13 @@ TEST(RunCli, SameCaseAndSeedGiveByteIdenticalOutputWhateverTheThreads) {
     EXPECT_NE(ma["T_tr"], md["T_tr"]);
     EXPECT_NE(ma["t"], md["t"]); // rows are at collision counts: t, and the theory at t, differ too
     EXPECT_EQ(ma["coll_per_particle"], md["coll_per_particle"]);
+    // One replica in 4 groups: --threads 2 runs the groups of each step in parallel (dsmc/engine.hpp).
+    const std::string grouped = "--quiet --set run.replicas=1 --set run.groups=4 --threads ";
+    ASSERT_EQ(run_roughgas(run_args(f, dir / "e", grouped + "1"), dir).status, 0);
+    ASSERT_EQ(run_roughgas(run_args(f, dir / "f", grouped + "2"), dir).status, 0);
+    const std::string e = test::read_file(dir / "e" / "moments.csv");
+    EXPECT_FALSE(e.empty());
+    EXPECT_EQ(e, test::read_file(dir / "f" / "moments.csv"));
 }
 
 TEST(RunCli, ReplicasAddStandardErrorsAfterEachColumn) {

@@ -38,9 +38,29 @@
 // it has grown to 1e-10 of the thermal speed (a Galilean shift, exact for a homogeneous gas). The
 // candidate that would fall after the step's end is discarded (memoryless again), so the
 // statistics do not depend on the step length (tests/dsmc/engine_test.cpp). Each step draws from its
-// own stream (seed, collisions, replica, step, unit): the unit for a later per-step random
-// partition of the particles into groups, each with its own stream and candidate process (rate
-// scaled by the fraction of pairs inside groups), is one call of the step loop on a set of blocks.
+// own streams (seed, collisions, replica, step, unit), one per group (unit = group index).
+//
+// Groups (issue 5: both cores for one run). With `groups` = G > 1 each step starts with a random
+// partition of the grains into G groups: grain position p goes to group floor(G h_p / 2^64), h_p the
+// p-th output of a splitmix64 sequence keyed by (seed, partition, replica, step): independent of
+// the state and of everything else, so any two distinct grains share a group with probability 1/G
+// exactly. During the step only pairs inside a group can collide, each at G times its rate
+// (the volume of a group is V/G): the expected rate of every pair, averaged over the partition, is
+// its exact rate pi sigma^2 |g|/V, the direction law is untouched, and the groups are independent
+// DSMC gases for one step (a step of one mean free time: about one collision per grain; the
+// correlations between grains that a group of n grains builds up within a step are those of an
+// n-particle DSMC, O(1/n), and the next partition mixes them out). Each group has its own blocks,
+// candidate clock, rings and stream, and occupies its own contiguous store range (the grains are
+// sorted by (group, class) within their species in the step's sort pass), so groups run on
+// different OpenMP threads without locks; a group of ~16k grains (1 MiB) stays in one core's L2.
+// Results depend on G, never on the thread count: group g always uses stream unit g, the sort is
+// serial, observers are forked per group and merged in group order.
+//   Stopping in a grouped run. A time stop runs every group to t_stop. A collision target is met
+// exactly in global time order: phases run all groups in parallel to a common time chosen to give
+// about half the remaining collisions (from the current candidate rate and acceptance), until at
+// most `tail_collisions` remain; those are processed one candidate at a time, always in the group
+// whose next candidate comes first (the superposition of the groups' clocks). A phase can only
+// overshoot if the collision rate doubles within it (never seen; counted in `overshoots`).
 //
 // Pauses. run() stops after a given collision count or before a given time, keeping the pending
 // candidate: stopping and resuming never changes the trajectory, so the output schedule does not
@@ -67,10 +87,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <concepts>
 #include <cstdint>
+#include <exception>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace roughgas {
@@ -81,6 +104,8 @@ struct EngineOptions {
     std::uint64_t seed = 1;
     std::uint64_t replica = 0;
     int speed_classes = 2; // blocks per species, 1 .. 6 (no influence on the statistics)
+    int groups = 1;        // per-step random partition into groups (1: none); results depend on it
+    int threads = 1;       // OpenMP threads over the groups: no influence on the results
 };
 
 enum class StopReason { collisions, time, stalled };
@@ -96,11 +121,23 @@ struct EngineCounters {
     std::int64_t retargets = 0;    // pre-drawn candidate indices redrawn because their block changed
     double max_mean_drift = 0; // largest centre-of-mass speed |u| found at a step start, over the rms speed
     std::int64_t recentrings = 0; // steps that removed u (|u| above recentre_threshold of the rms speed)
+    std::int64_t phases = 0;      // grouped runs: parallel phases
+    std::int64_t overshoots = 0;  // grouped runs: phases that ended past the collision target
 };
 
 // An observer that ignores every collision.
 struct IgnoreCollisions {
     void operator()(const CollisionRecord&, std::size_t /*species pair*/) const {}
+};
+
+// An observer the grouped engine can give each group (and thread) a copy of: fork() returns an
+// empty observer of the same kind, merge() adds another's tallies. Merged in group order, so the
+// result does not depend on the thread count. Other observers are called from one thread at a time
+// (a grouped run then uses one thread); stateless ones (empty classes) are shared.
+template <class O>
+concept ForkableObserver = requires(const O& c, O& o) {
+    { c.fork() } -> std::convertible_to<O>;
+    o.merge(c);
 };
 
 // Class boundaries in units of the thermal speed sqrt(T/m) (K - 1 cuts for K classes): chosen to
@@ -122,6 +159,9 @@ template <class Store, class Policy, bool Mixture> class Engine {
     // Demotable grains remembered per class (LIFO: the newest are the likeliest still valid).
     static constexpr std::size_t demotable_cap = 4096;
     static constexpr std::uint32_t no_grain = std::numeric_limits<std::uint32_t>::max();
+    static constexpr int max_groups = 4096;
+    // Grouped runs with a collision target: collisions processed serially in global time order.
+    static constexpr std::int64_t tail_collisions = 256;
 
     // `policies[k]` is the restitution of species pair k (species.hpp); one entry without Mixture.
     Engine(std::vector<SpeciesBlock> species, std::vector<Policy> policies, Store store, EngineOptions opt)
@@ -140,31 +180,39 @@ template <class Store, class Policy, bool Mixture> class Engine {
             throw std::invalid_argument("Engine: too many particles");
         if (!(opt_.step > 0))
             throw std::invalid_argument("Engine: step must be > 0");
+        if (opt_.groups < 1 || opt_.groups > max_groups)
+            throw std::invalid_argument("Engine: groups must be in 1 .. 4096");
+        if (opt_.threads < 1)
+            throw std::invalid_argument("Engine: threads must be >= 1");
         volume_ = static_cast<double>(n) / opt_.density;
         K_ = static_cast<std::size_t>(opt_.speed_classes);
+        G_ = static_cast<std::size_t>(opt_.groups);
         cuts_ = speed_class_cuts(opt_.speed_classes);
         const std::size_t S = species_.size();
-        blocks_.resize(S * K_);
-        for (std::size_t s = 0; s < S; ++s)
-            for (std::size_t c = 0; c < K_; ++c)
-                blocks_[s * K_ + c].species = static_cast<std::uint32_t>(s);
-        for (std::uint32_t x = 0; x < blocks_.size(); ++x)
-            for (std::uint32_t y = x; y < blocks_.size(); ++y)
-                block_pairs_.push_back(
-                    {x, y, static_cast<std::uint32_t>(pair_index(blocks_[x].species, blocks_[y].species, S)),
-                     0.0, 0.0, 0.0});
-        cumulative_.assign(block_pairs_.size(), 0.0);
-        rings_.resize(block_pairs_.size());
-        demotable_.resize(blocks_.size());
-        for (auto& d : demotable_)
-            d.reserve(demotable_cap);
-        class_.assign(K_ > 1 ? n : 0, 0);
+        groups_.resize(G_);
+        for (Group& g : groups_) {
+            g.blocks.resize(S * K_);
+            for (std::size_t s = 0; s < S; ++s)
+                for (std::size_t c = 0; c < K_; ++c)
+                    g.blocks[s * K_ + c].species = static_cast<std::uint32_t>(s);
+            for (std::uint32_t x = 0; x < g.blocks.size(); ++x)
+                for (std::uint32_t y = x; y < g.blocks.size(); ++y)
+                    g.block_pairs.push_back(
+                        {x, y, static_cast<std::uint32_t>(pair_index(g.blocks[x].species, g.blocks[y].species, S)),
+                         0.0, 0.0, 0.0});
+            g.cumulative.assign(g.block_pairs.size(), 0.0);
+            g.rings.resize(g.block_pairs.size());
+            g.demotable.resize(g.blocks.size());
+            for (auto& d : g.demotable)
+                d.reserve(G_ > 1 ? demotable_cap / 8 : demotable_cap);
+        }
+        key_.assign(K_ * G_ > 1 ? n : 0, 0);
         mv2_.assign(S, 0.0);
         cut2_.assign(cuts_.size(), 0.0);
-        count_.assign(K_, 0);
-        next_.assign(K_, 0);
-        end_.assign(K_, 0);
-        max2_.assign(K_, 0.0);
+        count_.assign(K_ * G_, 0);
+        next_.assign(K_ * G_, 0);
+        end_.assign(K_ * G_, 0);
+        max2_.assign(K_ * G_, 0.0);
         thermal_speed_.assign(S, 0.0);
         for (std::size_t s = 0; s < S; ++s) { // the first step's class cuts
             double sum2 = 0;
@@ -179,63 +227,27 @@ template <class Store, class Policy, bool Mixture> class Engine {
     // collision, time() being its time) or until the next candidate would come at or after
     // `t_stop` (returns `time`, time() = t_stop if t_stop is finite). `stalled`: no collision can
     // ever happen (every grain at rest in the centre-of-mass frame).
-    // `obs(const CollisionRecord&, std::size_t species_pair)` sees every collision.
+    // `obs(const CollisionRecord&, std::size_t species_pair)` sees every collision; with groups > 1
+    // and threads > 1 it should be a ForkableObserver (or stateless) to be called from several threads.
     template <class Observer> StopReason run(std::int64_t collision_target, double t_stop, Observer&& obs) {
-        if (c_.collisions >= collision_target)
+        if (collisions() >= collision_target)
             return StopReason::collisions;
-        for (;;) {
-            if (t_next_ >= t_step_end_) {
-                if (stalled_) {
-                    if (std::isfinite(t_stop))
-                        t_ = std::max(t_, t_stop);
-                    return std::isfinite(t_stop) ? StopReason::time : StopReason::stalled;
-                }
-                begin_step();
-                continue;
-            }
-            if (t_next_ >= t_stop) {
-                t_ = t_stop;
-                return StopReason::time;
-            }
-            t_ = t_next_;
-            ++c_.candidates;
-            const std::size_t k = choose_block_pair();
-            const BlockPair& bp = block_pairs_[k];
-            std::uint32_t i, j;
-            take_candidate(k, i, j);
-            Vec3& v_i = store_.v(i);
-            Vec3& v_j = store_.v(j);
-            const Vec3 g_c = v_i - v_j;
-            const double g2 = norm2(g_c);
-            const double x = uniform01(rng_) * bp.gmax;
-            if (x * x < g2) { // accepted with probability |g_c|/g_max
-                const Vec3 n = sample_impact_normal(rng_, g_c, sqrt_nonneg(g2));
-                const std::size_t sp = Mixture ? bp.species_pair : 0;
-                const PairConstants& pc = types_[sp].pc;
-                const Policy& policy = policies_[sp];
-                CollisionRecord rec;
-                if constexpr (Policy::needs_rotation) {
-                    rec = collide(pc, policy, v_i, store_.w(i), v_j, store_.w(j), n);
-                } else {
-                    rec = collide(pc, policy, v_i, v_j, n);
-                }
-                ++c_.collisions;
-                obs(rec, sp);
-                const double vi2 = norm2(v_i), vj2 = norm2(v_j);
-                std::uint32_t x_i = bp.x, x_j = bp.y;
-                bool rates_changed = false;
-                rates_changed |= settle(i, x_i, vi2, j, x_j);
-                rates_changed |= settle(j, x_j, vj2, i, x_i);
-                if (rates_changed) [[unlikely]] {
-                    ++c_.bound_raises;
-                    update_rates();
-                }
-                t_next_ = t_ + exponential_(rng_) * inv_rate_;
-                if (c_.collisions >= collision_target)
-                    return StopReason::collisions;
-            } else {
-                t_next_ = t_ + exponential_(rng_) * inv_rate_;
-            }
+        if (G_ == 1)
+            return run_one(collision_target, t_stop, obs);
+        using O = std::remove_cvref_t<Observer>;
+        if constexpr (ForkableObserver<O>) {
+            std::vector<O> local;
+            local.reserve(G_);
+            for (std::size_t g = 0; g < G_; ++g)
+                local.push_back(obs.fork());
+            const StopReason r = run_groups(collision_target, t_stop, opt_.threads,
+                                            [&](std::size_t g) -> O& { return local[g]; });
+            for (const O& o : local)
+                obs.merge(o);
+            return r;
+        } else {
+            const int threads = std::is_empty_v<O> ? opt_.threads : 1;
+            return run_groups(collision_target, t_stop, threads, [&](std::size_t) -> Observer& { return obs; });
         }
     }
     StopReason run_collisions(std::int64_t collision_target) {
@@ -249,12 +261,36 @@ template <class Store, class Policy, bool Mixture> class Engine {
         if (stalled_)
             return;
         t_step_end_ = t_;
-        t_next_ = t_;
+        for (Group& g : groups_)
+            g.t_next = t_;
+    }
+
+    // OpenMP threads over the groups (no influence on the results).
+    void set_threads(int threads) {
+        if (threads < 1)
+            throw std::invalid_argument("Engine: threads must be >= 1");
+        opt_.threads = threads;
     }
 
     double time() const { return t_; }
-    std::int64_t collisions() const { return c_.collisions; }
-    const EngineCounters& counters() const { return c_; }
+    std::int64_t collisions() const {
+        std::int64_t c = 0;
+        for (const Group& g : groups_)
+            c += g.c.collisions;
+        return c;
+    }
+    EngineCounters counters() const {
+        EngineCounters c = c_;
+        for (const Group& g : groups_) {
+            c.collisions += g.c.collisions;
+            c.candidates += g.c.candidates;
+            c.bound_raises += g.c.bound_raises;
+            c.promotions += g.c.promotions;
+            c.range_moves += g.c.range_moves;
+            c.retargets += g.c.retargets;
+        }
+        return c;
+    }
     const Store& store() const { return store_; }
     Store& store() { return store_; }
     const std::vector<SpeciesBlock>& species() const { return species_; }
@@ -262,10 +298,23 @@ template <class Store, class Policy, bool Mixture> class Engine {
     const std::vector<Policy>& policies() const { return policies_; }
     double volume() const { return volume_; }
     std::size_t particles() const { return store_.size(); }
+    std::size_t groups() const { return G_; }
     double step_length() const { return step_length_; }
-    double candidate_rate() const { return rate_; }
-    // The bound on |v| of species s: its fastest class's bound (its maximum speed at the step start).
-    double vmax(std::size_t s) const { return blocks_[s * K_ + K_ - 1].bound; }
+    // Candidates per unit time, summed over the groups.
+    double candidate_rate() const {
+        double r = 0;
+        for (const Group& g : groups_)
+            r += g.rate;
+        return r;
+    }
+    // The bound on |v| of species s: its fastest class's bound over the groups (its maximum speed
+    // at the step start).
+    double vmax(std::size_t s) const {
+        double b = 0;
+        for (const Group& g : groups_)
+            b = std::max(b, g.blocks[s * K_ + K_ - 1].bound);
+        return b;
+    }
 
   private:
     // Speed class c of species s: the store range [begin, end); every grain in it has |v| <= bound.
@@ -289,16 +338,199 @@ template <class Store, class Policy, bool Mixture> class Engine {
         std::array<Candidate, ring_size> c{};
         unsigned head = 0;
     };
+    struct GroupCounters {
+        std::int64_t collisions = 0, candidates = 0, bound_raises = 0, promotions = 0, range_moves = 0,
+                     retargets = 0;
+    };
+    // One group: a DSMC gas of its own for the step (blocks species-major, s K + c). Aligned to a
+    // cache line, so that groups on different threads share none.
+    struct alignas(64) Group {
+        std::vector<Block> blocks;
+        std::vector<BlockPair> block_pairs; // all x <= y
+        std::vector<double> cumulative;
+        std::vector<Ring> rings;
+        std::vector<std::vector<std::uint32_t>> demotable; // per block: grains slow enough for the class below
+        Rng rng{};
+        boost::random::exponential_distribution<double> exponential{1.0};
+        double rate = 0, inv_rate = 0;
+        double t = 0, t_next = 0;
+        GroupCounters c{};
+    };
 
-    std::uint32_t draw_in(const Block& b) {
-        return b.size() ? b.begin + static_cast<std::uint32_t>(uniform_index(rng_, b.size())) : b.begin;
+    // The loop of one group: processes its candidates while the next one comes before `t_limit`,
+    // up to `quota` collisions. Returns the collisions done; g.t is the time of the last candidate.
+    // Never inlined: one compiled body serves every caller (serial, parallel phase, tail), so the
+    // compiler's floating-point contraction (FMA) is the same wherever a collision is computed and
+    // the trajectory is bitwise independent of the threads and of where run() pauses.
+    template <class Observer>
+    [[gnu::noinline]] std::int64_t advance(Group& g, double t_limit, std::int64_t quota, Observer& obs) {
+        std::int64_t done = 0;
+        while (done < quota && g.t_next < t_limit) {
+            g.t = g.t_next;
+            ++g.c.candidates;
+            const std::size_t k = choose_block_pair(g);
+            const BlockPair& bp = g.block_pairs[k];
+            std::uint32_t i, j;
+            take_candidate(g, k, i, j);
+            Vec3& v_i = store_.v(i);
+            Vec3& v_j = store_.v(j);
+            const Vec3 g_c = v_i - v_j;
+            const double g2 = norm2(g_c);
+            const double x = uniform01(g.rng) * bp.gmax;
+            if (x * x < g2) { // accepted with probability |g_c|/g_max
+                const Vec3 n = sample_impact_normal(g.rng, g_c, sqrt_nonneg(g2));
+                const std::size_t sp = Mixture ? bp.species_pair : 0;
+                const PairConstants& pc = types_[sp].pc;
+                const Policy& policy = policies_[sp];
+                CollisionRecord rec;
+                if constexpr (Policy::needs_rotation) {
+                    rec = collide(pc, policy, v_i, store_.w(i), v_j, store_.w(j), n);
+                } else {
+                    rec = collide(pc, policy, v_i, v_j, n);
+                }
+                ++g.c.collisions;
+                ++done;
+                obs(rec, sp);
+                const double vi2 = norm2(v_i), vj2 = norm2(v_j);
+                std::uint32_t x_i = bp.x, x_j = bp.y;
+                bool rates_changed = false;
+                rates_changed |= settle(g, i, x_i, vi2, j, x_j);
+                rates_changed |= settle(g, j, x_j, vj2, i, x_i);
+                if (rates_changed) [[unlikely]] {
+                    ++g.c.bound_raises;
+                    update_rates(g);
+                }
+            }
+            g.t_next = g.t + g.exponential(g.rng) * g.inv_rate;
+        }
+        return done;
     }
 
-    Candidate draw_candidate(std::size_t k) {
-        const BlockPair& bp = block_pairs_[k];
-        const Block& X = blocks_[bp.x];
-        const Block& Y = blocks_[bp.y];
-        Candidate c{draw_in(X), draw_in(Y), X.begin, X.end, Y.begin, Y.end};
+    // One group: the plain event loop.
+    template <class Observer> StopReason run_one(std::int64_t collision_target, double t_stop, Observer& obs) {
+        Group& g = groups_[0];
+        for (;;) {
+            if (g.t_next >= t_step_end_) {
+                if (stalled_)
+                    return stall(t_stop);
+                begin_step();
+                continue;
+            }
+            if (g.t_next >= t_stop) {
+                t_ = t_stop;
+                return StopReason::time;
+            }
+            advance(g, std::min(t_stop, t_step_end_), collision_target - g.c.collisions, obs);
+            t_ = g.t;
+            if (g.c.collisions >= collision_target)
+                return StopReason::collisions;
+        }
+    }
+
+    StopReason stall(double t_stop) {
+        if (std::isfinite(t_stop))
+            t_ = std::max(t_, t_stop);
+        return std::isfinite(t_stop) ? StopReason::time : StopReason::stalled;
+    }
+
+    // Several groups (see "Groups" above). `obs_of(g)` is the observer of group g.
+    template <class ObsOf>
+    StopReason run_groups(std::int64_t collision_target, double t_stop, int threads, ObsOf&& obs_of) {
+        const bool counting = collision_target < std::numeric_limits<std::int64_t>::max();
+        for (;;) {
+            double first = std::numeric_limits<double>::infinity();
+            for (const Group& g : groups_)
+                first = std::min(first, g.t_next);
+            if (first >= t_step_end_) {
+                if (stalled_)
+                    return stall(t_stop);
+                begin_step();
+                continue;
+            }
+            if (first >= t_stop) {
+                t_ = t_stop;
+                return StopReason::time;
+            }
+            const double t_limit = std::min(t_stop, t_step_end_);
+            const std::int64_t remaining = collision_target - collisions();
+            if (!counting || remaining > tail_collisions) {
+                // A parallel phase to a common time: about half the remaining collisions.
+                double t_phase = t_limit;
+                if (counting) {
+                    const EngineCounters c = counters();
+                    const double acceptance =
+                        c.candidates > 1000 ? std::max(0.01, static_cast<double>(c.collisions) /
+                                                                 static_cast<double>(c.candidates))
+                                            : 1.0;
+                    t_phase = std::min(t_limit, std::max(t_, first) + 0.5 * static_cast<double>(remaining) /
+                                                                          (candidate_rate() * acceptance));
+                }
+                parallel_advance(t_phase, threads, obs_of);
+                ++c_.phases;
+                t_ = t_phase;
+                if (counting && collisions() >= collision_target) {
+                    if (collisions() > collision_target)
+                        ++c_.overshoots;
+                    return StopReason::collisions;
+                }
+                continue;
+            }
+            // The tail: one candidate at a time, in the group whose next candidate comes first.
+            for (;;) {
+                std::size_t a = 0;
+                double second = std::numeric_limits<double>::infinity();
+                for (std::size_t g = 1; g < G_; ++g) {
+                    if (groups_[g].t_next < groups_[a].t_next) {
+                        second = groups_[a].t_next;
+                        a = g;
+                    } else {
+                        second = std::min(second, groups_[g].t_next);
+                    }
+                }
+                Group& ga = groups_[a];
+                if (ga.t_next >= t_limit)
+                    break;
+                if (advance(ga, std::min(second, t_limit), 1, obs_of(a)) &&
+                    collisions() >= collision_target) {
+                    t_ = ga.t;
+                    return StopReason::collisions;
+                }
+            }
+            t_ = t_limit;
+        }
+    }
+
+    template <class ObsOf> void parallel_advance(double t_phase, int threads, ObsOf& obs_of) {
+        const auto G = static_cast<std::int64_t>(G_);
+        if (threads <= 1) {
+            for (std::int64_t g = 0; g < G; ++g)
+                advance(groups_[g], t_phase, std::numeric_limits<std::int64_t>::max(), obs_of(g));
+            return;
+        }
+        std::exception_ptr error;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+        for (std::int64_t g = 0; g < G; ++g) {
+            try {
+                advance(groups_[g], t_phase, std::numeric_limits<std::int64_t>::max(), obs_of(g));
+            } catch (...) {
+#pragma omp critical(roughgas_engine_error)
+                if (!error)
+                    error = std::current_exception();
+            }
+        }
+        if (error)
+            std::rethrow_exception(error);
+    }
+
+    std::uint32_t draw_in(Group& g, const Block& b) {
+        return b.size() ? b.begin + static_cast<std::uint32_t>(uniform_index(g.rng, b.size())) : b.begin;
+    }
+
+    Candidate draw_candidate(Group& g, std::size_t k) {
+        const BlockPair& bp = g.block_pairs[k];
+        const Block& X = g.blocks[bp.x];
+        const Block& Y = g.blocks[bp.y];
+        Candidate c{draw_in(g, X), draw_in(g, Y), X.begin, X.end, Y.begin, Y.end};
         if (X.size())
             store_.prefetch(c.i);
         if (Y.size())
@@ -310,47 +542,47 @@ template <class Store, class Policy, bool Mixture> class Engine {
     // Exact: with probability m/n (m = size of the overlap) an index in the overlap (idx if it lies
     // there: given that, it is uniform over the overlap; else a fresh one), otherwise a fresh index
     // outside the overlap.
-    std::uint32_t retarget(std::uint32_t idx, std::uint32_t b0, std::uint32_t e0, const Block& B) {
+    std::uint32_t retarget(Group& g, std::uint32_t idx, std::uint32_t b0, std::uint32_t e0, const Block& B) {
         const std::uint32_t b1 = B.begin, e1 = B.end;
         if (b0 == b1 && e0 == e1) [[likely]]
             return idx;
-        ++c_.retargets;
+        ++g.c.retargets;
         const std::uint32_t n = e1 - b1;
         const std::uint32_t lo = std::max(b0, b1), hi = std::min(e0, e1);
         const std::uint32_t m = hi > lo ? hi - lo : 0;
         if (m == 0)
-            return b1 + static_cast<std::uint32_t>(uniform_index(rng_, n));
-        if (uniform_index(rng_, n) < m)
-            return idx >= lo && idx < hi ? idx : lo + static_cast<std::uint32_t>(uniform_index(rng_, m));
-        const std::uint32_t k = static_cast<std::uint32_t>(uniform_index(rng_, n - m));
+            return b1 + static_cast<std::uint32_t>(uniform_index(g.rng, n));
+        if (uniform_index(g.rng, n) < m)
+            return idx >= lo && idx < hi ? idx : lo + static_cast<std::uint32_t>(uniform_index(g.rng, m));
+        const std::uint32_t k = static_cast<std::uint32_t>(uniform_index(g.rng, n - m));
         return k < lo - b1 ? b1 + k : hi + (k - (lo - b1));
     }
 
-    void take_candidate(std::size_t k, std::uint32_t& i, std::uint32_t& j) {
-        Ring& r = rings_[k];
+    void take_candidate(Group& g, std::size_t k, std::uint32_t& i, std::uint32_t& j) {
+        Ring& r = g.rings[k];
         const Candidate c = r.c[r.head];
-        r.c[r.head] = draw_candidate(k);
+        r.c[r.head] = draw_candidate(g, k);
         r.head = (r.head + 1) % ring_size;
-        const BlockPair& bp = block_pairs_[k];
-        const Block& X = blocks_[bp.x];
-        i = retarget(c.i, c.ib, c.ie, X);
-        j = retarget(c.j, c.jb, c.je, blocks_[bp.y]);
+        const BlockPair& bp = g.block_pairs[k];
+        const Block& X = g.blocks[bp.x];
+        i = retarget(g, c.i, c.ib, c.ie, X);
+        j = retarget(g, c.j, c.jb, c.je, g.blocks[bp.y]);
         if (bp.x == bp.y) { // i and j drawn independently from one block: a distinct pair by rejection
             while (j == i)
-                [[unlikely]] j = X.begin + static_cast<std::uint32_t>(uniform_index(rng_, X.size()));
+                [[unlikely]] j = X.begin + static_cast<std::uint32_t>(uniform_index(g.rng, X.size()));
         }
     }
 
     // The block pair of the next candidate, with probability rate/total: the number of cumulative
     // rates at or below a uniform point (branch-free: the outcome is unpredictable).
-    std::size_t choose_block_pair() {
-        const std::size_t n = cumulative_.size();
+    std::size_t choose_block_pair(Group& g) {
+        const std::size_t n = g.cumulative.size();
         if (n == 1)
             return 0;
-        const double x = uniform01(rng_) * rate_;
+        const double x = uniform01(g.rng) * g.rate;
         std::size_t k = 0;
         for (std::size_t q = 0; q + 1 < n; ++q)
-            k += x >= cumulative_[q];
+            k += x >= g.cumulative[q];
         return k;
     }
 
@@ -364,19 +596,19 @@ template <class Store, class Policy, bool Mixture> class Engine {
     //  - slow enough for the class below: remembered as demotable.
     // `other`, `other_block`: the collision partner, which follows if it was moved.
     // Returns whether a bound or a block range changed (the rates must then be updated).
-    bool settle(std::uint32_t& i, std::uint32_t& x, double v2, std::uint32_t& other,
+    bool settle(Group& g, std::uint32_t& i, std::uint32_t& x, double v2, std::uint32_t& other,
                 std::uint32_t& other_block) {
+        std::vector<Block>& blocks = g.blocks;
         bool changed = false;
-        while (v2 > blocks_[x].ceiling2) {
+        while (v2 > blocks[x].ceiling2) {
             const std::uint32_t y =
                 x + 1; // the next class of the same species (the top class has no ceiling)
-            std::vector<std::uint32_t>& cand = demotable_[y];
+            std::vector<std::uint32_t>& cand = g.demotable[y];
             std::uint32_t k = no_grain;
             while (!cand.empty()) {
                 const std::uint32_t q = cand.back();
                 cand.pop_back();
-                if (q >= blocks_[y].begin && q < blocks_[y].end &&
-                    norm2(store_.v(q)) <= blocks_[x].ceiling2) {
+                if (q >= blocks[y].begin && q < blocks[y].end && norm2(store_.v(q)) <= blocks[x].ceiling2) {
                     k = q;
                     break;
                 }
@@ -388,15 +620,15 @@ template <class Store, class Policy, bool Mixture> class Engine {
                     other_block = x;
                 }
                 const double w2 = norm2(store_.v(i)); // the demoted grain, now in block x
-                if (w2 > blocks_[x].bound2) {
-                    blocks_[x].bound2 = w2;
-                    blocks_[x].bound = sqrt_nonneg(w2);
+                if (w2 > blocks[x].bound2) {
+                    blocks[x].bound2 = w2;
+                    blocks[x].bound = sqrt_nonneg(w2);
                     changed = true;
                 }
                 i = k;
-                ++c_.promotions;
+                ++g.c.promotions;
             } else {
-                Block& b = blocks_[x];
+                Block& b = blocks[x];
                 const std::uint32_t last = b.end - 1;
                 if (i != last) {
                     store_.swap_hot(i, last);
@@ -405,51 +637,61 @@ template <class Store, class Policy, bool Mixture> class Engine {
                     i = last;
                 }
                 --b.end;
-                --blocks_[y].begin;
-                ++c_.promotions;
-                ++c_.range_moves;
+                --blocks[y].begin;
+                ++g.c.promotions;
+                ++g.c.range_moves;
                 changed = true;
             }
             x = y;
         }
-        Block& b = blocks_[x];
+        Block& b = blocks[x];
         if (v2 > b.bound2) {
             b.bound2 = v2;
             b.bound = sqrt_nonneg(v2);
             return true;
         }
-        if (x % K_ != 0 && v2 <= blocks_[x - 1].ceiling2 && demotable_[x].size() < demotable_cap)
-            demotable_[x].push_back(i);
+        if (x % K_ != 0 && v2 <= blocks[x - 1].ceiling2 && g.demotable[x].size() < g.demotable[x].capacity())
+            g.demotable[x].push_back(i);
         return changed;
     }
 
-    void update_rates() {
+    // Candidate rates of a group: a pair inside a group collides at G times its rate in the whole
+    // gas (the group's volume is V/G), so that averaged over the partition every pair has its rate.
+    void update_rates(Group& g) {
+        const double scale = static_cast<double>(G_) / volume_;
         double total = 0;
-        for (std::size_t k = 0; k < block_pairs_.size(); ++k) {
-            BlockPair& bp = block_pairs_[k];
-            const Block& X = blocks_[bp.x];
-            const Block& Y = blocks_[bp.y];
+        for (std::size_t k = 0; k < g.block_pairs.size(); ++k) {
+            BlockPair& bp = g.block_pairs[k];
+            const Block& X = g.blocks[bp.x];
+            const Block& Y = g.blocks[bp.y];
             const double nx = X.size(), ny = Y.size();
             bp.pairs = bp.x == bp.y ? 0.5 * nx * (nx - 1.0) : nx * ny;
             // (1 + 1e-12): the computed |g_c| of two grains at their bounds, head-on, may round above
             // the computed sum of the bounds; the inflation keeps the acceptance probability below 1.
             bp.gmax = (X.bound + Y.bound) * (1.0 + 1e-12);
-            bp.rate = bp.pairs * types_[bp.species_pair].pc.cross_section * bp.gmax / volume_;
+            bp.rate = bp.pairs * types_[bp.species_pair].pc.cross_section * bp.gmax * scale;
             total += bp.rate;
-            cumulative_[k] = total;
+            g.cumulative[k] = total;
         }
-        rate_ = total;
-        inv_rate_ = 1.0 / total;
+        g.rate = total;
+        g.inv_rate = total > 0 ? 1.0 / total : std::numeric_limits<double>::infinity();
     }
 
-    // Refreshes the classes, bounds and frame, sets the step length, and starts the step's stream.
-    // Pass 1 reads every grain once (statistics, class sizes, each grain's new class into a byte
-    // per grain); pass 2 sorts in place by those bytes (American-flag sort: only grains whose class
-    // changed, about a quarter per mean free time, are moved).
-    void begin_step() {
+    // Refreshes the partition, the classes, bounds and frame, sets the step length, and starts the
+    // groups' streams. Pass 1 reads every grain once (statistics, bucket sizes, each grain's bucket
+    // (group, class) into a 16-bit key per grain); pass 2 sorts in place by those keys (American-flag
+    // sort: only grains whose bucket changed move; without groups about a quarter per mean free time
+    // for K = 2, with groups nearly all).
+    [[gnu::noinline]] void begin_step() {
         const std::size_t S = species_.size();
-        for (auto& d : demotable_)
-            d.clear();
+        const std::size_t B = G_ * K_; // buckets per species, group-major
+        for (Group& g : groups_)
+            for (auto& d : g.demotable)
+                d.clear();
+        // The partition: grain position p of the store goes to group floor(G h_p / 2^64), h_p the
+        // p-th output of a splitmix64 sequence keyed by (seed, partition, replica, step).
+        const std::uint64_t partition_key = stream_hash(
+            StreamKey{opt_.seed, Stream::partition, opt_.replica, static_cast<std::uint64_t>(c_.steps), 0});
         Vec3 momentum{};
         double mass = 0, mv2_all = 0;
         std::fill(mv2_.begin(), mv2_.end(), 0.0);
@@ -459,7 +701,7 @@ template <class Store, class Policy, bool Mixture> class Engine {
                 const double cut = cuts_[c] * thermal_speed_[s];
                 cut2_[c] = cut * cut;
             }
-            // Pass 1: statistics, class sizes and each grain's class.
+            // Pass 1: statistics, bucket sizes and each grain's bucket.
             std::fill(count_.begin(), count_.end(), 0);
             std::fill(max2_.begin(), max2_.end(), 0.0);
             double sum2 = 0;
@@ -467,39 +709,46 @@ template <class Store, class Policy, bool Mixture> class Engine {
             for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i) {
                 const Vec3& v = store_.v(i);
                 const double v2 = norm2(v);
-                std::uint8_t c = 0;
+                std::uint32_t c = 0;
                 for (std::size_t q = 0; q < cuts_.size(); ++q)
                     c += v2 > cut2_[q];
-                if (K_ > 1)
-                    class_[i] = c;
+                if (G_ > 1) {
+                    std::uint64_t h = partition_key + i * 0x9e3779b97f4a7c15ULL;
+                    const auto gi = static_cast<std::uint32_t>(
+                        (static_cast<__uint128_t>(splitmix64(h)) * G_) >> 64);
+                    c += gi * static_cast<std::uint32_t>(K_);
+                }
+                if (B > 1)
+                    key_[i] = static_cast<std::uint16_t>(c);
                 ++count_[c];
                 max2_[c] = std::max(max2_[c], v2);
                 sum2 += v2;
                 ps += v;
             }
-            // Pass 2: American-flag sort into the classes (each move puts one grain in its class).
+            // Pass 2: American-flag sort into the buckets (each move puts one grain in its bucket).
             std::uint32_t start = static_cast<std::uint32_t>(sp.offset);
-            for (std::size_t c = 0; c < K_; ++c) {
-                Block& b = blocks_[s * K_ + c];
-                b.begin = next_[c] = start;
-                b.end = end_[c] = start + count_[c];
+            for (std::size_t q = 0; q < B; ++q) {
+                const std::size_t g = q / K_, c = q % K_;
+                Block& b = groups_[g].blocks[s * K_ + c];
+                b.begin = next_[q] = start;
+                b.end = end_[q] = start + count_[q];
                 start = b.end;
                 b.ceiling2 = c + 1 < K_ ? cut2_[c] : std::numeric_limits<double>::infinity();
-                b.bound2 = max2_[c];
-                b.bound = sqrt_nonneg(max2_[c]);
+                b.bound2 = max2_[q];
+                b.bound = sqrt_nonneg(max2_[q]);
             }
-            if (K_ > 1) {
-                for (std::size_t c = 0; c < K_; ++c) {
-                    while (next_[c] < end_[c]) {
-                        const std::uint32_t p = next_[c];
-                        const std::uint8_t d = class_[p];
-                        if (d == c) {
-                            ++next_[c];
+            if (B > 1) {
+                for (std::size_t q = 0; q < B; ++q) {
+                    while (next_[q] < end_[q]) {
+                        const std::uint32_t p = next_[q];
+                        const std::uint16_t d = key_[p];
+                        if (d == q) {
+                            ++next_[q];
                         } else {
-                            const std::uint32_t q = next_[d]++;
-                            store_.swap_hot(p, q);
-                            class_[p] = class_[q];
-                            class_[q] = d;
+                            const std::uint32_t r = next_[d]++;
+                            store_.swap_hot(p, r);
+                            key_[p] = key_[r];
+                            key_[r] = d;
                         }
                     }
                 }
@@ -520,9 +769,11 @@ template <class Store, class Policy, bool Mixture> class Engine {
                 for (const SpeciesBlock& sp : species_)
                     for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i)
                         store_.v(i) -= u;
-                for (Block& b : blocks_) {
-                    b.bound += u_abs;
-                    b.bound2 = b.bound * b.bound;
+                for (Group& g : groups_) {
+                    for (Block& b : g.blocks) {
+                        b.bound += u_abs;
+                        b.bound2 = b.bound * b.bound;
+                    }
                 }
                 ++c_.recentrings;
             }
@@ -539,26 +790,36 @@ template <class Store, class Policy, bool Mixture> class Engine {
             const double mean_g = std::sqrt(8.0 / std::numbers::pi * (T_over_m(t.a) + T_over_m(t.b)));
             nu += 2.0 * t.pairs * t.pc.cross_section * mean_g / volume_ / static_cast<double>(store_.size());
         }
-        update_rates();
-        rng_ = make_stream(
-            StreamKey{opt_.seed, Stream::collisions, opt_.replica, static_cast<std::uint64_t>(c_.steps), 0});
+        double rate = 0;
+        for (std::size_t q = 0; q < G_; ++q) {
+            Group& g = groups_[q];
+            update_rates(g);
+            rate += g.rate;
+            g.rng = make_stream(StreamKey{opt_.seed, Stream::collisions, opt_.replica,
+                                          static_cast<std::uint64_t>(c_.steps), q});
+        }
         ++c_.steps;
         const double t0 = t_step_end_;
-        if (!(rate_ > 0) || !(nu > 0)) { // nothing moves: no collision can ever happen
+        if (!(rate > 0) || !(nu > 0)) { // nothing moves: no collision can ever happen
             stalled_ = true;
             step_length_ = std::numeric_limits<double>::infinity();
-            t_step_end_ = t_next_ = std::numeric_limits<double>::infinity();
+            t_step_end_ = std::numeric_limits<double>::infinity();
+            for (Group& g : groups_)
+                g.t_next = std::numeric_limits<double>::infinity();
             return;
         }
         step_length_ = opt_.step / nu;
         t_step_end_ = t0 + step_length_;
-        for (std::size_t k = 0; k < block_pairs_.size(); ++k) {
-            Ring& r = rings_[k];
-            r.head = 0;
-            for (auto& c : r.c)
-                c = draw_candidate(k);
+        for (Group& g : groups_) {
+            for (std::size_t k = 0; k < g.block_pairs.size(); ++k) {
+                Ring& r = g.rings[k];
+                r.head = 0;
+                for (auto& c : r.c)
+                    c = draw_candidate(g, k);
+            }
+            g.t = t0;
+            g.t_next = g.rate > 0 ? t0 + g.exponential(g.rng) * g.inv_rate : std::numeric_limits<double>::infinity();
         }
-        t_next_ = t0 + exponential_(rng_) * inv_rate_;
     }
 
     std::vector<SpeciesBlock> species_;
@@ -567,25 +828,17 @@ template <class Store, class Policy, bool Mixture> class Engine {
     Store store_;
     EngineOptions opt_;
     double volume_ = 0;
-    std::size_t K_ = 1;
+    std::size_t K_ = 1, G_ = 1;
     std::vector<double> cuts_;
     std::vector<double> thermal_speed_; // per species: sqrt(<v^2>/3) at the last step start
-
-    Rng rng_{};
-    boost::random::exponential_distribution<double> exponential_{1.0};
-    std::vector<Block> blocks_;          // species-major: block s K + c
-    std::vector<BlockPair> block_pairs_; // all x <= y
-    std::vector<double> cumulative_;
-    std::vector<Ring> rings_;
-    std::vector<std::vector<std::uint32_t>> demotable_; // per block: grains slow enough for the class below
-    // Scratch of begin_step: each grain's class (1 byte per grain, K > 1 only), per-species sums.
-    std::vector<std::uint8_t> class_;
+    std::vector<Group> groups_;
+    // Scratch of begin_step: each grain's bucket (2 bytes per grain, K G > 1 only), per-species sums.
+    std::vector<std::uint16_t> key_;
     std::vector<double> mv2_, cut2_, max2_;
     std::vector<std::uint32_t> count_, next_, end_;
-    double rate_ = 0, inv_rate_ = 0;
-    double t_ = 0, t_next_ = 0, t_step_end_ = 0, step_length_ = 0;
+    double t_ = 0, t_step_end_ = 0, step_length_ = 0;
     bool stalled_ = false;
-    EngineCounters c_{};
+    EngineCounters c_{}; // the engine's own counts (steps, frame, phases); the groups keep the rest
 };
 
 } // namespace roughgas

@@ -39,6 +39,7 @@ void run_replica(const RunSpec& spec, int replica, const RowSink& sink, const Pr
 struct ReplicaSummary {
     std::string kernel;             // the specialised collision loop that ran, e.g. "RoughAoS, constant, one species"
     std::size_t bytes_per_particle = 0;
+    int groups = 1;                 // random groups per step (dsmc/engine.hpp), run in parallel
     std::int64_t collisions = 0;
     std::int64_t candidates = 0;    // candidate pairs drawn (collisions/candidates: the majorant's acceptance)
     std::int64_t steps = 0;

@@ -37,7 +37,11 @@ struct RunSpec {
     int replicas = 1;
     double end = 10;                    // collisions per particle
     std::vector<double> output_times;   // collisions per particle, increasing, the last one == end
+    // OpenMP threads of one replica (the groups of a step run in parallel): no influence on the
+    // results. The command line shares --threads between replicas and groups (cli/run_command.cpp).
     int threads = 1;
+    // Random groups per DSMC step (dsmc/engine.hpp, "Groups"); 0: automatic, auto_groups(particles).
+    int groups = 0;
     // DSMC step length in mean free times. A step only refreshes the collision majorant (and the
     // frame); the collision statistics do not depend on it (dsmc/engine.hpp).
     double step = 1.0;
@@ -51,6 +55,19 @@ struct RunSpec {
     bool use_cache = true;
     double table_g_min = 1e-6, table_g_max = 1e2;
 };
+
+// The automatic group count: particles/16384 rounded down to a power of two (at least 1, at most
+// 4096), so that a group of rough grains (64 bytes each) takes about 1 MiB and stays in one core's
+// L2 (4 MiB here) while it collides. Depends on the particle count only, never on the threads.
+constexpr int auto_groups(std::int64_t particles) {
+    int g = 1;
+    while (g < 4096 && particles / (2 * g) >= 16384)
+        g *= 2;
+    return g;
+}
+constexpr int effective_groups(const RunSpec& spec) {
+    return spec.groups > 0 ? spec.groups : auto_groups(spec.particles);
+}
 
 constexpr std::size_t pair_index(std::size_t a, std::size_t b, std::size_t n_species) {
     if (a > b) { const std::size_t t = a; a = b; b = t; }

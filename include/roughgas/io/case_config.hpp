@@ -59,6 +59,7 @@ struct RunConfig {
     std::int64_t particles = 0; // simulated particles (statistics only)
     double density = 1.0;       // number density n [1/length^3]: sets the time scale
     std::int64_t replicas = 1;  // independent runs averaged (columns X_err)
+    std::int64_t groups = 0;    // per-step random groups of the DSMC (0: automatic)
     std::uint64_t seed = 1;
     double end = 0;            // collisions per particle
     double output_every = 1.0; // collisions per particle (first output for log spacing)
