@@ -186,6 +186,7 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
                           (Mixture ? std::to_string(S) + " species" : "one species");
         summary->groups = static_cast<int>(engine.groups());
         summary->bytes_per_particle = Store::bytes_per_particle;
+        summary->memory_per_particle = engine.bytes_per_particle();
         summary->collisions = k.collisions;
         summary->candidates = k.candidates;
         summary->steps = k.steps;

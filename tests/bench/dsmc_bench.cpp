@@ -1,13 +1,16 @@
-// Collisions per second of the DSMC collision loop on one core (issue 3 "Speed", issue 5 items 1-2).
+// Collisions per second of the DSMC collision loop (issue 3 "Speed", issue 5 items 1-3).
 // Run: build/tests/bench/dsmc_bench [--benchmark_filter=...] [--benchmark_repetitions=3]
 //
 // Each benchmark builds a homogeneous cooling gas (Maxwellian start, T = 1, n = 1, unit grains;
 // the ice cases in SI units with speeds ~0.1 m/s), warms it up for half a collision per particle
 // and then times chunks of 1e5 collisions. items_per_second = collisions per second. Counters:
-// acceptance = collisions/candidates of the majorant, bytes = bytes per particle of the store.
+// acceptance = collisions/candidates of the majorant, bytes = bytes per particle of the store,
+// bytes_total = with the engine's index array and scratch. Groups: auto_groups(N) unless given
+// (what roughgas run uses); wall-clock time where threads vary (UseRealTime).
 //
-//   BM_Case<...>         the kernels run_replica selects: constant rough / smooth / elastic smooth,
-//                        coulomb, viscoelastic and brilliantov from cached tables
+//   BM_Case<...>/N/T     the kernels run_replica selects: constant rough / smooth / elastic smooth,
+//                        coulomb, viscoelastic and brilliantov from cached tables; T threads
+//   BM_Threads<...>/N/G/T  G groups (1: none) on T threads
 //   BM_Classes<...>/N/K  speed classes of the majorant (K = 1: the plain vmax_a + vmax_b bound)
 //   BM_Layout<...>       the same rough and smooth constant kernels on the other particle layouts
 //   BM_Skip<...>         what each compile-time skip is worth: the rough kernel at beta = -1 (omega
@@ -17,6 +20,7 @@
 #include "roughgas/dsmc/engine.hpp"
 #include "roughgas/dsmc/init.hpp"
 #include "roughgas/dsmc/particles.hpp"
+#include "roughgas/dsmc/run_spec.hpp"
 #include "roughgas/dsmc/tables.hpp"
 
 #include <benchmark/benchmark.h>
@@ -31,8 +35,10 @@ constexpr std::int64_t bench_chunk = 100000;
 
 template <class Store, class Policy, bool Mixture = false>
 void run_bench(benchmark::State& state, const SpeciesSpec& species, const Policy& policy, int classes = 2,
-               int groups = 1, int threads = 1) {
+               int groups = 0, int threads = 1) {
     const auto N = static_cast<std::int64_t>(state.range(0));
+    if (groups == 0) // what run_replica uses (run_spec.hpp)
+        groups = auto_groups(N);
     const auto blocks = make_species_blocks({species}, N);
     Store store(static_cast<std::size_t>(N));
     init_maxwellian(store, blocks, 1, 0);
@@ -73,6 +79,7 @@ void run_bench(benchmark::State& state, const SpeciesSpec& species, const Policy
     state.counters["acceptance"] =
         static_cast<double>(e.collisions() - c0) / static_cast<double>(e.counters().candidates - k0);
     state.counters["bytes"] = static_cast<double>(Store::bytes_per_particle);
+    state.counters["bytes_total"] = static_cast<double>(e.bytes_per_particle());
     state.counters["promotions"] =
         static_cast<double>(e.counters().promotions) / static_cast<double>(e.collisions());
 }
@@ -110,27 +117,34 @@ const TangentialTable& tangential_table() {
     return t;
 }
 
+// /N/T: N particles, T threads (groups: auto_groups(N), as roughgas run), wall-clock time.
+int threads_of(const benchmark::State& s) {
+    return static_cast<int>(s.range(1));
+}
 void BM_Case_RoughConstant(benchmark::State& s) {
-    run_bench<RoughAoS>(s, unit_grain(), make_rough_constant(0.9, 0.5));
+    run_bench<RoughAoS>(s, unit_grain(), make_rough_constant(0.9, 0.5), 2, 0, threads_of(s));
 }
 void BM_Case_SmoothConstant(benchmark::State& s) {
-    run_bench<SmoothAoS>(s, unit_grain(), make_smooth_constant(0.9));
+    run_bench<SmoothAoS>(s, unit_grain(), make_smooth_constant(0.9), 2, 0, threads_of(s));
 }
 void BM_Case_SmoothElastic(benchmark::State& s) {
-    run_bench<SmoothAoS>(s, unit_grain(), make_smooth_constant(1.0));
+    run_bench<SmoothAoS>(s, unit_grain(), make_smooth_constant(1.0), 2, 0, threads_of(s));
 }
 void BM_Case_Coulomb(benchmark::State& s) {
     run_bench<RoughAoS>(s, unit_grain(),
-                        make_coulomb(0.9, 0.5, 0.2, make_pair_constants({1, 0.5, 0.4}, {1, 0.5, 0.4}).kappa));
+                        make_coulomb(0.9, 0.5, 0.2, make_pair_constants({1, 0.5, 0.4}, {1, 0.5, 0.4}).kappa), 2, 0,
+                        threads_of(s));
 }
 void BM_Case_ViscoelasticSmooth(benchmark::State& s) {
-    run_bench<SmoothAoS>(s, ice_grain(), make_viscoelastic_smooth(normal_table(), ice_pair()));
+    run_bench<SmoothAoS>(s, ice_grain(), make_viscoelastic_smooth(normal_table(), ice_pair()), 2, 0,
+                         threads_of(s));
 }
 void BM_Case_Viscoelastic(benchmark::State& s) {
-    run_bench<RoughAoS>(s, ice_grain(), make_viscoelastic(normal_table(), ice_pair(), 0.5));
+    run_bench<RoughAoS>(s, ice_grain(), make_viscoelastic(normal_table(), ice_pair(), 0.5), 2, 0, threads_of(s));
 }
 void BM_Case_Brilliantov(benchmark::State& s) {
-    run_bench<RoughAoS>(s, ice_grain(), make_brilliantov(normal_table(), tangential_table(), ice_pair()));
+    run_bench<RoughAoS>(s, ice_grain(), make_brilliantov(normal_table(), tangential_table(), ice_pair()), 2, 0,
+                        threads_of(s));
 }
 
 // Speed classes of the majorant (engine.hpp): 1 = the plain vmax_a + vmax_b bound.
@@ -173,13 +187,19 @@ void BM_Threads_SmoothConstant(benchmark::State& s) {
 }
 
 #define ROUGHGAS_SIZES ->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->MinTime(2.0)
-BENCHMARK(BM_Case_RoughConstant) ROUGHGAS_SIZES;
-BENCHMARK(BM_Case_SmoothConstant) ROUGHGAS_SIZES;
-BENCHMARK(BM_Case_SmoothElastic) ROUGHGAS_SIZES;
-BENCHMARK(BM_Case_Coulomb) ROUGHGAS_SIZES;
-BENCHMARK(BM_Case_ViscoelasticSmooth) ROUGHGAS_SIZES;
-BENCHMARK(BM_Case_Viscoelastic) ROUGHGAS_SIZES;
-BENCHMARK(BM_Case_Brilliantov) ROUGHGAS_SIZES;
+// The README table (scripts/bench_table.py): N = 1e4 .. 1e7 on 1 and 2 threads.
+#define ROUGHGAS_CASE_SIZES                                                                              \
+    ->ArgsProduct({{10000, 100000, 1000000, 10000000}, {1, 2}})                                           \
+        ->Unit(benchmark::kMillisecond)                                                                   \
+        ->UseRealTime()                                                                                   \
+        ->MinTime(2.0)
+BENCHMARK(BM_Case_RoughConstant) ROUGHGAS_CASE_SIZES;
+BENCHMARK(BM_Case_SmoothConstant) ROUGHGAS_CASE_SIZES;
+BENCHMARK(BM_Case_SmoothElastic) ROUGHGAS_CASE_SIZES;
+BENCHMARK(BM_Case_Coulomb) ROUGHGAS_CASE_SIZES;
+BENCHMARK(BM_Case_ViscoelasticSmooth) ROUGHGAS_CASE_SIZES;
+BENCHMARK(BM_Case_Viscoelastic) ROUGHGAS_CASE_SIZES;
+BENCHMARK(BM_Case_Brilliantov) ROUGHGAS_CASE_SIZES;
 BENCHMARK(BM_Classes_RoughConstant)
     ->ArgsProduct({{100000, 1000000}, {1, 2, 3, 4}})
     ->Unit(benchmark::kMillisecond)

@@ -90,6 +90,7 @@
 #include <cstdint>
 #include <exception>
 #include <limits>
+#include <new>
 #include <numbers>
 #include <stdexcept>
 #include <type_traits>
@@ -138,6 +139,23 @@ concept ForkableObserver = requires(const O& c, O& o) {
     { c.fork() } -> std::convertible_to<O>;
     o.merge(c);
 };
+
+// Allocates whole cache lines, aligned: the small arrays of one group (blocks, rings, rates), which
+// its thread writes at every candidate, never share a line with another group's (no false sharing
+// between threads).
+template <class T> struct CacheLineAllocator {
+    using value_type = T;
+    static constexpr std::size_t line = 64;
+    CacheLineAllocator() = default;
+    template <class U> CacheLineAllocator(const CacheLineAllocator<U>&) noexcept {}
+    T* allocate(std::size_t n) {
+        const std::size_t bytes = (n * sizeof(T) + line - 1) / line * line;
+        return static_cast<T*>(::operator new(bytes, std::align_val_t{line}));
+    }
+    void deallocate(T* p, std::size_t) noexcept { ::operator delete(p, std::align_val_t{line}); }
+    template <class U> bool operator==(const CacheLineAllocator<U>&) const noexcept { return true; }
+};
+template <class T> using LineVector = std::vector<T, CacheLineAllocator<T>>;
 
 // Class boundaries in units of the thermal speed sqrt(T/m) (K - 1 cuts for K classes): chosen to
 // minimise the mean bound per grain of a Maxwellian at N ~ 1e5 .. 1e6.
@@ -300,6 +318,10 @@ template <class Store, class Policy, bool Mixture> class Engine {
     double volume() const { return volume_; }
     std::size_t particles() const { return store_.size(); }
     std::size_t groups() const { return G_; }
+    // Memory per grain: the store, the index array and the step start's bucket keys.
+    std::size_t bytes_per_particle() const {
+        return Store::bytes_per_particle + sizeof(std::uint32_t) + (key_.empty() ? 0 : sizeof(std::uint16_t));
+    }
     double step_length() const { return step_length_; }
     // Candidates per unit time, summed over the groups.
     double candidate_rate() const {
@@ -346,11 +368,11 @@ template <class Store, class Policy, bool Mixture> class Engine {
     // One group: a DSMC gas of its own for the step (blocks species-major, s K + c). Aligned to a
     // cache line, so that groups on different threads share none.
     struct alignas(64) Group {
-        std::vector<Block> blocks;
-        std::vector<BlockPair> block_pairs; // all x <= y
-        std::vector<double> cumulative;
-        std::vector<Ring> rings;
-        std::vector<std::vector<std::uint32_t>> demotable; // per block: grains slow enough for the class below
+        LineVector<Block> blocks;
+        LineVector<BlockPair> block_pairs; // all x <= y
+        LineVector<double> cumulative;
+        LineVector<Ring> rings;
+        LineVector<LineVector<std::uint32_t>> demotable; // per block: grains slow enough for the class below
         Rng rng{};
         boost::random::exponential_distribution<double> exponential{1.0};
         double rate = 0, inv_rate = 0;
@@ -600,12 +622,12 @@ template <class Store, class Policy, bool Mixture> class Engine {
     // Returns whether a bound or a block range changed (the rates must then be updated).
     bool settle(Group& g, std::uint32_t& i, std::uint32_t& x, double v2, std::uint32_t& other,
                 std::uint32_t& other_block) {
-        std::vector<Block>& blocks = g.blocks;
+        LineVector<Block>& blocks = g.blocks;
         bool changed = false;
         while (v2 > blocks[x].ceiling2) {
             const std::uint32_t y =
                 x + 1; // the next class of the same species (the top class has no ceiling)
-            std::vector<std::uint32_t>& cand = g.demotable[y];
+            LineVector<std::uint32_t>& cand = g.demotable[y];
             std::uint32_t k = no_grain;
             while (!cand.empty()) {
                 const std::uint32_t q = cand.back();

@@ -17,9 +17,9 @@
 // eight times what the second-level TLB holds).
 //
 // Particles of species s occupy the index range [offset_s, offset_s + count_s) (dsmc/species.hpp):
-// no species field is stored. Within it the engine keeps the grains sorted into speed classes
-// (swap_hot). A work unit of a later spatial or random partition is a set of such ranges after a
-// permutation of the store.
+// no species field is stored. The grains never move: the engine sorts 4-byte indices into speed
+// classes and groups (dsmc/engine.hpp), so a run needs bytes_per_particle + 4 (+ 2 of scratch
+// at a step start) bytes per grain.
 #include "roughgas/core/vec.hpp"
 
 #include <cstddef>
@@ -98,45 +98,26 @@ inline void prefetch_line(const void* p) {
 // ---- rough stores: v and omega are hot ----
 
 struct alignas(64) RoughGrain {
+    static constexpr std::string_view store_name = "RoughAoS";
     Vec3 v;
     Vec3 w; // omega
 };
 static_assert(sizeof(RoughGrain) == 64);
 
-class RoughAoS {
-  public:
-    static constexpr std::string_view name = "RoughAoS";
-    static constexpr bool rotation_hot = true;
-    static constexpr std::size_t bytes_per_particle = sizeof(RoughGrain);
-    explicit RoughAoS(std::size_t n = 0) : g_(n) {}
-    std::size_t size() const { return g_.size(); }
-    Vec3& v(std::size_t i) { return g_[i].v; }
-    Vec3& w(std::size_t i) { return g_[i].w; }
-    const Vec3& v(std::size_t i) const { return g_[i].v; }
-    const Vec3& w(std::size_t i) const { return g_[i].w; }
-    void prefetch(std::size_t i) const { prefetch_line(&g_[i]); }
-    // The engine moves grains between speed classes (engine.hpp): v and omega together.
-    void swap_hot(std::size_t i, std::size_t j) { swap_grains(i, j); }
-    void swap_grains(std::size_t i, std::size_t j) { std::swap(g_[i], g_[j]); }
-    Vec3Column velocities() const { return column_of(g_.data(), offsetof(RoughGrain, v)); }
-    Vec3Column angular_velocities() const { return column_of(g_.data(), offsetof(RoughGrain, w)); }
-
-  private:
-    HugePageBuffer<RoughGrain> g_;
-};
-
 struct PackedGrain {
+    static constexpr std::string_view store_name = "RoughPacked";
     Vec3 v;
     Vec3 w;
 };
 static_assert(sizeof(PackedGrain) == 48);
 
-class RoughPacked {
+// An array of grains {v, omega}: RoughGrain (one aligned cache line each) or PackedGrain (unpadded).
+template <class Grain> class RoughArray {
   public:
-    static constexpr std::string_view name = "RoughPacked";
+    static constexpr std::string_view name = Grain::store_name;
     static constexpr bool rotation_hot = true;
-    static constexpr std::size_t bytes_per_particle = sizeof(PackedGrain);
-    explicit RoughPacked(std::size_t n = 0) : g_(n) {}
+    static constexpr std::size_t bytes_per_particle = sizeof(Grain);
+    explicit RoughArray(std::size_t n = 0) : g_(n) {}
     std::size_t size() const { return g_.size(); }
     Vec3& v(std::size_t i) { return g_[i].v; }
     Vec3& w(std::size_t i) { return g_[i].w; }
@@ -145,17 +126,18 @@ class RoughPacked {
     void prefetch(std::size_t i) const {
         const char* p = reinterpret_cast<const char*>(&g_[i]);
         prefetch_line(p);
-        prefetch_line(p + sizeof(PackedGrain) - 1);
+        if constexpr (alignof(Grain) < 64 || sizeof(Grain) % 64 != 0)
+            prefetch_line(p + sizeof(Grain) - 1); // an unaligned grain may straddle two lines
     }
-    // The engine moves grains between speed classes (engine.hpp): v and omega together.
-    void swap_hot(std::size_t i, std::size_t j) { swap_grains(i, j); }
-    void swap_grains(std::size_t i, std::size_t j) { std::swap(g_[i], g_[j]); }
-    Vec3Column velocities() const { return column_of(g_.data(), offsetof(PackedGrain, v)); }
-    Vec3Column angular_velocities() const { return column_of(g_.data(), offsetof(PackedGrain, w)); }
+    Vec3Column velocities() const { return column_of(g_.data(), offsetof(Grain, v)); }
+    Vec3Column angular_velocities() const { return column_of(g_.data(), offsetof(Grain, w)); }
 
   private:
-    HugePageBuffer<PackedGrain> g_;
+    HugePageBuffer<Grain> g_;
 };
+
+using RoughAoS = RoughArray<RoughGrain>;
+using RoughPacked = RoughArray<PackedGrain>;
 
 class RoughSoA {
   public:
@@ -173,12 +155,6 @@ class RoughSoA {
         prefetch_line(reinterpret_cast<const char*>(&v_[i]) + sizeof(Vec3) - 1);
         prefetch_line(&w_[i]);
         prefetch_line(reinterpret_cast<const char*>(&w_[i]) + sizeof(Vec3) - 1);
-    }
-    // The engine moves grains between speed classes (engine.hpp): v and omega together.
-    void swap_hot(std::size_t i, std::size_t j) { swap_grains(i, j); }
-    void swap_grains(std::size_t i, std::size_t j) {
-        std::swap(v_[i], v_[j]);
-        std::swap(w_[i], w_[j]);
     }
     Vec3Column velocities() const { return column_of(v_.data(), 0); }
     Vec3Column angular_velocities() const { return column_of(w_.data(), 0); }
@@ -207,12 +183,6 @@ class SmoothAoS {
     Vec3& w(std::size_t i) { return w_[i]; }
     const Vec3& w(std::size_t i) const { return w_[i]; }
     void prefetch(std::size_t i) const { prefetch_line(&g_[i]); }
-    // The engine moves v only: omega is never read by a smooth collision (engine.hpp, "Particle order").
-    void swap_hot(std::size_t i, std::size_t j) { std::swap(g_[i], g_[j]); }
-    void swap_grains(std::size_t i, std::size_t j) {
-        std::swap(g_[i], g_[j]);
-        std::swap(w_[i], w_[j]);
-    }
     Vec3Column velocities() const { return column_of(g_.data(), offsetof(SmoothGrain, v)); }
     Vec3Column angular_velocities() const { return column_of(w_.data(), 0); }
 
@@ -235,12 +205,6 @@ class SmoothPacked {
     void prefetch(std::size_t i) const {
         prefetch_line(&v_[i]);
         prefetch_line(reinterpret_cast<const char*>(&v_[i]) + sizeof(Vec3) - 1);
-    }
-    // The engine moves v only: omega is never read by a smooth collision (engine.hpp, "Particle order").
-    void swap_hot(std::size_t i, std::size_t j) { std::swap(v_[i], v_[j]); }
-    void swap_grains(std::size_t i, std::size_t j) {
-        std::swap(v_[i], v_[j]);
-        std::swap(w_[i], w_[j]);
     }
     Vec3Column velocities() const { return column_of(v_.data(), 0); }
     Vec3Column angular_velocities() const { return column_of(w_.data(), 0); }

@@ -38,7 +38,8 @@ void run_replica(const RunSpec& spec, int replica, const RowSink& sink, const Pr
 // What one replica did, for the caller to report (the solver never prints).
 struct ReplicaSummary {
     std::string kernel;             // the specialised collision loop that ran, e.g. "RoughAoS, constant, one species"
-    std::size_t bytes_per_particle = 0;
+    std::size_t bytes_per_particle = 0;   // the particle store (dsmc/particles.hpp)
+    std::size_t memory_per_particle = 0;  // the store, the engine's index array and its step-start scratch
     int groups = 1;                 // random groups per step (dsmc/engine.hpp), run in parallel
     std::int64_t collisions = 0;
     std::int64_t candidates = 0;    // candidate pairs drawn (collisions/candidates: the majorant's acceptance)

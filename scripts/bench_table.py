@@ -1,0 +1,194 @@
+#!/usr/bin/env python3
+"""The performance tables of the README (issue 5), regenerated from the benchmark binaries.
+
+    scripts/python3 scripts/bench_table.py [--build build] [--out out/bench] [--repetitions 3] [--quick]
+
+Runs (Release build with benchmarks, ROUGHGAS_BUILD_BENCHMARKS=ON):
+  1. tests/bench/dsmc_bench BM_Case_*/N/T: collisions per second (wall clock) of the constant
+     rough, constant smooth, elastic smooth, coulomb, viscoelastic (smooth and rough) and brilliantov
+     kernels for N = 1e4 .. 1e7 on 1 and 2 threads (groups as `roughgas run` chooses them);
+  2. dsmc_bench BM_Skip_* / BM_Threads_* / BM_Layout_*: what each compile-time skip and the groups are worth;
+  3. tests/bench/restitution_bench BM_*TableBuild: building the restitution tables;
+  4. `roughgas run` of a constant rough case for each N under /usr/bin/time: peak memory (max RSS).
+Repetitions are randomly interleaved (Google Benchmark --benchmark_enable_random_interleaving), the
+median is reported, and every number comes with the load average (/proc/loadavg, 1 min) read
+before and after its benchmark: numbers taken on a loaded machine say so. Writes markdown to
+stdout and the raw JSON and CSV files to --out.
+"""
+import argparse
+import csv
+import datetime
+import json
+import os
+import platform
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+
+CASES = [
+    ("SmoothConstant", "constant, smooth (alpha 0.9)"),
+    ("SmoothElastic", "constant, smooth, elastic"),
+    ("RoughConstant", "constant, rough (alpha 0.9, beta 0.5)"),
+    ("Coulomb", "coulomb"),
+    ("ViscoelasticSmooth", "viscoelastic, smooth (ice)"),
+    ("Viscoelastic", "viscoelastic, beta 0.5 (ice)"),
+    ("Brilliantov", "brilliantov, cached (ice)"),
+]
+
+
+def loadavg():
+    with open("/proc/loadavg") as f:
+        return float(f.read().split()[0])
+
+
+def machine():
+    model, l2, l3 = "?", "?", "?"
+    try:
+        out = subprocess.run(["lscpu"], capture_output=True, text=True).stdout
+        for line in out.splitlines():
+            k, _, v = line.partition(":")
+            v = v.strip()
+            if k == "Model name":
+                model = v
+            elif k == "L2 cache":
+                l2 = v
+            elif k == "L3 cache":
+                l3 = v
+    except OSError:
+        pass
+    return f"{model}, {os.cpu_count()} CPUs, L2 {l2}, L3 {l3}, {platform.node()}"
+
+
+# Idle OpenMP threads sleep instead of spinning: on a machine shared with other work a spinning
+# thread takes CPU from the thread it waits for (measured: 2 threads 3x slower than 1 at load 4 on
+# 2 cores with libgomp's default spinning; same CPU time per collision as 1 thread when passive).
+BENCH_ENV = {**os.environ, "OMP_WAIT_POLICY": os.environ.get("OMP_WAIT_POLICY", "passive")}
+
+
+def run_bench(binary, flt, reps, out_json):
+    """Runs one Google Benchmark filter; returns ({name: (median items/s, median real ms)}, load before, after)."""
+    before = loadavg()
+    cmd = [binary, f"--benchmark_filter={flt}", f"--benchmark_repetitions={reps}",
+           "--benchmark_enable_random_interleaving=true", "--benchmark_report_aggregates_only=false",
+           "--benchmark_format=json", f"--benchmark_out={out_json}", "--benchmark_out_format=json"]
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, env=BENCH_ENV)
+    after = loadavg()
+    with open(out_json) as f:
+        data = json.load(f)
+    samples = {}
+    for b in data["benchmarks"]:
+        if b.get("run_type") != "iteration":
+            continue
+        name = re.sub(r"/min_time:[^/]*|/real_time|/iterations:\d+", "", b["run_name"])
+        samples.setdefault(name, []).append((b.get("items_per_second", 0.0), b["real_time"], b))
+    result = {}
+    for name, s in samples.items():
+        result[name] = (statistics.median(x[0] for x in s), statistics.median(x[1] for x in s), s[-1][2])
+    return result, before, after
+
+
+def fmt_rate(x):
+    return f"{x / 1e6:.2f}" if x else "-"
+
+
+def peak_memory(roughgas, n, threads):
+    """Max RSS of `roughgas run` of a rough constant case with n particles, 0.5 collisions per particle."""
+    case = f"""[run]
+particles = {n}
+end = 0.5
+output_every = 0.5
+[[species]]
+mass = 1.0
+radius = 0.5
+[collision]
+model = "constant"
+alpha = 0.9
+beta = 0.5
+"""
+    with tempfile.TemporaryDirectory() as d:
+        path = os.path.join(d, "case.toml")
+        with open(path, "w") as f:
+            f.write(case)
+        r = subprocess.run(["/usr/bin/time", "-f", "%M", roughgas, "run", path, "--out", os.path.join(d, "out"),
+                            "--quiet", "--threads", str(threads)], capture_output=True, text=True, check=True,
+                           env=BENCH_ENV)
+        kib = int(r.stderr.strip().splitlines()[-1])
+    return kib * 1024
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--build", default="build")
+    ap.add_argument("--out", default="out/bench")
+    ap.add_argument("--repetitions", type=int, default=3)
+    ap.add_argument("--quick", action="store_true", help="N up to 1e5, one repetition (checks the script)")
+    a = ap.parse_args()
+    os.makedirs(a.out, exist_ok=True)
+    dsmc = os.path.join(a.build, "tests", "bench", "dsmc_bench")
+    rest = os.path.join(a.build, "tests", "bench", "restitution_bench")
+    roughgas = os.path.join(a.build, "roughgas")
+    for b in (dsmc, rest, roughgas):
+        if not os.path.exists(b):
+            sys.exit(f"bench_table.py: {b} missing: build with -DCMAKE_BUILD_TYPE=Release (benchmarks on)")
+    reps = 1 if a.quick else a.repetitions
+    sizes = [10000, 100000] if a.quick else [10000, 100000, 1000000, 10000000]
+    size_re = "|".join(str(n) for n in sizes)
+
+    print(f"Measured {datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M} UTC on {machine()}; "
+          f"median of {reps} randomly interleaved repetitions; wall-clock collisions per second in 1e6/s; "
+          f"OMP_WAIT_POLICY={BENCH_ENV['OMP_WAIT_POLICY']}.\n")
+
+    rows = []
+    print("| kernel | N | 1 thread | 2 threads | 2T/1T | load (1 min) before, after |")
+    print("|--------|---|----------|-----------|-------|-----------------------------|")
+    for key, label in CASES:
+        res, l0, l1 = run_bench(dsmc, f"^BM_Case_{key}/({size_re})/", reps, os.path.join(a.out, f"case_{key}.json"))
+        for n in sizes:
+            r1 = res.get(f"BM_Case_{key}/{n}/1", (0, 0, {}))[0]
+            r2 = res.get(f"BM_Case_{key}/{n}/2", (0, 0, {}))[0]
+            ratio = f"{r2 / r1:.2f}" if r1 and r2 else "-"
+            print(f"| {label} | {n:.0e} | {fmt_rate(r1)} | {fmt_rate(r2)} | {ratio} | {l0:.2f}, {l1:.2f} |")
+            rows.append({"kernel": key, "N": n, "coll_per_s_1T": r1, "coll_per_s_2T": r2, "load_before": l0,
+                         "load_after": l1})
+    with open(os.path.join(a.out, "cases.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+
+    n_skip = "100000" if a.quick else "1000000"
+    res, l0, l1 = run_bench(dsmc, f"^BM_(Skip|Layout)_.*/{n_skip}", reps, os.path.join(a.out, "skips.json"))
+    base, l2, l3 = run_bench(dsmc, f"^BM_Case_(RoughConstant|SmoothConstant)/{n_skip}/1", reps,
+                             os.path.join(a.out, "skips_base.json"))
+    print(f"\nCompile-time skips and layouts, N = {n_skip}, one thread (load {l0:.2f} .. {l1:.2f}; "
+          f"references {l2:.2f} .. {l3:.2f}):\n")
+    print("| variant | 1e6 coll/s | bytes (store, total) |")
+    print("|---------|------------|----------------------|")
+    for name, (rate, _, b) in sorted({**base, **res}.items()):
+        print(f"| {name} | {fmt_rate(rate)} | {b.get('bytes', 0):.0f}, {b.get('bytes_total', 0):.0f} |")
+
+    res, l0, l1 = run_bench(dsmc, f"^BM_Threads_.*/{n_skip}/", reps, os.path.join(a.out, "threads.json"))
+    print(f"\nGroups G and threads T, N = {n_skip} (load {l0:.2f} .. {l1:.2f}):\n")
+    print("| benchmark (N/G/T) | 1e6 coll/s |")
+    print("|-------------------|------------|")
+    for name, (rate, _, _) in sorted(res.items()):
+        print(f"| {name} | {fmt_rate(rate)} |")
+
+    res, l0, l1 = run_bench(rest, "TableBuild", 1, os.path.join(a.out, "tables.json"))
+    print(f"\nRestitution table builds (load {l0:.2f} .. {l1:.2f}):\n")
+    print("| table | build time |")
+    print("|-------|------------|")
+    for name, (_, ms, _) in sorted(res.items()):
+        print(f"| {name} | {ms / 1000:.2f} s |")
+
+    print("\nPeak memory of `roughgas run` (rough constant case, 0.5 collisions per particle, 2 threads):\n")
+    print("| N | max RSS | per particle |")
+    print("|---|---------|--------------|")
+    for n in sizes:
+        rss = peak_memory(roughgas, n, 2)
+        print(f"| {n:.0e} | {rss / 2**20:.1f} MiB | {rss / n:.0f} B |")
+
+
+if __name__ == "__main__":
+    main()
