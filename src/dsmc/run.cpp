@@ -82,7 +82,7 @@ struct Tally {
     }
 };
 
-template <class Policy, bool Mixture>
+template <class Policy, bool Mixture, CollisionKernel Kernel>
 void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
            int replica, const RowSink& sink, const ProgressSink& progress, ReplicaSummary* summary) {
     using Store = std::conditional_t<Policy::needs_rotation, RoughAoS, SmoothAoS>;
@@ -91,7 +91,7 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
     const auto rep = static_cast<std::uint64_t>(replica);
     Store store(N);
     init_maxwellian(store, blocks, spec.seed, rep);
-    Engine<Store, Policy, Mixture> engine(
+    Engine<Store, Policy, Mixture, Kernel> engine(
         blocks, std::move(policies), std::move(store),
         EngineOptions{spec.density, spec.step, spec.seed, rep, spec.speed_classes, effective_groups(spec),
                       std::max(1, spec.threads)});
@@ -183,7 +183,8 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
     if (summary) {
         const EngineCounters& k = engine.counters();
         summary->kernel = std::string(Store::name) + ", " + std::string(Policy::name) + ", " +
-                          (Mixture ? std::to_string(S) + " species" : "one species");
+                          (Mixture ? std::to_string(S) + " species" : "one species") +
+                          (Kernel == CollisionKernel::maxwell ? ", Maxwell kernel" : "");
         summary->groups = static_cast<int>(engine.groups());
         summary->bytes_per_particle = Store::bytes_per_particle;
         summary->memory_per_particle = engine.bytes_per_particle();
@@ -197,6 +198,18 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
         summary->recentrings = k.recentrings;
         summary->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     }
+}
+
+// The kernel is a compile-time choice too: one switch per run.
+template <class Policy, bool Mixture>
+void drive_kernel(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
+                  int replica, const RowSink& sink, const ProgressSink& progress, ReplicaSummary* summary) {
+    if (spec.kernel == CollisionKernel::maxwell)
+        drive<Policy, Mixture, CollisionKernel::maxwell>(spec, blocks, std::move(policies), replica, sink, progress,
+                                                         summary);
+    else
+        drive<Policy, Mixture, CollisionKernel::hard_sphere>(spec, blocks, std::move(policies), replica, sink,
+                                                             progress, summary);
 }
 
 } // namespace
@@ -251,7 +264,7 @@ void run_replica(const RunSpec& spec, const RestitutionTables& tables, int repli
         std::visit(
             [&](const auto& p) {
                 using P = std::decay_t<decltype(p)>;
-                drive<P, false>(spec, blocks, {p}, replica, sink, progress, summary);
+                drive_kernel<P, false>(spec, blocks, {p}, replica, sink, progress, summary);
             },
             policies[0]);
         return;
@@ -265,7 +278,7 @@ void run_replica(const RunSpec& spec, const RestitutionTables& tables, int repli
                 std::vector<P> v;
                 for (const AnyPolicy& p : policies)
                     v.push_back(std::get<P>(p));
-                drive<P, true>(spec, blocks, std::move(v), replica, sink, progress, summary);
+                drive_kernel<P, true>(spec, blocks, std::move(v), replica, sink, progress, summary);
             },
             policies[0]);
         return;
@@ -275,13 +288,13 @@ void run_replica(const RunSpec& spec, const RestitutionTables& tables, int repli
         std::vector<AnySmoothPolicy> v;
         for (const AnyPolicy& p : policies)
             v.push_back(to_any_smooth(p));
-        drive<AnySmoothPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary);
+        drive_kernel<AnySmoothPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary);
         return;
     }
     std::vector<AnyRoughPolicy> v;
     for (const AnyPolicy& p : policies)
         v.push_back(to_any_rough(p));
-    drive<AnyRoughPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary);
+    drive_kernel<AnyRoughPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary);
 }
 
 } // namespace roughgas

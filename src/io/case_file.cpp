@@ -569,6 +569,7 @@ class Builder {
         c.density = r.real("density");
         c.replicas = r.integer("replicas");
         c.groups = r.integer("groups");
+        c.kernel = r.choice<CollisionKernel>("kernel", kernel_names);
         c.seed = static_cast<std::uint64_t>(r.integer("seed"));
         c.end = r.real("end");
         c.output_every = r.real("output_every");
@@ -952,6 +953,7 @@ std::string emit_case(const CaseConfig& c) {
     e.put("density", c.run.density);
     e.put("replicas", c.run.replicas);
     e.put("groups", c.run.groups);
+    e.put("kernel", kernel_names[static_cast<int>(c.run.kernel)]);
     e.put("seed", c.run.seed);
     e.put("end", c.run.end);
     e.put("output_every", c.run.output_every);

@@ -137,6 +137,12 @@ std::vector<Key> keys() {
             .doc("random groups per DSMC step that collide independently (in parallel over --threads); 0: "
                  "automatic, particles/16384 rounded down to a power of two; results depend on it, never on "
                  "the thread count"),
+        Key("run.kernel", T::string)
+            .fallback(std::string("hard_sphere"))
+            .one_of(kernel_names)
+            .doc("collision kernel: hard_sphere (rate pi sigma^2 |g|, n weighted by |g.n|); maxwell (each pair at "
+                 "the hard-sphere rate of the initial Maxwellian, independent of the velocities, n uniform on the "
+                 "approaching hemisphere: T_tr, T_rot follow closed linear ODEs, the theory columns)"),
         Key("run.seed", T::integer).fallback(std::int64_t{1}).ge(0).doc("random seed (same seed, same run)"),
         Key("run.end", T::real).unit("collisions per particle").required().gt(0).doc("length of the run"),
         Key("run.output_every", T::real)
@@ -327,7 +333,7 @@ std::string KeySpec::allowed() const {
     if (!choices.empty()) {
         std::string s = "one of ";
         for (std::size_t i = 0; i < choices.size(); ++i) {
-            s += (i ? ", " : "") + quoted(choices[i]);
+            s += (i ? ", " : "") + roughgas::quoted(choices[i]);
         }
         return s;
     }
@@ -362,7 +368,7 @@ std::string KeySpec::default_text() const {
         std::string operator()(bool b) const { return b ? "true" : "false"; }
         std::string operator()(std::int64_t i) const { return std::to_string(i); }
         std::string operator()(double d) const { return toml_real(d); }
-        std::string operator()(const std::string& s) const { return quoted(s); }
+        std::string operator()(const std::string& s) const { return roughgas::quoted(s); }
     };
     return std::visit(Text{}, default_value);
 }

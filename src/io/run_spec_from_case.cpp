@@ -66,6 +66,7 @@ RunSpec run_spec_from_case(const CaseConfig& cfg) {
     spec.seed = cfg.run.seed;
     spec.replicas = static_cast<int>(cfg.run.replicas);
     spec.groups = static_cast<int>(cfg.run.groups);
+    spec.kernel = cfg.run.kernel;
     spec.end = cfg.run.end;
     spec.output_times = output_times(cfg.run.output_every, cfg.run.end, cfg.run.output_spacing);
     spec.contact_tolerance = cfg.contact.tolerance;

@@ -75,6 +75,15 @@ HcsTheory::HcsTheory(std::vector<HcsSpecies> species, std::vector<ConstantRestit
     }
 }
 
+HcsTheory::HcsTheory(std::vector<HcsSpecies> species, std::vector<ConstantRestitution> pairs, double density,
+                     std::vector<double> maxwell_T0_tr)
+    : HcsTheory(std::move(species), std::move(pairs), density) {
+    require(maxwell_T0_tr.size() == species_.size(), "one initial T_tr per species for the Maxwell kernel");
+    for (double T : maxwell_T0_tr)
+        require(T >= 0 && std::isfinite(T), "initial temperatures must be finite and >= 0");
+    maxwell_T0_ = std::move(maxwell_T0_tr);
+}
+
 PairExchange HcsTheory::exchange(std::size_t a, std::size_t b, std::span<const double> T_tr,
                                  std::span<const double> T_rot) const {
     const HcsSpecies& A = species_[a];
@@ -89,6 +98,13 @@ PairExchange HcsTheory::exchange(std::size_t a, std::size_t b, std::span<const d
     const double a_n = pc.m_eff * (1 + r.alpha);
     const double a_t = pc.kappa * pc.m_eff * (1 + r.beta);
     PairExchange x;
+    if (maxwell()) { // the Maxwell kernel (theory.hpp): constant frequency, exact averages
+        const double s0 = maxwell_T0_[a] / A.mass + maxwell_T0_[b] / B.mass;
+        x.frequency = density_ * B.fraction * pc.sigma * pc.sigma * std::sqrt(8 * std::numbers::pi * s0);
+        x.dE_tr = -(Ta / A.mass) * (a_n + 2 * a_t) + (0.5 * a_n * a_n * s + a_t * a_t * (s + s_w)) / A.mass;
+        x.dE_rot = (-2 * a_t * pos(T_rot[a]) + a_t * a_t * (s + s_w)) / (A.inertia * A.mass);
+        return x;
+    }
     x.frequency = density_ * B.fraction * pc.sigma * pc.sigma * std::sqrt(8 * std::numbers::pi * s);
     const double p2 = a_n * a_n * s + a_t * a_t * (s + s_w); // <|P|^2>/2
     x.dE_tr = -2 * (Ta / A.mass) * (a_n + a_t) + p2 / A.mass;
@@ -144,7 +160,7 @@ HcsTrajectory::HcsTrajectory(HcsTheory theory, HcsTemperatures initial, double r
                     std::isfinite(initial_.T_rot[s]),
                 "initial temperatures must be finite and >= 0");
     // Haff's law only where nothing else moves: one species, beta = -1.
-    haff_ = closed_form && S == 1 && theory_.pairs()[0].beta == -1;
+    haff_ = closed_form && S == 1 && theory_.pairs()[0].beta == -1 && !theory_.maxwell();
     for (std::size_t s = 0; s < S; ++s)
         E0_ += initial_.T_tr[s] + initial_.T_rot[s];
     y_.assign(1 + 2 * S, 0.0);
@@ -185,7 +201,8 @@ HcsTemperatures HcsTrajectory::at(double t) {
     }
     using State = std::vector<double>;
     std::vector<double> p_tr(S), p_rot(S), f_tr(S), f_rot(S);
-    // In E0 units (the rates are homogeneous of degree 3/2): dT_k/dt = E^{3/2} F_k(p), so
+    // In E0 units (the rates are homogeneous of degree 3/2; degree 1 for the Maxwell kernel, below):
+    // dT_k/dt = E^{3/2} F_k(p), so
     // d ln E/dt = E^{1/2} sum F(p), dp_k/dt = E^{1/2} (F_k(p) - p_k sum F(p)). Written that way,
     // sum p = 1 would be an unstable invariant (a deviation grows like 1/E as the gas cools); with
     // the normalised p^ = p/sum p on the right-hand side, d(sum p)/dt = 0 and the drift is neutral.
@@ -203,7 +220,8 @@ HcsTemperatures HcsTrajectory::at(double t) {
         double sum = 0;
         for (std::size_t s = 0; s < S; ++s)
             sum += f_tr[s] + f_rot[s];
-        const double root_E = scale * std::exp(0.5 * y[0]);
+        // The Maxwell kernel's rates are linear in the temperatures (degree 1): no E^{1/2} factor.
+        const double root_E = theory_.maxwell() ? 1.0 : scale * std::exp(0.5 * y[0]);
         dydt[0] = root_E * sum;
         for (std::size_t s = 0; s < S; ++s) {
             dydt[1 + s] = root_E * (f_tr[s] - p_tr[s] * sum);
@@ -252,6 +270,12 @@ std::optional<HcsTheory> hcs_theory(const RunSpec& spec) {
         total += s.fraction;
     for (const SpeciesSpec& s : spec.species)
         species.push_back({s.mass, s.radius, s.inertia, total > 0 ? s.fraction / total : s.fraction});
+    if (spec.kernel == CollisionKernel::maxwell) {
+        std::vector<double> T0;
+        for (const SpeciesSpec& s : spec.species)
+            T0.push_back(s.temperature);
+        return HcsTheory(std::move(species), std::move(pairs), spec.density, std::move(T0));
+    }
     return HcsTheory(std::move(species), std::move(pairs), spec.density);
 }
 

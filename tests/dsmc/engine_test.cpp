@@ -7,6 +7,8 @@
 #include "roughgas/dsmc/particles.hpp"
 #include "roughgas/observables/moments.hpp"
 
+#include "test_stats.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -48,19 +50,8 @@ template <class E> double total_energy(const E& e) {
     return E_;
 }
 
-struct MeanErr {
-    double mean = 0, err = 0;
-};
-MeanErr mean_err(const std::vector<double>& x) {
-    double m = 0;
-    for (double v : x)
-        m += v;
-    m /= static_cast<double>(x.size());
-    double s2 = 0;
-    for (double v : x)
-        s2 += (v - m) * (v - m);
-    return {m, std::sqrt(s2 / static_cast<double>(x.size() - 1) / static_cast<double>(x.size()))};
-}
+using test::MeanErr;
+using test::mean_err;
 
 SpeciesSpec unit_grain(double T = 1, double T_rot = 1) {
     SpeciesSpec s; // m = 1, R = 0.5 (sigma = 1), q = 0.4

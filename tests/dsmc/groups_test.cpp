@@ -11,6 +11,8 @@
 #include "roughgas/dsmc/tables.hpp"
 #include "roughgas/observables/moments.hpp"
 
+#include "test_stats.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -40,19 +42,8 @@ template <class E> Moments moments_of(const E& e) {
     return compute_moments(e.store().velocities(), e.store().angular_velocities(), slices);
 }
 
-struct MeanErr {
-    double mean = 0, err = 0;
-};
-MeanErr mean_err(const std::vector<double>& x) {
-    double m = 0;
-    for (double v : x)
-        m += v;
-    m /= static_cast<double>(x.size());
-    double s2 = 0;
-    for (double v : x)
-        s2 += (v - m) * (v - m);
-    return {m, std::sqrt(s2 / static_cast<double>(x.size() - 1) / static_cast<double>(x.size()))};
-}
+using test::MeanErr;
+using test::mean_err;
 
 EngineOptions grouped(std::uint64_t seed, std::uint64_t replica, int groups, int threads, double step = 1.0) {
     return EngineOptions{1.0, step, seed, replica, 2, groups, threads};

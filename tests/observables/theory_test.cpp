@@ -135,8 +135,9 @@ TEST(HcsTheory, PairEnergyChangeIsTheAveragedEnergyLoss) {
 // Monte Carlo of the Boltzmann collision integral with the collision rule of physics.md §3
 // (written out here, independent of src/): Maxwellian v and omega per species, n uniform on the
 // sphere, each sample weighted by the kernel |v_ij . n| on the approaching hemisphere.
-TEST(HcsTheory, CollisionAveragesMatchMonteCarloOfTheCollisionRule) {
-    const HcsTheory th = mixture(0.7, 0.4);
+// Monte Carlo of the collision rule over Gaussian v and omega: each pair weighted by |v_ij.n| (hard
+// spheres) or not at all (the Maxwell kernel), n uniform on the approaching hemisphere.
+void check_collision_averages(const HcsTheory& th) {
     const std::vector<HcsSpecies>& sp = th.species();
     const std::vector<double> T{1.3, 0.4}, Tr{0.7, 2.2};
     std::mt19937_64 rng(12345);
@@ -172,7 +173,7 @@ TEST(HcsTheory, CollisionAveragesMatchMonteCarloOfTheCollisionRule) {
                     n = add(V{0, 0, 0}, n, -1);
                     u = -u;
                 } // the approaching hemisphere
-                const double weight = -u;
+                const double weight = th.maxwell() ? 1.0 : -u;
                 const V g = add(add(vij, cross(wi, n), -A.radius), cross(wj, n), -B.radius);
                 const V gn = add(V{0, 0, 0}, n, dot(g, n));
                 const V gt = add(g, gn, -1);
@@ -198,7 +199,8 @@ TEST(HcsTheory, CollisionAveragesMatchMonteCarloOfTheCollisionRule) {
             const double mean_w = sw / N, se_w = std::sqrt((sw2 / N - mean_w * mean_w) / N);
             const double f_mc =
                 th.density() * B.fraction * sigma * sigma * 2 * std::numbers::pi; // hemisphere
-            EXPECT_NEAR(x.frequency, f_mc * mean_w, 4 * f_mc * se_w) << a << b;
+            if (!th.maxwell())
+                EXPECT_NEAR(x.frequency, f_mc * mean_w, 4 * f_mc * se_w) << a << b;
             // Ratio estimators <w dE>/<w> with their delta-method standard errors.
             const double scale = std::abs(x.dE_tr) + std::abs(x.dE_rot);
             const auto check = [&](double sum, double sum2, double cross_sum, double theory,
@@ -213,6 +215,62 @@ TEST(HcsTheory, CollisionAveragesMatchMonteCarloOfTheCollisionRule) {
             check(s_tr, s_tr2, c_tr, x.dE_tr, "dE_tr");
             check(s_rot, s_rot2, c_rot, x.dE_rot, "dE_rot");
         }
+}
+
+TEST(HcsTheory, CollisionAveragesMatchMonteCarloOfTheCollisionRule) {
+    check_collision_averages(mixture(0.7, 0.4));
+}
+
+// The Maxwell kernel (theory.hpp): the same mixture with the initial T_tr of the frequencies.
+HcsTheory maxwell_mixture(double alpha = 0.7, double beta = 0.4) {
+    const HcsTheory h = mixture(alpha, beta);
+    return HcsTheory(h.species(), h.pairs(), h.density(), {1.1, 0.6});
+}
+
+TEST(MaxwellTheory, CollisionAveragesMatchMonteCarloOfTheCollisionRule) {
+    check_collision_averages(maxwell_mixture());
+}
+
+TEST(MaxwellTheory, FrequencyIsTheHardSphereOneOfTheInitialState) {
+    // nu_ab = n_b sigma^2 sqrt(8 pi s_0) whatever the current temperatures.
+    const HcsTheory m = maxwell_mixture();
+    const HcsTheory h = mixture();
+    const std::vector<double> T0{1.1, 0.6}, Tr{0.3, 0.2}, T{0.01, 0.5};
+    for (std::size_t a = 0; a < 2; ++a)
+        for (std::size_t b = 0; b < 2; ++b) {
+            EXPECT_DOUBLE_EQ(m.exchange(a, b, T, Tr).frequency, h.exchange(a, b, T0, Tr).frequency);
+            EXPECT_DOUBLE_EQ(m.exchange(a, b, T0, Tr).frequency, h.exchange(a, b, T0, Tr).frequency);
+        }
+}
+
+TEST(MaxwellTheory, ElasticPerfectlyRoughConservesEnergy) {
+    // alpha = beta = 1: one species and the unequal mixture (all pairs elastic, perfectly rough).
+    HcsTrajectory one(HcsTheory({{1.0, 0.5, 0.4, 1.0}}, {{1.0, 1.0}}, 1.0, {1.0}), {{1.0}, {0.1}}, 1e-11);
+    const HcsTheory h = mixture();
+    HcsTrajectory two(HcsTheory(h.species(), {{1, 1}, {1, 1}, {1, 1}}, h.density(), {1.0, 2.0}),
+                      {{1.0, 2.0}, {0.1, 0.5}}, 1e-11);
+    for (double t : {0.5, 2.0, 10.0}) {
+        const HcsTemperatures a = one.at(t), b = two.at(t);
+        EXPECT_NEAR(a.T_tr[0] + a.T_rot[0], 1.1, 1e-9) << t;
+        const double x0 = h.species()[0].fraction, x1 = h.species()[1].fraction;
+        EXPECT_NEAR(x0 * (b.T_tr[0] + b.T_rot[0]) + x1 * (b.T_tr[1] + b.T_rot[1]),
+                    x0 * 1.1 + x1 * 2.5, 1e-9)
+            << t;
+    }
+    EXPECT_GT(one.at(20.0).T_rot[0], 0.5) << "the energy must have been exchanged";
+}
+
+TEST(MaxwellTheory, SmoothSpheresCoolExponentially) {
+    // beta = -1: (3/2) dT/dt = nu <dE_tr> = -nu (1 - alpha^2) T/4, so T = T0 exp(-nu (1 - alpha^2) t/6)
+    // with nu = 4 n sigma^2 sqrt(pi T0/m) (constant), and T_rot stays.
+    const double alpha = 0.7, T0 = 2.0, m = 1.5, R = 0.4, n = 0.8;
+    HcsTrajectory tr(HcsTheory({{m, R, 0.4, 1.0}}, {{alpha, -1.0}}, n, {T0}), {{T0}, {0.3}}, 1e-11);
+    const double nu = 4 * n * 4 * R * R * std::sqrt(std::numbers::pi * T0 / m);
+    for (double t : {0.3, 3.0, 30.0}) {
+        const HcsTemperatures T = tr.at(t);
+        EXPECT_NEAR(T.T_tr[0] / (T0 * std::exp(-nu * (1 - alpha * alpha) * t / 6)), 1.0, 1e-8) << t;
+        EXPECT_NEAR(T.T_rot[0], 0.3, 1e-9); // integrated in ln E, tolerance 1e-11 per step
+    }
 }
 
 TEST(HcsTheory, TwoEqualSpeciesAreOneSpecies) {

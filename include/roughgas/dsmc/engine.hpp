@@ -167,7 +167,11 @@ inline const std::vector<double>& speed_class_cuts(int classes) {
     return cuts[classes - 1];
 }
 
-template <class Store, class Policy, bool Mixture> class Engine {
+// Kernel = maxwell (run_spec.hpp): the candidate rate of a block pair is its exact collision rate
+// (pairs x pi sigma^2 u_ab/V, velocity-independent), every candidate collides, and n is uniform on the
+// approaching hemisphere; blocks, groups and steps work as for hard spheres.
+template <class Store, class Policy, bool Mixture, CollisionKernel Kernel = CollisionKernel::hard_sphere>
+class Engine {
     static_assert(!Policy::needs_rotation || Store::rotation_hot, "a rough policy needs a store with omega");
 
   public:
@@ -233,6 +237,10 @@ template <class Store, class Policy, bool Mixture> class Engine {
         count_.assign(K_ * G_, 0);
         max2_.assign(K_ * G_, 0.0);
         thermal_speed_.assign(S, 0.0);
+        for (const PairType& t : types_) // u_ab of the Maxwell kernel, from the initial temperatures
+            maxwell_speed_.push_back(std::sqrt(8.0 / std::numbers::pi *
+                                               (species_[t.a].temperature / species_[t.a].grain.mass +
+                                                species_[t.b].temperature / species_[t.b].grain.mass)));
         for (std::size_t s = 0; s < S; ++s) { // the first step's class cuts
             double sum2 = 0;
             for (std::size_t i = species_[s].offset; i < species_[s].offset + species_[s].count; ++i)
@@ -400,9 +408,20 @@ template <class Store, class Policy, bool Mixture> class Engine {
             Vec3& v_j = store_.v(gj);
             const Vec3 g_c = v_i - v_j;
             const double g2 = norm2(g_c);
-            const double x = uniform01(g.rng) * bp.gmax;
-            if (x * x < g2) { // accepted with probability |g_c|/g_max
-                const Vec3 n = sample_impact_normal(g.rng, g_c, sqrt_nonneg(g2));
+            bool accepted;
+            Vec3 n;
+            if constexpr (Kernel == CollisionKernel::maxwell) {
+                accepted = true; // the rate is exact: no thinning
+                n = uniform_direction(g.rng);
+                if (dot(n, g_c) > 0) // onto the approaching hemisphere: uniform there
+                    n = -1.0 * n;
+            } else {
+                const double x = uniform01(g.rng) * bp.gmax;
+                accepted = x * x < g2; // with probability |g_c|/g_max
+                if (accepted)
+                    n = sample_impact_normal(g.rng, g_c, sqrt_nonneg(g2));
+            }
+            if (accepted) {
                 const std::size_t sp = Mixture ? bp.species_pair : 0;
                 const PairConstants& pc = types_[sp].pc;
                 const Policy& policy = policies_[sp];
@@ -693,7 +712,8 @@ template <class Store, class Policy, bool Mixture> class Engine {
             // (1 + 1e-12): the computed |g_c| of two grains at their bounds, head-on, may round above
             // the computed sum of the bounds; the inflation keeps the acceptance probability below 1.
             bp.gmax = (X.bound + Y.bound) * (1.0 + 1e-12);
-            bp.rate = bp.pairs * types_[bp.species_pair].pc.cross_section * bp.gmax * scale;
+            const double speed = Kernel == CollisionKernel::maxwell ? maxwell_speed_[bp.species_pair] : bp.gmax;
+            bp.rate = bp.pairs * types_[bp.species_pair].pc.cross_section * speed * scale;
             total += bp.rate;
             g.cumulative[k] = total;
         }
@@ -884,6 +904,7 @@ template <class Store, class Policy, bool Mixture> class Engine {
     std::size_t K_ = 1, G_ = 1;
     std::vector<double> cuts_;
     std::vector<double> thermal_speed_; // per species: sqrt(<v^2>/3) at the last step start
+    std::vector<double> maxwell_speed_; // per species pair: u_ab of the Maxwell kernel
     std::vector<Group> groups_;
     // perm_[p]: the grain at position p. Blocks are ranges of positions; the grains stay where they are.
     std::vector<std::uint32_t> perm_;

@@ -27,6 +27,14 @@ struct BrilliantovRestitution { ContactPair pair; bool direct = false; };
 using PairRestitution = std::variant<ConstantRestitution, CoulombRestitution, ViscoelasticRestitution,
                                      BrilliantovRestitution>;
 
+// The collision kernel (physics.md §4): hard spheres (each pair at the rate pi sigma^2 |g.n|-weighted,
+// i.e. pi sigma^2 |g| in total, n with density |g^.n| on the approaching hemisphere), or the
+// Maxwell model: each pair of species (a, b) at the constant rate pi sigma_ab^2 u_ab/V, u_ab =
+// sqrt((8/pi)(T_a/m_a + T_b/m_b)) at the species' initial temperatures (the hard-sphere rate of
+// the initial Maxwellian state), n uniform on the approaching hemisphere. Its T_tr(t), T_rot(t) obey
+// closed linear ODEs exactly (observables/theory.hpp).
+enum class CollisionKernel { hard_sphere, maxwell };
+
 struct RunSpec {
     std::vector<SpeciesSpec> species;
     // Model of species pair (a, b), a <= b, at index pair_index(a, b, species.size()).
@@ -42,6 +50,7 @@ struct RunSpec {
     int threads = 1;
     // Random groups per DSMC step (dsmc/engine.hpp, "Groups"); 0: automatic, auto_groups(particles).
     int groups = 0;
+    CollisionKernel kernel = CollisionKernel::hard_sphere;
     // DSMC step length in mean free times. A step only refreshes the collision majorant (and the
     // frame); the collision statistics do not depend on it (dsmc/engine.hpp).
     double step = 1.0;

@@ -6,6 +6,7 @@
 #include "roughgas/contact/contact_pair.hpp"
 #include "roughgas/contact/material.hpp"
 #include "roughgas/contact/tolerance.hpp"
+#include "roughgas/dsmc/run_spec.hpp"
 
 #include <array>
 #include <cstddef>
@@ -22,6 +23,8 @@ namespace roughgas {
 // parser cannot drift apart (style.md §2.3).
 enum class RunKind { cooling, shear };
 inline constexpr std::array<std::string_view, 2> run_kind_names{"cooling", "shear"};
+// Values of run.kernel, in the order of CollisionKernel (dsmc/run_spec.hpp).
+inline constexpr std::array<std::string_view, 2> kernel_names{"hard_sphere", "maxwell"};
 
 // How output times are spaced: linear (every output_every) or log (output_every x 10^(k/10)).
 enum class OutputSpacing { linear, log };
@@ -60,6 +63,7 @@ struct RunConfig {
     double density = 1.0;       // number density n [1/length^3]: sets the time scale
     std::int64_t replicas = 1;  // independent runs averaged (columns X_err)
     std::int64_t groups = 0;    // per-step random groups of the DSMC (0: automatic)
+    CollisionKernel kernel = CollisionKernel::hard_sphere;
     std::uint64_t seed = 1;
     double end = 0;            // collisions per particle
     double output_every = 1.0; // collisions per particle (first output for log spacing)

@@ -44,6 +44,26 @@
 //
 // Mixtures: the equations above, per species pair, with n_b = n x fraction_b (the continuum limit;
 // a simulation of N grains has n_a (N_a - 1)/N_a for the like pairs, a relative 1/N_a).
+//
+// The Maxwell kernel (run.kernel = "maxwell", dsmc/run_spec.hpp): every pair of species (a, b)
+// collides at the constant rate pi sigma^2 u_ab/V, u_ab = sqrt((8/pi) s_0), s_0 = s at the initial
+// temperatures (so nu_ab = n_b sigma^2 sqrt(8 pi s_0): the hard-sphere frequency of the initial
+// Maxwellian, constant in time), with n uniform on the approaching hemisphere. Then no Maxwellian
+// assumption is needed: with p = P/m_eff = -b g - (A - b)(g.n) n (A = 1 + alpha, b = kappa(1 + beta)),
+// g = v_ij - Omega x n, the averages over n (uniform; every term odd in n or in Omega averages to
+// zero, so the hemisphere does not matter and v-omega correlations drop out) are
+//   <(g.n)^2> = |v_ij|^2/3,  <|g|^2> = |v_ij|^2 + (2/3)|Omega|^2,  <|g^T|^2> = (2/3)(|v_ij|^2 + |Omega|^2),
+//   <v_i.p> = -(A + 2b)|v_i|^2/3 (with <v_i.v_j> = 0),  <|p|^2> = (A^2 + 2b^2)|v_ij|^2/3 + (2/3) b^2 |Omega|^2,
+//   <omega_i.(n x P)> = (2/3) m_eff b R_a |omega_i|^2,  <|n x P|^2> = m_eff^2 b^2 <|g^T|^2>,
+// and with <|v_ij|^2> = 3 s, <|Omega|^2> = 3 s_W over the grains (any distribution with these
+// second moments and uncorrelated grains), per collision
+//   <dE_tr,i>  = -(T_a/m_a)(a_N + 2 a_T) + [a_N^2 s/2 + a_T^2 (s + s_W)]/m_a
+//   <dE_rot,i> = [-2 a_T T_rot,a + a_T^2 (s + s_W)]/(q_a m_a)        (the same as for hard spheres)
+// Both are linear in the temperatures and nu_ab is constant: (3/2) dT/dt = sum_b nu_ab <dE> is a
+// closed linear system, exact for the Maxwell gas up to O(1/N) pair correlations of the finite
+// system. Checks: alpha = beta = 1 conserves T_tr + T_rot (kappa = q/(1 + q) for equal spheres);
+// beta = -1 gives dT_tr/dt = -nu (1 - alpha^2) T_tr/6 (tests/observables/theory_test.cpp), and the
+// DSMC with the Maxwell kernel follows the system (tests/dsmc/maxwell_test.cpp).
 #include "roughgas/dsmc/run_spec.hpp"
 
 #include <cstddef>
@@ -77,6 +97,11 @@ class HcsTheory {
     // Throws std::invalid_argument for empty species, a wrong number of pairs, non-positive mass,
     // radius, inertia or density, a negative fraction, alpha outside [0, 1] or beta outside [-1, 1].
     HcsTheory(std::vector<HcsSpecies> species, std::vector<ConstantRestitution> pairs, double density);
+    // The Maxwell kernel: constant frequencies from the initial translational temperatures T0_tr
+    // (one per species), the exchange averages above.
+    HcsTheory(std::vector<HcsSpecies> species, std::vector<ConstantRestitution> pairs, double density,
+              std::vector<double> maxwell_T0_tr);
+    bool maxwell() const { return !maxwell_T0_.empty(); }
 
     std::size_t species_count() const { return species_.size(); }
     const std::vector<HcsSpecies>& species() const { return species_; }
@@ -97,6 +122,7 @@ class HcsTheory {
     std::vector<HcsSpecies> species_;
     std::vector<ConstantRestitution> pairs_;
     double density_;
+    std::vector<double> maxwell_T0_; // Maxwell kernel: initial T_tr per species (empty: hard spheres)
 };
 
 // The solution from `initial` at t = 0, evaluated at non-decreasing times: each call integrates on
