@@ -55,6 +55,15 @@ void validate(const RunSpec& spec) {
         prev = t;
     }
     require(!spec.output_times.empty() || (std::isfinite(spec.end) && spec.end > 0), "end must be > 0");
+    const double end = spec.output_times.empty() ? spec.end : spec.output_times.back();
+    prev = 0;
+    for (double t : spec.histogram_times) {
+        require(std::isfinite(t) && t > prev && t <= end * (1 + 1e-12),
+                "histogram times must be positive, increasing and not after the end");
+        prev = t;
+    }
+    require(spec.histogram_bins >= 1 && spec.histogram_max > 0 && std::isfinite(spec.histogram_max),
+            "histogram_bins must be >= 1 and histogram_max > 0");
 }
 
 // Sums over the collisions since the last output row.
@@ -71,7 +80,8 @@ struct Tally {
 
 template <class Policy, bool Mixture>
 void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
-           int replica, const RowSink& sink, const ProgressSink& progress, ReplicaSummary* summary) {
+           int replica, const RowSink& sink, const ProgressSink& progress, ReplicaSummary* summary,
+           const HistogramSink& histograms) {
     using Store = std::conditional_t<Policy::needs_rotation, RoughAoS, SmoothAoS>;
     const auto wall0 = std::chrono::steady_clock::now();
     const std::size_t N = static_cast<std::size_t>(spec.particles);
@@ -143,14 +153,42 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
         std::fill(tally.per_type.begin(), tally.per_type.end(), 0);
     };
 
+    const HistogramGrid grid{spec.histogram_bins, spec.histogram_max};
+    const auto emit_histograms = [&] {
+        const auto& store = engine.store();
+        const Moments m = compute_moments(store.velocities(), store.angular_velocities(), slices);
+        HistogramSet h;
+        h.t = engine.time();
+        h.coll_per_particle = 2.0 * static_cast<double>(engine.collisions()) / static_cast<double>(N);
+        h.species = compute_histograms(store.velocities(), store.angular_velocities(), slices, m, grid);
+        histograms(h);
+    };
+
     emit();
     std::vector<double> outputs = spec.output_times;
     if (outputs.empty())
         outputs.push_back(spec.end);
     const double end = outputs.back();
+    // The pauses: output rows and histograms, in order of their collision counts (a pause keeps the
+    // engine's pending candidate, so the trajectory does not depend on where it pauses).
+    struct Pause {
+        std::int64_t target;
+        bool row, histogram;
+    };
+    const auto target_of = [&](double x) {
+        return static_cast<std::int64_t>(std::llround(x * static_cast<double>(N) / 2.0));
+    };
+    std::vector<Pause> pauses;
+    for (double out : outputs)
+        pauses.push_back({target_of(out), true, false});
+    if (histograms)
+        for (double h : spec.histogram_times)
+            pauses.push_back({target_of(h), false, true});
+    std::stable_sort(pauses.begin(), pauses.end(),
+                     [](const Pause& a, const Pause& b) { return a.target < b.target; });
     const std::int64_t chunk = std::max<std::int64_t>(std::int64_t{1} << 16, spec.particles / 2);
-    for (double out : outputs) {
-        const auto target = static_cast<std::int64_t>(std::llround(out * static_cast<double>(N) / 2.0));
+    for (const Pause& pause : pauses) {
+        const std::int64_t target = pause.target;
         while (engine.collisions() < target) {
             const std::int64_t next = std::min(target, engine.collisions() + chunk);
             if (engine.run(next, std::numeric_limits<double>::infinity(), tally) == StopReason::stalled) {
@@ -163,7 +201,10 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
                 progress(2.0 * c / static_cast<double>(N), end, c);
             }
         }
-        emit();
+        if (pause.row)
+            emit();
+        if (pause.histogram)
+            emit_histograms();
     }
 
     if (summary) {
@@ -217,7 +258,7 @@ std::vector<Column> dsmc_columns(const RunSpec& spec) {
 }
 
 void run_replica(const RunSpec& spec, const RestitutionTables& tables, int replica, const RowSink& sink,
-                 const ProgressSink& progress, ReplicaSummary* summary) {
+                 const ProgressSink& progress, ReplicaSummary* summary, const HistogramSink& histograms) {
     validate(spec);
     require(replica >= 0, "negative replica index");
     const std::vector<SpeciesBlock> blocks = make_species_blocks(spec.species, spec.particles);
@@ -235,7 +276,7 @@ void run_replica(const RunSpec& spec, const RestitutionTables& tables, int repli
         std::visit(
             [&](const auto& p) {
                 using P = std::decay_t<decltype(p)>;
-                drive<P, false>(spec, blocks, {p}, replica, sink, progress, summary);
+                drive<P, false>(spec, blocks, {p}, replica, sink, progress, summary, histograms);
             },
             policies[0]);
         return;
@@ -249,7 +290,7 @@ void run_replica(const RunSpec& spec, const RestitutionTables& tables, int repli
                 std::vector<P> v;
                 for (const AnyPolicy& p : policies)
                     v.push_back(std::get<P>(p));
-                drive<P, true>(spec, blocks, std::move(v), replica, sink, progress, summary);
+                drive<P, true>(spec, blocks, std::move(v), replica, sink, progress, summary, histograms);
             },
             policies[0]);
         return;
@@ -259,13 +300,13 @@ void run_replica(const RunSpec& spec, const RestitutionTables& tables, int repli
         std::vector<AnySmoothPolicy> v;
         for (const AnyPolicy& p : policies)
             v.push_back(to_any_smooth(p));
-        drive<AnySmoothPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary);
+        drive<AnySmoothPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary, histograms);
         return;
     }
     std::vector<AnyRoughPolicy> v;
     for (const AnyPolicy& p : policies)
         v.push_back(to_any_rough(p));
-    drive<AnyRoughPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary);
+    drive<AnyRoughPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary, histograms);
 }
 
 } // namespace roughgas
