@@ -2,7 +2,10 @@
 // Every test asserts finite, physically admissible output: 0 <= eps^N <= 1, beta in [-1, 1] after the
 // policy, T > 0, theta >= 0, and no NaN or infinity in any row unless undefined by definition
 // (MomentsTable::check, the rule the CSV writer enforces).
+#include "../io/io_test_support.hpp"
+
 #include "roughgas/contact/contact_integrator.hpp"
+#include "roughgas/contact/quasistatic.hpp"
 #include "roughgas/dsmc/run.hpp"
 #include "roughgas/dsmc/tables.hpp"
 #include "roughgas/io/moments_csv.hpp"
@@ -14,6 +17,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -122,6 +126,62 @@ TEST(Stress, NormalContactOverTwentyDecadesOfImpactSpeed) {
                 previous = e;
             }
         }
+}
+
+TEST(Stress, OutsideTheQuasistaticRangeTheToolWarnsOnceAndWorks) {
+    // `roughgas restitution` of the ice case on a grid from 1e-10 to 1e5 m/s (w over 15 decades, up
+    // to 1e4 at 1e5 m/s): exit 0, every eps^N in [0, 1], and exactly one warning naming the range
+    // where seed 000's app. B fails (g_N > 0.1 c_t = 196 m/s here, or A/t_c > 1). The shipped grid
+    // (1e-4 .. 10 m/s) gives none.
+    const test::ScratchDir dir;
+    const std::string ice = std::string(ROUGHGAS_SOURCE_DIR) + "/cases/ice.toml";
+    const std::string common = " --set restitution.g_t_points=2 --set contact.cache=false --force";
+    const test::CommandResult wide =
+        run_roughgas("restitution '" + ice + "' --out '" + (dir / "wide").string() + "'" + common +
+                         " --set restitution.g_n_min=1e-10 --set restitution.g_n_max=1e5 --set restitution.g_n_points=31",
+                     dir);
+    EXPECT_EQ(wide.status, 0) << wide.err;
+    std::size_t warnings = 0;
+    for (std::size_t at = wide.err.find("warning"); at != std::string::npos; at = wide.err.find("warning", at + 1))
+        ++warnings;
+    EXPECT_EQ(warnings, 1u) << wide.err;
+    EXPECT_NE(wide.err.find("outside the quasistatic range"), std::string::npos) << wide.err;
+    const std::string normal = test::read_file(dir / "wide" / "normal.csv");
+    std::istringstream in(normal);
+    int rows = 0;
+    for (std::string line; std::getline(in, line);) {
+        if (line.empty() || line[0] == '#' || line[0] == 'g')
+            continue;
+        const double eps = std::stod(line.substr(line.find(',', line.find(',') + 1) + 1));
+        EXPECT_GE(eps, 0) << line;
+        EXPECT_LE(eps, 1) << line;
+        ++rows;
+    }
+    EXPECT_EQ(rows, 31);
+    const test::CommandResult shipped = run_roughgas(
+        "restitution '" + ice + "' --out '" + (dir / "shipped").string() + "'" + common + " --set restitution.g_n_points=5",
+        dir);
+    EXPECT_EQ(shipped.status, 0);
+    EXPECT_EQ(shipped.err.find("warning"), std::string::npos) << shipped.err;
+}
+
+TEST(Stress, QuasistaticRatiosOfIce) {
+    // c_t = sqrt(Y/(2 (1 + nu) rho_m)) = 1961 m/s for Y = 1e10 Pa, nu = 0.3, 1000 kg/m^3; A/t_c grows
+    // as g^{1/5} (t_c ~ g^{-1/5}).
+    Material ice;
+    ice.young_modulus = 1e10;
+    ice.poisson_ratio = 0.3;
+    ice.dissipation = 5.300775e-5;
+    const double m = 4.188790204786391e-3, R = 0.01;
+    EXPECT_NEAR(sphere_density(m, R), 1000.0, 1e-9);
+    const double c_t = transverse_sound_speed(ice, 1000.0);
+    EXPECT_NEAR(c_t, std::sqrt(1e10 / 2600.0), 1e-9);
+    const ContactPair pc = make_contact_pair(ice, {}, m, R, 0.4, m, R, 0.4);
+    const QuasistaticRatios a = quasistatic_ratios(pc, c_t, 1.0), b = quasistatic_ratios(pc, c_t, 32.0);
+    EXPECT_NEAR(b.time / a.time, 2.0, 1e-12);
+    EXPECT_NEAR(b.speed / a.speed, 32.0, 1e-12);
+    EXPECT_TRUE(a.holds());
+    EXPECT_FALSE(quasistatic_ratios(pc, c_t, 1000.0).holds());
 }
 
 TEST(Stress, DissipationFromZeroToHuge) {
