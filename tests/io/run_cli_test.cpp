@@ -287,6 +287,11 @@ std::vector<BadRun> bad_runs() {
         {"ZeroParticles", c, "--set run.particles=0", "run.particles", "must be >= 2"},
         {"FractionsNotSummingToOne", two, "", "species.fraction", "must sum to 1 (within 1e-9)"},
         {"UnknownKey", replaced(c, "particles", "particle"), "", "run.particle", "unknown key"},
+        {"ShearWithoutShearTable", c, "--set run.kind=shear", "shear.rate",
+         "required for run.kind = \"shear\" but missing (must be a real number > 0"},
+        {"NegativeShearRate", c + "\n[shear]\nrate = -1.0\n", "--set run.kind=shear", "shear.rate", "must be > 0"},
+        {"ShearTimeStepTooLarge", c + "\n[shear]\nrate = 1.0\ntime_step = 2.0\n", "--set run.kind=shear",
+         "shear.time_step", "must be in (0, 1]"},
     };
 }
 
