@@ -13,6 +13,7 @@
 #include "roughgas/dsmc/run.hpp"
 #include "roughgas/io/case_file.hpp"
 #include "roughgas/io/csv_writer.hpp"
+#include "roughgas/io/histograms_csv.hpp"
 #include "roughgas/io/moments_csv.hpp"
 #include "roughgas/io/run_spec_from_case.hpp"
 #include "roughgas/io/run_tables.hpp"
@@ -30,6 +31,7 @@
 #include <iostream>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <unistd.h>
 
 namespace roughgas::cli {
@@ -38,6 +40,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* output_file = "moments.csv";
+constexpr const char* histograms_file = "histograms.csv";
 
 struct RunOptions {
     std::string case_file;
@@ -52,13 +55,16 @@ struct RunOptions {
 };
 
 // Never overwrite earlier results by accident: that is an input error, reported before any work.
-void check_output_dir(const fs::path& dir, bool force) {
+void check_output_dir(const fs::path& dir, bool force, bool histograms) {
     if (fs::exists(dir) && !fs::is_directory(dir))
         throw InputError(dir.string(), "--out", "--out " + dir.string() + ": exists and is not a directory");
-    if (!force && fs::exists(dir / output_file))
-        throw InputError(
-            dir.string(), "--out",
-            fmt::format("--out {}: {} exists (use --force to overwrite)", dir.string(), output_file));
+    for (const char* file : {output_file, histograms_file}) {
+        if (file == histograms_file && !histograms)
+            continue;
+        if (!force && fs::exists(dir / file))
+            throw InputError(dir.string(), "--out",
+                             fmt::format("--out {}: {} exists (use --force to overwrite)", dir.string(), file));
+    }
 }
 
 // Thrown from a replica's row sink when another replica failed: ends the run early.
@@ -80,7 +86,7 @@ int run_run(const RunOptions& o, const CLI::App& app) {
         return exit_failure;
     }
     const fs::path dir(o.out);
-    check_output_dir(dir, o.force);
+    check_output_dir(dir, o.force, cfg.run.histogram_every > 0);
 
     RunSpec spec;
     try {
@@ -112,6 +118,17 @@ int run_run(const RunOptions& o, const CLI::App& app) {
                              "(observables/theory.hpp; Haff's law for smooth spheres)");
     prov.units = table.units();
     CsvWriter csv(table.names(), prov);
+    std::optional<HistogramsTable> htable;
+    std::optional<CsvWriter> hcsv;
+    if (!spec.histogram_times.empty()) {
+        htable.emplace(spec);
+        CsvProvenance hprov = prov;
+        hprov.notes = {"one row per bin at every run.histogram_every time; reduced variables per species: c* = "
+                       "c sqrt(m/(2 T_tr)), w* = omega sqrt(J/(2 T_rot)) (observables/histograms.hpp)",
+                       prov.notes[1]};
+        hprov.units = htable->units();
+        hcsv.emplace(htable->names(), hprov);
+    }
 
     const auto tables = build_run_tables(spec); // before anything is written: a failure writes nothing
     if (!o.quiet) {
@@ -125,6 +142,25 @@ int run_run(const RunOptions& o, const CLI::App& app) {
     }
     fs::create_directories(dir);
     const fs::path path = dir / output_file;
+    const fs::path hpath = dir / histograms_file;
+    // sets[r][k]: replica r's histograms at histogram time k; written (atomically) as they complete.
+    std::vector<std::vector<HistogramSet>> hsets(static_cast<std::size_t>(K));
+    std::size_t sets_written = 0;
+    const auto flush_histograms = [&] { // under `mutex`
+        std::size_t complete = hsets[0].size();
+        for (const auto& r : hsets)
+            complete = std::min(complete, r.size());
+        if (complete == sets_written)
+            return;
+        for (; sets_written < complete; ++sets_written) {
+            std::vector<HistogramSet> same_time;
+            for (const auto& r : hsets)
+                same_time.push_back(r[sets_written]);
+            for (const std::vector<double>& row : htable->combine(same_time))
+                hcsv->add_row(row);
+        }
+        hcsv->write(hpath);
+    };
 
     // rows[r][k]: replica r's row at output k. A row goes to the file once every replica has it.
     std::vector<std::vector<std::vector<double>>> rows(static_cast<std::size_t>(K));
@@ -172,7 +208,17 @@ int run_run(const RunOptions& o, const CLI::App& app) {
             const ProgressSink report = [&, r](double done, double end, double coll) {
                 progress.update(r, done, end, coll);
             };
-            run_replica(spec, *tables, r, sink, report, &summaries[static_cast<std::size_t>(r)]);
+            HistogramSink hsink;
+            if (htable) {
+                hsink = [&, r](const HistogramSet& h) {
+                    if (cancel)
+                        throw Cancelled{};
+                    std::lock_guard lock(mutex);
+                    hsets[static_cast<std::size_t>(r)].push_back(h);
+                    flush_histograms();
+                };
+            }
+            run_replica(spec, *tables, r, sink, report, &summaries[static_cast<std::size_t>(r)], hsink);
         } catch (const Cancelled&) {
         } catch (...) {
             std::lock_guard lock(mutex);
@@ -224,6 +270,9 @@ int run_run(const RunOptions& o, const CLI::App& app) {
         "{:.3g} s ({:.3g} collisions/s; kernel {}){}\n",
         path.string(), csv.rows(), table.columns().size(), K, K > 1 ? "s" : "", collisions, seconds,
         seconds > 0 ? collisions / seconds : 0.0, summaries[0].kernel, steady_note);
+    if (hcsv)
+        std::cout << fmt::format("roughgas run: wrote {} ({} histogram times x {} bins)\n", hpath.string(),
+                                 sets_written, spec.histogram_bins);
     return exit_ok;
 }
 

@@ -58,6 +58,15 @@ void validate(const RunSpec& spec) {
         prev = t;
     }
     require(!spec.output_times.empty() || (std::isfinite(spec.end) && spec.end > 0), "end must be > 0");
+    const double end = spec.output_times.empty() ? spec.end : spec.output_times.back();
+    prev = 0;
+    for (double t : spec.histogram_times) {
+        require(std::isfinite(t) && t > prev && t <= end * (1 + 1e-12),
+                "histogram times must be positive, increasing and not after the end");
+        prev = t;
+    }
+    require(spec.histogram_bins >= 1 && spec.histogram_max > 0 && std::isfinite(spec.histogram_max),
+            "histogram_bins must be >= 1 and histogram_max > 0");
     if (spec.shear) {
         require(std::isfinite(spec.shear->rate) && spec.shear->rate > 0, "shear rate must be > 0");
         require(std::isfinite(spec.shear->time_step) && spec.shear->time_step > 0,
@@ -102,7 +111,8 @@ struct Tally {
 
 template <class Policy, bool Mixture>
 void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
-           int replica, const RowSink& sink, const ProgressSink& progress, ReplicaSummary* summary) {
+           int replica, const RowSink& sink, const ProgressSink& progress, ReplicaSummary* summary,
+           const HistogramSink& histograms) {
     using Store = std::conditional_t<Policy::needs_rotation, RoughAoS, SmoothAoS>;
     const auto wall0 = std::chrono::steady_clock::now();
     const std::size_t N = static_cast<std::size_t>(spec.particles);
@@ -199,16 +209,44 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
         std::fill(tally.per_type.begin(), tally.per_type.end(), 0);
     };
 
+    const HistogramGrid grid{spec.histogram_bins, spec.histogram_max};
+    const auto emit_histograms = [&] {
+        const auto& store = engine.store();
+        const Moments m = compute_moments(store.velocities(), store.angular_velocities(), slices);
+        HistogramSet h;
+        h.t = engine.time();
+        h.coll_per_particle = 2.0 * static_cast<double>(engine.collisions()) / static_cast<double>(N);
+        h.species = compute_histograms(store.velocities(), store.angular_velocities(), slices, m, grid);
+        histograms(h);
+    };
+
     emit();
     std::vector<double> outputs = spec.output_times;
     if (outputs.empty())
         outputs.push_back(spec.end);
     const double end = outputs.back();
+    // The pauses: output rows and histograms, in order of their collision counts (a pause keeps the
+    // engine's pending candidate, so the trajectory does not depend on where it pauses).
+    struct Pause {
+        std::int64_t target;
+        bool row, histogram;
+    };
+    const auto target_of = [&](double x) {
+        return static_cast<std::int64_t>(std::llround(x * static_cast<double>(N) / 2.0));
+    };
+    std::vector<Pause> pauses;
+    for (double out : outputs)
+        pauses.push_back({target_of(out), true, false});
+    if (histograms)
+        for (double h : spec.histogram_times)
+            pauses.push_back({target_of(h), false, true});
+    std::stable_sort(pauses.begin(), pauses.end(),
+                     [](const Pause& a, const Pause& b) { return a.target < b.target; });
     const std::int64_t chunk = std::max<std::int64_t>(std::int64_t{1} << 16, spec.particles / 2);
-    if (spec.shear) {
-        // Uniform shear flow: Strang steps (dsmc/shear.hpp) of h = time_step mean free times, h set
-        // from the temperatures at the start of each output interval; a row is written at the end
-        // of the first step at or after the output's collisions per particle.
+    // Uniform shear flow: Strang steps (dsmc/shear.hpp) of h = time_step mean free times, h set from
+    // the temperatures at the start of each interval between pauses; a pause (row or histogram)
+    // comes at the end of the first step at or after its collision count.
+    const auto advance_shear = [&](std::int64_t target) {
         const double a = spec.shear->rate;
         const auto stream = [&](double s) {
             stream_shear(engine.store(), a, s);
@@ -217,26 +255,23 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
         const auto collide = [&](double h) {
             engine.run(std::numeric_limits<std::int64_t>::max(), engine.time() + h, tally);
         };
-        for (double out : outputs) {
-            const auto target = static_cast<std::int64_t>(std::llround(out * static_cast<double>(N) / 2.0));
-            Vec3 Omega{};
-            const double nu_c = collision_frequency(types, blocks, moments_now(Omega), engine.volume());
-            if (!(nu_c > 0) || !std::isfinite(nu_c))
-                throw std::runtime_error("run_replica: no collision can happen: every grain is at rest in "
-                                         "the centre-of-mass frame (translational temperature 0)");
-            const double h = spec.shear->time_step / nu_c;
-            strang_steps(h, stream, collide, [&] {
-                if (progress) {
-                    const auto c = static_cast<double>(engine.collisions());
-                    progress(2.0 * c / static_cast<double>(N), end, c);
-                }
-                return engine.collisions() >= target;
-            });
-            emit();
-        }
-    }
-    for (double out : spec.shear ? std::vector<double>{} : outputs) {
-        const auto target = static_cast<std::int64_t>(std::llround(out * static_cast<double>(N) / 2.0));
+        Vec3 Omega{};
+        const double nu_c = collision_frequency(types, blocks, moments_now(Omega), engine.volume());
+        if (!(nu_c > 0) || !std::isfinite(nu_c))
+            throw std::runtime_error("run_replica: no collision can happen: every grain is at rest in "
+                                     "the centre-of-mass frame (translational temperature 0)");
+        strang_steps(spec.shear->time_step / nu_c, stream, collide, [&] {
+            if (progress) {
+                const auto c = static_cast<double>(engine.collisions());
+                progress(2.0 * c / static_cast<double>(N), end, c);
+            }
+            return engine.collisions() >= target;
+        });
+    };
+    for (const Pause& pause : pauses) {
+        const std::int64_t target = pause.target;
+        if (spec.shear && engine.collisions() < target)
+            advance_shear(target);
         while (engine.collisions() < target) {
             const std::int64_t next = std::min(target, engine.collisions() + chunk);
             if (engine.run(next, std::numeric_limits<double>::infinity(), tally) == StopReason::stalled) {
@@ -249,7 +284,10 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
                 progress(2.0 * c / static_cast<double>(N), end, c);
             }
         }
-        emit();
+        if (pause.row)
+            emit();
+        if (pause.histogram)
+            emit_histograms();
     }
 
     if (summary) {
@@ -311,7 +349,7 @@ std::vector<Column> dsmc_columns(const RunSpec& spec) {
 }
 
 void run_replica(const RunSpec& spec, const RestitutionTables& tables, int replica, const RowSink& sink,
-                 const ProgressSink& progress, ReplicaSummary* summary) {
+                 const ProgressSink& progress, ReplicaSummary* summary, const HistogramSink& histograms) {
     validate(spec);
     require(replica >= 0, "negative replica index");
     const std::vector<SpeciesBlock> blocks = make_species_blocks(spec.species, spec.particles);
@@ -329,7 +367,7 @@ void run_replica(const RunSpec& spec, const RestitutionTables& tables, int repli
         std::visit(
             [&](const auto& p) {
                 using P = std::decay_t<decltype(p)>;
-                drive<P, false>(spec, blocks, {p}, replica, sink, progress, summary);
+                drive<P, false>(spec, blocks, {p}, replica, sink, progress, summary, histograms);
             },
             policies[0]);
         return;
@@ -343,7 +381,7 @@ void run_replica(const RunSpec& spec, const RestitutionTables& tables, int repli
                 std::vector<P> v;
                 for (const AnyPolicy& p : policies)
                     v.push_back(std::get<P>(p));
-                drive<P, true>(spec, blocks, std::move(v), replica, sink, progress, summary);
+                drive<P, true>(spec, blocks, std::move(v), replica, sink, progress, summary, histograms);
             },
             policies[0]);
         return;
@@ -353,13 +391,13 @@ void run_replica(const RunSpec& spec, const RestitutionTables& tables, int repli
         std::vector<AnySmoothPolicy> v;
         for (const AnyPolicy& p : policies)
             v.push_back(to_any_smooth(p));
-        drive<AnySmoothPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary);
+        drive<AnySmoothPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary, histograms);
         return;
     }
     std::vector<AnyRoughPolicy> v;
     for (const AnyPolicy& p : policies)
         v.push_back(to_any_rough(p));
-    drive<AnyRoughPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary);
+    drive<AnyRoughPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary, histograms);
 }
 
 } // namespace roughgas

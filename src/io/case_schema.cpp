@@ -142,6 +142,26 @@ std::vector<Key> keys() {
             .one_of(output_spacing_names)
             .doc("linear: every output_every; log: at output_every x 10^(k/10), k = 0, 1, ... (10 per "
                  "decade)"),
+        Key("run.histogram_every", T::real)
+            .unit("collisions per particle")
+            .fallback(0.0)
+            .ge(0)
+            .doc("histograms of c*, w*, c*.w* to DIR/histograms.csv at these times (spaced as "
+                 "histogram_spacing, always at the end); 0: none. Must be <= end"),
+        Key("run.histogram_spacing", T::string)
+            .fallback(std::string("linear"))
+            .one_of(output_spacing_names)
+            .doc("as output_spacing, for the histogram times"),
+        Key("run.histogram_bins", T::integer)
+            .fallback(std::int64_t{50})
+            .ge(1)
+            .le(100000)
+            .doc("bins per histogram"),
+        Key("run.histogram_max", T::real)
+            .fallback(5.0)
+            .gt(0)
+            .doc("range of the histograms: reduced speeds in [0, max), c*.w* in [-max, max) (a "
+                 "Maxwellian has 1e-10 of its grains beyond 5)"),
         // [[species]]
         Key("species.name", T::string)
             .fallback(std::string("grain"))

@@ -1,6 +1,7 @@
 #include "roughgas/io/moments_csv.hpp"
 
 #include "roughgas/dsmc/run.hpp"
+#include "roughgas/io/replica_mean.hpp"
 
 #include <fmt/format.h>
 
@@ -43,20 +44,6 @@ MomentsTable::MomentsTable(const RunSpec& spec) : solver_(dsmc_columns(spec)), r
             }
         }
     }
-}
-
-std::vector<std::string> MomentsTable::names() const {
-    std::vector<std::string> v;
-    for (const Column& c : columns_)
-        v.push_back(c.name);
-    return v;
-}
-
-std::vector<std::string> MomentsTable::units() const {
-    std::vector<std::string> v;
-    for (const Column& c : columns_)
-        v.push_back(c.unit);
-    return v;
 }
 
 void MomentsTable::check(std::span<const double> row) const {
@@ -102,19 +89,14 @@ std::vector<double> MomentsTable::combine(std::span<const std::span<const double
     const std::size_t n = solver_.size();
     std::vector<double> out;
     out.reserve(columns_.size());
-    const double K = static_cast<double>(replicas_);
+    std::vector<double> x(rows.size());
     for (std::size_t j = 0; j < n; ++j) {
-        double sum = 0;
-        for (const auto& r : rows)
-            sum += r[j];
-        const double mean = sum / K;
-        out.push_back(mean);
-        if (replicas_ > 1) {
-            double ss = 0;
-            for (const auto& r : rows)
-                ss += (r[j] - mean) * (r[j] - mean);
-            out.push_back(std::sqrt(ss / (K * (K - 1))));
-        }
+        for (std::size_t r = 0; r < rows.size(); ++r)
+            x[r] = rows[r][j];
+        const ReplicaMean m = replica_mean(x);
+        out.push_back(m.mean);
+        if (replicas_ > 1)
+            out.push_back(m.error);
     }
     if (trajectory_) {
         const double t = out[0];

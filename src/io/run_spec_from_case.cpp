@@ -69,6 +69,10 @@ RunSpec run_spec_from_case(const CaseConfig& cfg) {
     spec.replicas = static_cast<int>(cfg.run.replicas);
     spec.end = cfg.run.end;
     spec.output_times = output_times(cfg.run.output_every, cfg.run.end, cfg.run.output_spacing);
+    if (cfg.run.histogram_every > 0)
+        spec.histogram_times = output_times(cfg.run.histogram_every, cfg.run.end, cfg.run.histogram_spacing);
+    spec.histogram_bins = static_cast<int>(cfg.run.histogram_bins);
+    spec.histogram_max = cfg.run.histogram_max;
     spec.contact_tolerance = cfg.contact.tolerance;
     spec.cache_file = cfg.contact.cache_file;
     spec.use_cache = cfg.contact.cache;

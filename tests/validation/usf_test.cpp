@@ -2,7 +2,7 @@
 // the second order of the Strang splitting, and the elastic limit of the shear viscosity.
 // Every tolerance is stated in standard errors of the sample it runs (batch means over rows about
 // one collision per particle apart, or the spread of independent replicas); seeds are fixed.
-// CPU (Release, one core of the project machine): about 30 s for the whole binary.
+// CPU (Release, one core of the project machine): about 14 s for the whole binary (measured).
 #include "roughgas/dsmc/run.hpp"
 #include "roughgas/dsmc/tables.hpp"
 #include "roughgas/observables/steady_state.hpp"

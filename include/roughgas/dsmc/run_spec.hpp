@@ -44,6 +44,12 @@ struct RunSpec {
     int replicas = 1;
     double end = 10;                    // collisions per particle
     std::vector<double> output_times;   // collisions per particle, increasing, the last one == end
+    // Histograms of c*, w*, c*.w* (observables/histograms.hpp) at these times (collisions per
+    // particle, increasing, <= end; empty: none), with `histogram_bins` bins over [0, histogram_max)
+    // (speeds) and [-histogram_max, histogram_max) (c*.w*). Pausing there does not change the run.
+    std::vector<double> histogram_times;
+    int histogram_bins = 50;
+    double histogram_max = 5.0;
     int threads = 1;
     // DSMC step length in mean free times. A step only refreshes the collision majorant (and the
     // frame); the collision statistics do not depend on it (dsmc/engine.hpp).
