@@ -1,5 +1,6 @@
-// roughgas run CASE.toml --out DIR ... : the DSMC of the homogeneous gas (issue 3), writing
-// DIR/moments.csv (interface.md "Output", io/moments_csv.hpp).
+// roughgas run CASE.toml --out DIR ... : the DSMC of the homogeneous gas (issue 3), cooling or in
+// uniform shear flow (issue 4), writing DIR/moments.csv (interface.md "Output", io/moments_csv.hpp)
+// and, for shear runs, DIR/steady.csv (the steady state found in the rows, io/steady_csv.hpp).
 //
 // Order of work: validate the case and the output directory (exit 2, nothing written), build the
 // restitution tables, then run the replicas (in parallel over --threads when replicas > 1; each
@@ -91,7 +92,7 @@ int run_run(const RunOptions& o, const CLI::App& app) {
     RunSpec spec;
     try {
         spec = run_spec_from_case(cfg);
-    } catch (const std::invalid_argument& e) { // e.g. run.kind = "shear": valid, not implemented
+    } catch (const std::invalid_argument& e) { // a valid case the solver cannot run
         throw std::runtime_error(e.what());
     }
     spec.threads = o.threads > 0 ? o.threads : omp_get_max_threads();

@@ -212,11 +212,13 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
     const HistogramGrid grid{spec.histogram_bins, spec.histogram_max};
     const auto emit_histograms = [&] {
         const auto& store = engine.store();
-        const Moments m = compute_moments(store.velocities(), store.angular_velocities(), slices);
+        Vec3 Omega{};
+        const Moments m = moments_now(Omega); // shear: omega about the mean spin, as the rows
+        const Vec3Column w = spec.shear ? column_of(spin.data(), 0) : store.angular_velocities();
         HistogramSet h;
         h.t = engine.time();
         h.coll_per_particle = 2.0 * static_cast<double>(engine.collisions()) / static_cast<double>(N);
-        h.species = compute_histograms(store.velocities(), store.angular_velocities(), slices, m, grid);
+        h.species = compute_histograms(store.velocities(), w, slices, m, grid);
         histograms(h);
     };
 
