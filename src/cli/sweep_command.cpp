@@ -118,7 +118,9 @@ int run_sweep(const SweepOptions& o) {
     std::vector<CaseConfig> cases;
     std::vector<std::vector<std::string>> point_sets;
     for (long k = 0; k < s.count; ++k) {
-        const double x = s.count == 1 ? from : from + (to - from) * static_cast<double>(k) / static_cast<double>(s.count - 1);
+        const double x = s.count == 1
+                             ? from
+                             : from + (to - from) * static_cast<double>(k) / static_cast<double>(s.count - 1);
         std::vector<std::string> sets = o.sets;
         sets.push_back(fmt::format("{}={:.17g}", s.key, x));
         cases.push_back(load_case(o.case_file, sets, CaseUse::run));
@@ -133,7 +135,8 @@ int run_sweep(const SweepOptions& o) {
                          fmt::format("--out {}: sweep.csv exists (use --force to overwrite)", dir.string()));
     fs::create_directories(dir);
 
-    const int threads = std::min<int>(o.threads > 0 ? o.threads : omp_get_max_threads(), static_cast<int>(s.count));
+    const int threads =
+        std::min<int>(o.threads > 0 ? o.threads : omp_get_max_threads(), static_cast<int>(s.count));
     std::vector<PointResult> results(values.size());
     std::exception_ptr error;
     std::mutex mutex;
@@ -151,7 +154,8 @@ int run_sweep(const SweepOptions& o) {
             prov.overrides = point_sets[static_cast<std::size_t>(k)];
             prov.seed = cases[static_cast<std::size_t>(k)].run.seed;
             prov.resolved_case = emit_case(cases[static_cast<std::size_t>(k)]);
-            prov.notes = {fmt::format("sweep point {} of {}: {} = {:.17g}", k, s.count, s.key, values[static_cast<std::size_t>(k)])};
+            prov.notes = {fmt::format("sweep point {} of {}: {} = {:.17g}", k, s.count, s.key,
+                                      values[static_cast<std::size_t>(k)])};
             prov.units = p.units;
             CsvWriter csv(p.names, prov);
             for (const auto& row : p.rows)
@@ -182,10 +186,11 @@ int run_sweep(const SweepOptions& o) {
     prov.overrides = o.sets;
     prov.seed = cases[0].run.seed;
     prov.resolved_case = emit_case(cases[0]);
-    prov.notes = {fmt::format("sweep of {} from {} to {} ({} points); one row per point: the steady state "
-                              "(shear: of T and P*_ij; cooling: the scaled state of theta, a20, a02), batch means "
-                              "(io/steady_csv.hpp); each point's rows in point_K/moments.csv",
-                              s.key, s.from, s.to, s.count)};
+    prov.notes = {
+        fmt::format("sweep of {} from {} to {} ({} points); one row per point: the steady state "
+                    "(shear: of T and P*_ij; cooling: the scaled state of theta, a20, a02), batch means "
+                    "(io/steady_csv.hpp); each point's rows in point_K/moments.csv",
+                    s.key, s.from, s.to, s.count)};
     CsvWriter csv(columns, prov);
     for (std::size_t k = 0; k < results.size(); ++k) {
         if (steady_csv_columns(results[k].steady) != steady_cols)
@@ -197,8 +202,8 @@ int run_sweep(const SweepOptions& o) {
         csv.add_row(row);
     }
     csv.write(dir / "sweep.csv");
-    std::cout << fmt::format("roughgas sweep: wrote {} ({} points, {} columns)\n", (dir / "sweep.csv").string(),
-                             results.size(), columns.size());
+    std::cout << fmt::format("roughgas sweep: wrote {} ({} points, {} columns)\n",
+                             (dir / "sweep.csv").string(), results.size(), columns.size());
     return exit_ok;
 }
 
@@ -213,7 +218,9 @@ Subcommand add_sweep_command(CLI::App& parent) {
     app->add_option("--param", o->param, "KEY=FROM:TO:COUNT, e.g. collision.alpha=0.5:0.9:5")->required();
     app->add_option("--out", o->out, "output directory")->required();
     add_set_option(*app, o->sets);
-    app->add_option("--threads", o->threads, "threads over the points (default: all; results do not depend on it)")->check(CLI::PositiveNumber);
+    app->add_option("--threads", o->threads,
+                    "threads over the points (default: all; results do not depend on it)")
+        ->check(CLI::PositiveNumber);
     app->add_flag("--quiet", o->quiet, "no progress output");
     app->add_flag("--force", o->force, "overwrite an existing output directory");
     return {app, [o] { return run_sweep(*o); }};

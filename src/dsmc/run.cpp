@@ -140,7 +140,8 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
 
     std::vector<UsfSpecies> usf_species;
     for (const SpeciesBlock& b : blocks)
-        usf_species.push_back({static_cast<double>(b.count) / static_cast<double>(N), b.grain.mass, b.grain.radius});
+        usf_species.push_back(
+            {static_cast<double>(b.count) / static_cast<double>(N), b.grain.mass, b.grain.radius});
     std::vector<Vec3> spin; // shear: omega - Omega, so that T_rot is about the mean spin
     const auto moments_now = [&](Vec3& Omega) {
         if (!spec.shear)
@@ -172,7 +173,8 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
         row.push_back(2.0 * static_cast<double>(c - c_prev) / static_cast<double>(N) * inv_dt);
         row.push_back(-tally.dE / engine.volume() * inv_dt);
         if (spec.shear) {
-            const PressureTensor P = pressure_tensor(engine.store().velocities(), slices, engine.volume(), m.mean_velocity);
+            const PressureTensor P =
+                pressure_tensor(engine.store().velocities(), slices, engine.volume(), m.mean_velocity);
             const double T = m.all.T_tr;
             const UsfReduced r =
                 usf_reduced(P, spec.shear->rate, usf_nu(usf_species, spec.density, T), spec.density, T);
@@ -327,8 +329,8 @@ std::vector<Column> dsmc_columns(const RunSpec& spec) {
         for (const char* q : shear_quantities) {
             const std::string name = q;
             c.push_back({name, name.starts_with("P_") && !name.ends_with("_star") ? "energy/volume"
-                               : name.starts_with("omega")                     ? "1/time"
-                                                                               : "-"});
+                               : name.starts_with("omega")                        ? "1/time"
+                                                                                  : "-"});
         }
     }
     const std::size_t S = spec.species.size();
@@ -393,7 +395,8 @@ void run_replica(const RunSpec& spec, const RestitutionTables& tables, int repli
         std::vector<AnySmoothPolicy> v;
         for (const AnyPolicy& p : policies)
             v.push_back(to_any_smooth(p));
-        drive<AnySmoothPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary, histograms);
+        drive<AnySmoothPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary,
+                                     histograms);
         return;
     }
     std::vector<AnyRoughPolicy> v;

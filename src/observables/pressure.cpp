@@ -5,7 +5,8 @@
 
 namespace roughgas {
 
-PressureTensor pressure_tensor(Vec3Column v, std::span<const SpeciesSlice> species, double volume, const Vec3& u) {
+PressureTensor pressure_tensor(Vec3Column v, std::span<const SpeciesSlice> species, double volume,
+                               const Vec3& u) {
     PressureTensor P;
     for (const SpeciesSlice& sp : species) {
         PressureTensor s;
@@ -48,7 +49,8 @@ double usf_nu(std::span<const UsfSpecies> species, double density, double T) {
         for (const UsfSpecies& b : species) {
             const double sigma = a.radius + b.radius;
             const double m_ab = a.mass * b.mass / (a.mass + b.mass);
-            nu_c += a.fraction * b.fraction * density * sigma * sigma * std::sqrt(8.0 * std::numbers::pi * T / m_ab);
+            nu_c += a.fraction * b.fraction * density * sigma * sigma *
+                    std::sqrt(8.0 * std::numbers::pi * T / m_ab);
         }
     }
     return 0.8 * nu_c; // (4/5) nu_c = (16/5) n sigma^2 sqrt(pi T/m) for equal spheres

@@ -42,8 +42,9 @@ SteadyValue batch_mean(std::span<const double> x, int batches) {
     return v;
 }
 
-SteadyResult find_steady_state(const std::vector<std::string>& names, const std::vector<std::vector<double>>& rows,
-                               const SteadyOptions& o, const std::vector<std::string>& skip) {
+SteadyResult find_steady_state(const std::vector<std::string>& names,
+                               const std::vector<std::vector<double>>& rows, const SteadyOptions& o,
+                               const std::vector<std::string>& skip) {
     SteadyResult r;
     const std::size_t n = rows.size();
     const auto series = [&](std::size_t col, std::size_t from, std::size_t to) {
@@ -71,7 +72,8 @@ SteadyResult find_steady_state(const std::vector<std::string>& names, const std:
             // The error of both means from the second half's batches (a transient inside the first
             // half would inflate its own batch error and hide itself); the 1e-12 relative slack:
             // a constant column, e.g. T_rot of smooth grains, has err = 0.
-            const double se = B.err * std::sqrt(1.0 + static_cast<double>(b.size()) / static_cast<double>(a.size()));
+            const double se =
+                B.err * std::sqrt(1.0 + static_cast<double>(b.size()) / static_cast<double>(a.size()));
             const double slack = 1e-12 * std::max(std::abs(A.mean), std::abs(B.mean));
             if (!(std::abs(B.mean - A.mean) <= o.threshold * se + slack)) {
                 steady = false;

@@ -145,7 +145,8 @@ std::vector<std::vector<double>> run_rows(const RunSpec& spec, ReplicaSummary* s
     const auto tables = RestitutionTables::build(spec);
     std::vector<std::vector<double>> rows;
     run_replica(
-        spec, *tables, 0, [&](std::span<const double> r) { rows.emplace_back(r.begin(), r.end()); }, {}, summary);
+        spec, *tables, 0, [&](std::span<const double> r) { rows.emplace_back(r.begin(), r.end()); }, {},
+        summary);
     return rows;
 }
 
@@ -175,7 +176,8 @@ TEST(ShearRun, ColumnsAndRows) {
 }
 
 TEST(ShearRun, SameSeedSameRunOtherSeedOtherRun) {
-    for (PairRestitution m : {PairRestitution{ConstantRestitution{0.9, -1.0}}, PairRestitution{ConstantRestitution{0.8, 0.5}}}) {
+    for (PairRestitution m :
+         {PairRestitution{ConstantRestitution{0.9, -1.0}}, PairRestitution{ConstantRestitution{0.8, 0.5}}}) {
         const auto a = run_rows(shear_spec(m)), b = run_rows(shear_spec(m)), c = run_rows(shear_spec(m, 12));
         ASSERT_EQ(a.size(), b.size());
         for (std::size_t k = 0; k < a.size(); ++k)

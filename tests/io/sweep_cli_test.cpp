@@ -59,7 +59,8 @@ TEST(SweepCli, OneRowPerPointIdenticalWhateverTheThreads) {
     EXPECT_EQ(a, test::read_file(dir / "t2" / "sweep.csv"));
     for (int k = 0; k < 3; ++k) {
         const std::string p = "point_" + std::to_string(k);
-        EXPECT_EQ(test::read_file(dir / "t1" / p / "moments.csv"), test::read_file(dir / "t2" / p / "moments.csv"));
+        EXPECT_EQ(test::read_file(dir / "t1" / p / "moments.csv"),
+                  test::read_file(dir / "t2" / p / "moments.csv"));
     }
     const std::vector<std::string> lines = data_lines(a);
     ASSERT_EQ(lines.size(), 4u); // header + 3 points
@@ -76,8 +77,10 @@ TEST(SweepCli, CoolingCasesSweepToo) {
     std::string c = shear_case();
     c = test::replaced(c, "kind = \"shear\"", "kind = \"cooling\"");
     const fs::path f = dir.write("hcs.toml", c);
-    const test::CommandResult r = run_roughgas(
-        "sweep '" + f.string() + "' --param collision.beta=0:1:2 --quiet --out '" + (dir / "o").string() + "'", dir);
+    const test::CommandResult r =
+        run_roughgas("sweep '" + f.string() + "' --param collision.beta=0:1:2 --quiet --out '" +
+                         (dir / "o").string() + "'",
+                     dir);
     ASSERT_EQ(r.status, 0) << r.err;
     const std::vector<std::string> lines = data_lines(test::read_file(dir / "o" / "sweep.csv"));
     ASSERT_EQ(lines.size(), 3u);
@@ -91,13 +94,14 @@ TEST(SweepCli, InvalidPointFailsBeforeAnyWork) {
     const test::ScratchDir dir;
     const fs::path f = dir.write("usf.toml", shear_case());
     const fs::path out = dir / "o";
-    test::CommandResult r =
-        run_roughgas("sweep '" + f.string() + "' --param shear.rate=1:-1:3 --out '" + out.string() + "'", dir);
+    test::CommandResult r = run_roughgas(
+        "sweep '" + f.string() + "' --param shear.rate=1:-1:3 --out '" + out.string() + "'", dir);
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("shear.rate"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("must be > 0"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find(f.string()), std::string::npos) << r.err;
-    r = run_roughgas("sweep '" + f.string() + "' --param collision.alpha=0.5:x:3 --out '" + out.string() + "'", dir);
+    r = run_roughgas(
+        "sweep '" + f.string() + "' --param collision.alpha=0.5:x:3 --out '" + out.string() + "'", dir);
     EXPECT_EQ(r.status, 2);
     EXPECT_FALSE(fs::exists(out));
 }

@@ -17,13 +17,13 @@ double gauss(Rng& r) { // Box-Muller
 }
 
 // rows: t, coll_per_particle, X, with X = level + jump exp(-k/tau) + slope k + noise sigma.
-std::vector<std::vector<double>> series(std::uint64_t seed, std::size_t n, double jump, double tau, double slope,
-                                        double sigma) {
+std::vector<std::vector<double>> series(std::uint64_t seed, std::size_t n, double jump, double tau,
+                                        double slope, double sigma) {
     Rng r = make_stream(seed, Stream::test, 0, 0);
     std::vector<std::vector<double>> rows;
     for (std::size_t k = 0; k < n; ++k) {
-        const double x = 1.0 + jump * std::exp(-static_cast<double>(k) / tau) + slope * static_cast<double>(k) +
-                         sigma * gauss(r);
+        const double x = 1.0 + jump * std::exp(-static_cast<double>(k) / tau) +
+                         slope * static_cast<double>(k) + sigma * gauss(r);
         rows.push_back({static_cast<double>(k), static_cast<double>(k), x});
     }
     return rows;

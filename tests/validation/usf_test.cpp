@@ -24,7 +24,8 @@ struct Rows {
     std::vector<Column> cols;
     std::vector<std::vector<double>> rows;
     std::vector<double> col(const std::string& name, std::size_t from = 0) const {
-        const auto it = std::find_if(cols.begin(), cols.end(), [&](const Column& c) { return c.name == name; });
+        const auto it =
+            std::find_if(cols.begin(), cols.end(), [&](const Column& c) { return c.name == name; });
         EXPECT_NE(it, cols.end()) << name;
         const std::size_t j = static_cast<std::size_t>(it - cols.begin());
         std::vector<double> x;
@@ -37,7 +38,8 @@ struct Rows {
 Rows run(const RunSpec& spec, int replica = 0) {
     const auto tables = RestitutionTables::build(spec);
     Rows r{dsmc_columns(spec), {}};
-    run_replica(spec, *tables, replica, [&](std::span<const double> row) { r.rows.emplace_back(row.begin(), row.end()); });
+    run_replica(spec, *tables, replica,
+                [&](std::span<const double> row) { r.rows.emplace_back(row.begin(), row.end()); });
     return r;
 }
 
@@ -133,7 +135,8 @@ TEST(UsfSteady, EnergyBalanceForEveryKindOfModel) {
         a.temperature = b.temperature = 0.024;
         a.rotational_temperature = b.rotational_temperature = 0.006;
         s.species = {a, b};
-        s.pairs = {ConstantRestitution{0.9, 0.5}, ConstantRestitution{0.85, 0.2}, ConstantRestitution{0.8, 0.0}};
+        s.pairs = {ConstantRestitution{0.9, 0.5}, ConstantRestitution{0.85, 0.2},
+                   ConstantRestitution{0.8, 0.0}};
         cases.emplace_back("mixture", s);
     }
     for (const auto& [name, spec] : cases) {
@@ -145,7 +148,8 @@ TEST(UsfSteady, EnergyBalanceForEveryKindOfModel) {
         o.monitored = steady_monitored(names, true);
         const SteadyResult st = find_steady_state(names, r.rows, o);
         EXPECT_TRUE(st.reached) << name;
-        const std::vector<double> P_xy = r.col("P_xy", st.first_row), diss = r.col("E_diss_rate", st.first_row);
+        const std::vector<double> P_xy = r.col("P_xy", st.first_row),
+                                  diss = r.col("E_diss_rate", st.first_row);
         std::vector<double> diff(P_xy.size());
         for (std::size_t k = 0; k < diff.size(); ++k)
             diff[k] = -spec.shear->rate * P_xy[k] - diss[k];
@@ -181,8 +185,8 @@ TEST(UsfSplitting, SecondOrderInTheTimeStep) {
     const double ratio = d1 / d2;
     const double ratio_err = std::abs(ratio) * std::hypot(e1 / d1, e2 / d2);
     const double P0 = (4 * P[2] - P[1]) / 3;
-    std::printf("[ USF ] ratio %.3f +- %.3f; Richardson P0 = %.5f, errors %.5f (h), %.5f (h/2), %.5f (h/4)\n", ratio,
-                ratio_err, P0, P[0] - P0, P[1] - P0, P[2] - P0);
+    std::printf("[ USF ] ratio %.3f +- %.3f; Richardson P0 = %.5f, errors %.5f (h), %.5f (h/2), %.5f (h/4)\n",
+                ratio, ratio_err, P0, P[0] - P0, P[1] - P0, P[2] - P0);
     ASSERT_GT(std::abs(d2), 3 * e2) << "the h/2 - h/4 difference must be resolved";
     EXPECT_LT(ratio_err, 1.0);
     EXPECT_NEAR(ratio, 4.0, 3 * ratio_err);
@@ -241,8 +245,9 @@ TEST(UsfElastic, ViscosityTendsToTheExactHardSphereValue) {
     for (double x : eta0)
         ss += (x - m) * (x - m);
     const double se = std::sqrt(ss / (K * (K - 1.0)));
-    std::printf("[ USF ] elastic: eta*(a* -> 0) = %.4f +- %.4f (exact/first Sonine 1.016034); d eta*/d a*^2 = %.2f\n",
-                m, se, cm);
+    std::printf(
+        "[ USF ] elastic: eta*(a* -> 0) = %.4f +- %.4f (exact/first Sonine 1.016034); d eta*/d a*^2 = %.2f\n",
+        m, se, cm);
     EXPECT_LT(se, 0.006) << "the fit must resolve eta0 to better than the 1.6% it is to distinguish";
     EXPECT_NEAR(m, 1.016034, 4 * se + 0.003 * 1.016);
     EXPECT_LT(cm, 0.0) << "shear thinning: eta* falls with a*";

@@ -17,7 +17,7 @@ std::vector<double> steady_csv_row(const SteadyResult& r, const std::vector<std:
 
 // find_steady_state over moments.csv rows with the monitored quantities of the run's kind
 // (coll_per_particle is kept among the averages, t is not).
-SteadyResult steady_summary(const std::vector<std::string>& names, const std::vector<std::vector<double>>& rows,
-                            bool shear);
+SteadyResult steady_summary(const std::vector<std::string>& names,
+                            const std::vector<std::vector<double>>& rows, bool shear);
 
 } // namespace roughgas

@@ -28,7 +28,8 @@ struct PressureTensor {
 
 // P_ij over all grains about the velocity u (their mass-weighted mean: Moments::mean_velocity),
 // per unit `volume`.
-PressureTensor pressure_tensor(Vec3Column v, std::span<const SpeciesSlice> species, double volume, const Vec3& u);
+PressureTensor pressure_tensor(Vec3Column v, std::span<const SpeciesSlice> species, double volume,
+                               const Vec3& u);
 
 // Omega (zero when no grain has a moment of inertia).
 Vec3 mean_spin(Vec3Column omega, std::span<const SpeciesSlice> species);

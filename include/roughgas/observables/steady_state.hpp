@@ -40,8 +40,8 @@ struct SteadyValue {
 
 struct SteadyResult {
     bool reached = false;
-    std::size_t first_row = 0; // the window's first row (reached or not: the last candidate tried)
-    std::size_t rows = 0;      // rows in the window
+    std::size_t first_row = 0;       // the window's first row (reached or not: the last candidate tried)
+    std::size_t rows = 0;            // rows in the window
     std::vector<SteadyValue> values; // every column but the skipped ones, in column order
 };
 
@@ -50,8 +50,9 @@ struct SteadyResult {
 SteadyValue batch_mean(std::span<const double> x, int batches);
 
 // `names`: the columns of `rows`; columns named in `skip` (and every X_err column) are not averaged.
-SteadyResult find_steady_state(const std::vector<std::string>& names, const std::vector<std::vector<double>>& rows,
-                               const SteadyOptions& options, const std::vector<std::string>& skip = {"t"});
+SteadyResult find_steady_state(const std::vector<std::string>& names,
+                               const std::vector<std::vector<double>>& rows, const SteadyOptions& options,
+                               const std::vector<std::string>& skip = {"t"});
 
 // The monitored quantities above for a run of the given kind, among `names`.
 std::vector<std::string> steady_monitored(const std::vector<std::string>& names, bool shear);
