@@ -10,6 +10,7 @@
 // `roughgas run --resume DIR` and `--checkpoint-every` are accepted but not implemented yet (exit 1).
 #include "commands.hpp"
 #include "progress.hpp"
+#include "quasistatic_warning.hpp"
 
 #include "roughgas/dsmc/run.hpp"
 #include "roughgas/io/case_file.hpp"
@@ -96,6 +97,20 @@ int run_run(const RunOptions& o, const CLI::App& app) {
         throw std::runtime_error(e.what());
     }
     spec.threads = o.threads > 0 ? o.threads : omp_get_max_threads();
+    // The contact model's range at the start (the hottest moment of a cooling run): the rms impact
+    // speed of each pair with a contact model, sqrt(3 (T_a/m_a + T_b/m_b)), and three times it (the tail).
+    if (!o.quiet) {
+        bool warned = false;
+        for (std::size_t a = 0; a < cfg.species.size() && !warned; ++a)
+            for (std::size_t b = a; b < cfg.species.size() && !warned; ++b) {
+                if (!uses_material(collision_for(cfg, a, b).model))
+                    continue;
+                const double g = std::sqrt(3.0 * (cfg.species[a].temperature / cfg.species[a].mass +
+                                                  cfg.species[b].temperature / cfg.species[b].mass));
+                const double speeds[] = {g, 3.0 * g};
+                warned = warn_if_not_quasistatic(cfg, a, b, speeds, "initial rms impact speed and 3x it", std::cerr);
+            }
+    }
     const int K = spec.replicas;
 
     MomentsTable table(spec);
