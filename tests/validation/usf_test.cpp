@@ -196,7 +196,7 @@ TEST(UsfSplitting, SecondOrderInTheTimeStep) {
 // Elastic limit (alpha = 1, beta = -1): the gas heats, a* falls as the run goes on, and the
 // reduced viscosity eta* = -P*_xy/a* tends to the exact hard-sphere viscosity over its first
 // Sonine approximation, 1.016034 (Chapman & Cowling, The Mathematical Theory of Non-uniform Gases,
-// 3rd ed., §10.21: the converged Sonine series for rigid elastic spheres). At finite a* the
+// the converged Sonine series for rigid elastic spheres). At finite a* the
 // non-Newtonian (Burnett and higher) corrections lower eta* by O(a*^2) (shear thinning), and the
 // heating makes the state slowly unsteady, also O(a*^2); so each replica fits
 // eta*(a*) = eta0 + c a*^2 over its rows from a* = 0.22 down to 0.07 (a* falls with T^-1/2;
