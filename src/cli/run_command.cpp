@@ -1,5 +1,6 @@
-// roughgas run CASE.toml --out DIR ... : the DSMC of the homogeneous gas (issue 3), writing
-// DIR/moments.csv (interface.md "Output", io/moments_csv.hpp).
+// roughgas run CASE.toml --out DIR ... : the DSMC of the homogeneous gas (issue 3), cooling or in
+// uniform shear flow (issue 4), writing DIR/moments.csv (interface.md "Output", io/moments_csv.hpp)
+// and, for shear runs, DIR/steady.csv (the steady state found in the rows, io/steady_csv.hpp).
 //
 // Order of work: validate the case and the output directory (exit 2, nothing written), build the
 // restitution tables, then run the replicas (in parallel over --threads when replicas > 1; each
@@ -18,6 +19,7 @@
 #include "roughgas/io/moments_csv.hpp"
 #include "roughgas/io/run_spec_from_case.hpp"
 #include "roughgas/io/run_tables.hpp"
+#include "roughgas/io/steady_csv.hpp"
 
 #include <fmt/format.h>
 #include <omp.h>
@@ -91,7 +93,7 @@ int run_run(const RunOptions& o, const CLI::App& app) {
     RunSpec spec;
     try {
         spec = run_spec_from_case(cfg);
-    } catch (const std::invalid_argument& e) { // e.g. run.kind = "shear": valid, not implemented
+    } catch (const std::invalid_argument& e) { // a valid case the solver cannot run
         throw std::runtime_error(e.what());
     }
     spec.threads = o.threads > 0 ? o.threads : omp_get_max_threads();
@@ -122,6 +124,11 @@ int run_run(const RunOptions& o, const CLI::App& app) {
         fmt::format("replicas: {}{}", K,
                     K > 1 ? " (X = mean over replicas, X_err = its standard error)" : ""),
     };
+    if (spec.shear)
+        prov.notes.push_back(fmt::format(
+            "uniform shear flow u = a y x, a = {:.17g}: V = v - u; Strang steps of {:.17g} mean free times; "
+            "rows at the end of the first step at or after each output's coll_per_particle",
+            spec.shear->rate, spec.shear->time_step));
     if (table.has_theory())
         prov.notes.push_back("*_theory: Maxwellian approximation for constant alpha, beta at the row's t "
                              "(observables/theory.hpp; Haff's law for smooth spheres)");
@@ -175,6 +182,7 @@ int run_run(const RunOptions& o, const CLI::App& app) {
     std::vector<std::vector<std::vector<double>>> rows(static_cast<std::size_t>(K));
     std::mutex mutex;
     std::size_t combined = 0, on_disk = 0;
+    std::vector<std::vector<double>> table_rows; // the combined rows, for the steady-state summary
     auto last_write = std::chrono::steady_clock::now() - std::chrono::hours(1);
     const auto flush = [&](bool now) { // under `mutex`
         std::size_t complete = rows[0].size();
@@ -184,7 +192,8 @@ int run_run(const RunOptions& o, const CLI::App& app) {
             std::vector<std::span<const double>> spans;
             for (const auto& r : rows)
                 spans.emplace_back(r[combined]);
-            csv.add_row(table.combine(spans));
+            table_rows.push_back(table.combine(spans));
+            csv.add_row(table_rows.back());
         }
         const auto t = std::chrono::steady_clock::now();
         if (csv.rows() > on_disk && (now || t - last_write >= std::chrono::seconds(1))) {
@@ -248,14 +257,35 @@ int run_run(const RunOptions& o, const CLI::App& app) {
         }
     }
 
+    std::string steady_note;
+    if (spec.shear) { // the steady state and its averages: DIR/steady.csv (io/steady_csv.hpp)
+        const std::vector<std::string> names = table.names();
+        const SteadyResult st = steady_summary(names, table_rows, true);
+        CsvProvenance sp = prov;
+        sp.units.clear();
+        sp.notes.push_back("steady-state summary of moments.csv: drift criterion and batch means "
+                           "(observables/steady_state.hpp); X_err = batch-means standard error");
+        CsvWriter steady(steady_csv_columns(st), sp);
+        steady.add_row(steady_csv_row(st, names, table_rows));
+        steady.write(dir / "steady.csv");
+        const auto cpp = std::find(names.begin(), names.end(), "coll_per_particle") - names.begin();
+        steady_note = st.reached
+                          ? fmt::format("; steady from {:.4g} collisions per particle ({} rows averaged): {}",
+                                        table_rows[st.first_row][static_cast<std::size_t>(cpp)], st.rows,
+                                        (dir / "steady.csv").string())
+                          : fmt::format("; steady state NOT reached (drift of T or P*_ij resolved); {} holds "
+                                        "the second half's averages",
+                                        (dir / "steady.csv").string());
+    }
+
     double collisions = 0, seconds = progress.seconds();
     for (const ReplicaSummary& s : summaries)
         collisions += static_cast<double>(s.collisions);
     std::cout << fmt::format(
         "roughgas run: wrote {} ({} rows, {} columns, {} replica{}): {:.4g} collisions in "
-        "{:.3g} s ({:.3g} collisions/s; kernel {})\n",
+        "{:.3g} s ({:.3g} collisions/s; kernel {}){}\n",
         path.string(), csv.rows(), table.columns().size(), K, K > 1 ? "s" : "", collisions, seconds,
-        seconds > 0 ? collisions / seconds : 0.0, summaries[0].kernel);
+        seconds > 0 ? collisions / seconds : 0.0, summaries[0].kernel, steady_note);
     if (hcsv)
         std::cout << fmt::format("roughgas run: wrote {} ({} histogram times x {} bins)\n", hpath.string(),
                                  sets_written, spec.histogram_bins);
@@ -266,8 +296,8 @@ int run_run(const RunOptions& o, const CLI::App& app) {
 
 Subcommand add_run_command(CLI::App& parent) {
     auto o = std::make_shared<RunOptions>();
-    CLI::App* app = parent.add_subcommand("run", "run a DSMC simulation of the homogeneous cooling state, "
-                                                 "writing DIR/moments.csv");
+    CLI::App* app = parent.add_subcommand("run", "run a DSMC simulation of the homogeneous cooling state or of "
+                                                 "uniform shear flow, writing DIR/moments.csv");
     CLI::Option* case_opt = app->add_option("CASE", o->case_file, "case file (TOML)");
     app->add_option("--out", o->out, "output directory (moments.csv)");
     add_set_option(*app, o->sets);

@@ -554,7 +554,8 @@ class Builder {
             c.material = material(Reader(m, "material"));
         c.contact = contact(Reader(root_["contact"].as_table(), "contact"));
         if (const toml::table* s = root_["shear"].as_table(); s != nullptr && s->contains("rate")) {
-            c.shear = ShearConfig{Reader(s, "shear").real("rate")};
+            const Reader r(s, "shear");
+            c.shear = ShearConfig{r.real("rate"), r.real("time_step")};
         }
         c.restitution = grid(Reader(root_["restitution"].as_table(), "restitution"));
         check(c);
@@ -1011,6 +1012,7 @@ std::string emit_case(const CaseConfig& c) {
     if (c.shear) {
         e.header("[shear]");
         e.put("rate", c.shear->rate);
+        e.put("time_step", c.shear->time_step);
     }
     e.header("[restitution]");
     e.put("g_n_min", c.restitution.g_n_min);

@@ -266,7 +266,15 @@ std::vector<Key> keys() {
             .unit("1/time")
             .when("required for run.kind = shear")
             .gt(0)
-            .doc("shear rate a of the uniform shear flow"),
+            .doc("shear rate a of the uniform shear flow u = a y x (peculiar velocities; physical units, "
+                 "1/s for SI cases)"),
+        Key("shear.time_step", T::real)
+            .unit("mean free times")
+            .fallback(0.2)
+            .gt(0)
+            .le(1)
+            .doc("Strang splitting step h (stream h/2, collide h, stream h/2), in mean free times at the "
+                 "start of each output interval; the error of the steady P*_xy is O(h^2) (README)"),
         // [restitution]
         Key("restitution.g_n_min", T::real)
             .unit("m/s")

@@ -24,10 +24,12 @@ std::vector<double> output_times(double every, double end, OutputSpacing spacing
 }
 
 RunSpec run_spec_from_case(const CaseConfig& cfg) {
-    if (cfg.run.kind != RunKind::cooling)
-        throw std::invalid_argument("run.kind = \"" + std::string(name(cfg.run.kind)) +
-                                    "\": only homogeneous cooling runs are implemented");
     RunSpec spec;
+    if (cfg.run.kind == RunKind::shear) {
+        if (!cfg.shear)
+            throw std::invalid_argument("run.kind = \"shear\" without [shear]");
+        spec.shear = ShearSpec{cfg.shear->rate, cfg.shear->time_step};
+    }
     for (const SpeciesConfig& s : cfg.species) {
         SpeciesSpec sp;
         sp.name = s.name;

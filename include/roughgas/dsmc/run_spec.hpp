@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -26,6 +27,12 @@ struct ViscoelasticRestitution { ContactPair pair; double beta = -1; bool direct
 struct BrilliantovRestitution { ContactPair pair; bool direct = false; };
 using PairRestitution = std::variant<ConstantRestitution, CoulombRestitution, ViscoelasticRestitution,
                                      BrilliantovRestitution>;
+
+// Uniform shear flow u = a y x^ (issue 4, dsmc/shear.hpp).
+struct ShearSpec {
+    double rate = 1;        // a, 1/time
+    double time_step = 0.2; // Strang step h in mean free times (at each output interval's start)
+};
 
 struct RunSpec {
     std::vector<SpeciesSpec> species;
@@ -56,6 +63,8 @@ struct RunSpec {
     std::filesystem::path cache_file;
     bool use_cache = true;
     double table_g_min = 1e-6, table_g_max = 1e2;
+    // Uniform shear flow instead of free cooling (run.kind = "shear").
+    std::optional<ShearSpec> shear;
 };
 
 constexpr std::size_t pair_index(std::size_t a, std::size_t b, std::size_t n_species) {

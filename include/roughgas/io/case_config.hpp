@@ -136,7 +136,8 @@ struct ContactConfig {
 
 // [shear]
 struct ShearConfig {
-    double rate = 0; // a [1/time]
+    double rate = 0;        // a [1/time]
+    double time_step = 0.2; // Strang step h in mean free times (dsmc/shear.hpp)
     friend bool operator==(const ShearConfig&, const ShearConfig&) = default;
 };
 
