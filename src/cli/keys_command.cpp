@@ -3,6 +3,7 @@
 #include "commands.hpp"
 
 #include "roughgas/io/case_schema.hpp"
+#include "roughgas/io/histograms_csv.hpp"
 #include "roughgas/io/moments_csv.hpp"
 #include "roughgas/io/restitution_csv.hpp"
 
@@ -18,7 +19,9 @@ Subcommand add_keys_command(CLI::App& parent) {
     app->add_flag("--output", *output, "print the tables of output columns instead");
     return {app, [output] {
                 if (*output) {
-                    std::cout << restitution_columns_markdown() << '\n' << moments_columns_markdown();
+                    std::cout << restitution_columns_markdown() << '\n'
+                              << moments_columns_markdown() << '\n'
+                              << histograms_columns_markdown();
                 } else {
                     std::cout << case_tables_markdown() << '\n' << case_keys_markdown();
                 }

@@ -4,6 +4,7 @@
 // Order of work: validate the case and the output directory, compute everything, then create DIR
 // and write both files atomically, so invalid input or a failed integration writes nothing.
 #include "commands.hpp"
+#include "quasistatic_warning.hpp"
 
 #include "roughgas/contact/contact_integrator.hpp"
 #include "roughgas/io/case_file.hpp"
@@ -152,6 +153,7 @@ int run_restitution(const RestitutionOptions& o) {
     const std::vector<double> g_t = grid(gc.g_t_min, gc.g_t_max, gc.g_t_points, gc.spacing);
     const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
     omp_set_num_threads(threads); // the table builds use the same threads
+    warn_if_not_quasistatic(cfg, i, j, g_n, "[restitution] grid", std::cerr);
 
     std::vector<ContactResult> normal(g_n.size());
     parallel_for(g_n.size(), threads,

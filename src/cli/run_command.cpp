@@ -1,5 +1,6 @@
-// roughgas run CASE.toml --out DIR ... : the DSMC of the homogeneous gas (issue 3), writing
-// DIR/moments.csv (interface.md "Output", io/moments_csv.hpp).
+// roughgas run CASE.toml --out DIR ... : the DSMC of the homogeneous gas (issue 3), cooling or in
+// uniform shear flow (issue 4), writing DIR/moments.csv (interface.md "Output", io/moments_csv.hpp)
+// and, for shear runs, DIR/steady.csv (the steady state found in the rows, io/steady_csv.hpp).
 //
 // Order of work: validate the case and the output directory (exit 2, nothing written), build the
 // restitution tables, then run the replicas (in parallel over --threads when replicas > 1, and the
@@ -10,13 +11,16 @@
 // `roughgas run --resume DIR` and `--checkpoint-every` are accepted but not implemented yet (exit 1).
 #include "commands.hpp"
 #include "progress.hpp"
+#include "quasistatic_warning.hpp"
 
 #include "roughgas/dsmc/run.hpp"
 #include "roughgas/io/case_file.hpp"
 #include "roughgas/io/csv_writer.hpp"
+#include "roughgas/io/histograms_csv.hpp"
 #include "roughgas/io/moments_csv.hpp"
 #include "roughgas/io/run_spec_from_case.hpp"
 #include "roughgas/io/run_tables.hpp"
+#include "roughgas/io/steady_csv.hpp"
 
 #include <fmt/format.h>
 #include <omp.h>
@@ -30,6 +34,7 @@
 #include <iostream>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <unistd.h>
 
 namespace roughgas::cli {
@@ -38,6 +43,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* output_file = "moments.csv";
+constexpr const char* histograms_file = "histograms.csv";
 
 struct RunOptions {
     std::string case_file;
@@ -52,13 +58,16 @@ struct RunOptions {
 };
 
 // Never overwrite earlier results by accident: that is an input error, reported before any work.
-void check_output_dir(const fs::path& dir, bool force) {
+void check_output_dir(const fs::path& dir, bool force, bool histograms) {
     if (fs::exists(dir) && !fs::is_directory(dir))
         throw InputError(dir.string(), "--out", "--out " + dir.string() + ": exists and is not a directory");
-    if (!force && fs::exists(dir / output_file))
-        throw InputError(
-            dir.string(), "--out",
-            fmt::format("--out {}: {} exists (use --force to overwrite)", dir.string(), output_file));
+    for (const char* file : {output_file, histograms_file}) {
+        if (file == histograms_file && !histograms)
+            continue;
+        if (!force && fs::exists(dir / file))
+            throw InputError(dir.string(), "--out",
+                             fmt::format("--out {}: {} exists (use --force to overwrite)", dir.string(), file));
+    }
 }
 
 // Thrown from a replica's row sink when another replica failed: ends the run early.
@@ -80,15 +89,29 @@ int run_run(const RunOptions& o, const CLI::App& app) {
         return exit_failure;
     }
     const fs::path dir(o.out);
-    check_output_dir(dir, o.force);
+    check_output_dir(dir, o.force, cfg.run.histogram_every > 0);
 
     RunSpec spec;
     try {
         spec = run_spec_from_case(cfg);
-    } catch (const std::invalid_argument& e) { // e.g. run.kind = "shear": valid, not implemented
+    } catch (const std::invalid_argument& e) { // a valid case the solver cannot run
         throw std::runtime_error(e.what());
     }
     spec.threads = o.threads > 0 ? o.threads : omp_get_max_threads();
+    // The contact model's range at the start (the hottest moment of a cooling run): the rms impact
+    // speed of each pair with a contact model, sqrt(3 (T_a/m_a + T_b/m_b)), and three times it (the tail).
+    if (!o.quiet) {
+        bool warned = false;
+        for (std::size_t a = 0; a < cfg.species.size() && !warned; ++a)
+            for (std::size_t b = a; b < cfg.species.size() && !warned; ++b) {
+                if (!uses_material(collision_for(cfg, a, b).model))
+                    continue;
+                const double g = std::sqrt(3.0 * (cfg.species[a].temperature / cfg.species[a].mass +
+                                                  cfg.species[b].temperature / cfg.species[b].mass));
+                const double speeds[] = {g, 3.0 * g};
+                warned = warn_if_not_quasistatic(cfg, a, b, speeds, "initial rms impact speed and 3x it", std::cerr);
+            }
+    }
     const int K = spec.replicas;
 
     MomentsTable table(spec);
@@ -102,11 +125,27 @@ int run_run(const RunOptions& o, const CLI::App& app) {
         fmt::format("replicas: {}{}", K,
                     K > 1 ? " (X = mean over replicas, X_err = its standard error)" : ""),
     };
+    if (spec.shear)
+        prov.notes.push_back(fmt::format(
+            "uniform shear flow u = a y x, a = {:.17g}: V = v - u; Strang steps of {:.17g} mean free times; "
+            "rows at the end of the first step at or after each output's coll_per_particle",
+            spec.shear->rate, spec.shear->time_step));
     if (table.has_theory())
         prov.notes.push_back("*_theory: Maxwellian approximation for constant alpha, beta at the row's t "
                              "(observables/theory.hpp; Haff's law for smooth spheres)");
     prov.units = table.units();
     CsvWriter csv(table.names(), prov);
+    std::optional<HistogramsTable> htable;
+    std::optional<CsvWriter> hcsv;
+    if (!spec.histogram_times.empty()) {
+        htable.emplace(spec);
+        CsvProvenance hprov = prov;
+        hprov.notes = {"one row per bin at every run.histogram_every time; reduced variables per species: c* = "
+                       "c sqrt(m/(2 T_tr)), w* = omega sqrt(J/(2 T_rot)) (observables/histograms.hpp)",
+                       prov.notes[1]};
+        hprov.units = htable->units();
+        hcsv.emplace(htable->names(), hprov);
+    }
 
     const auto tables = build_run_tables(spec); // before anything is written: a failure writes nothing
     if (!o.quiet) {
@@ -120,11 +159,31 @@ int run_run(const RunOptions& o, const CLI::App& app) {
     }
     fs::create_directories(dir);
     const fs::path path = dir / output_file;
+    const fs::path hpath = dir / histograms_file;
+    // sets[r][k]: replica r's histograms at histogram time k; written (atomically) as they complete.
+    std::vector<std::vector<HistogramSet>> hsets(static_cast<std::size_t>(K));
+    std::size_t sets_written = 0;
+    const auto flush_histograms = [&] { // under `mutex`
+        std::size_t complete = hsets[0].size();
+        for (const auto& r : hsets)
+            complete = std::min(complete, r.size());
+        if (complete == sets_written)
+            return;
+        for (; sets_written < complete; ++sets_written) {
+            std::vector<HistogramSet> same_time;
+            for (const auto& r : hsets)
+                same_time.push_back(r[sets_written]);
+            for (const std::vector<double>& row : htable->combine(same_time))
+                hcsv->add_row(row);
+        }
+        hcsv->write(hpath);
+    };
 
     // rows[r][k]: replica r's row at output k. A row goes to the file once every replica has it.
     std::vector<std::vector<std::vector<double>>> rows(static_cast<std::size_t>(K));
     std::mutex mutex;
     std::size_t combined = 0, on_disk = 0;
+    std::vector<std::vector<double>> table_rows; // the combined rows, for the steady-state summary
     auto last_write = std::chrono::steady_clock::now() - std::chrono::hours(1);
     const auto flush = [&](bool now) { // under `mutex`
         std::size_t complete = rows[0].size();
@@ -134,7 +193,8 @@ int run_run(const RunOptions& o, const CLI::App& app) {
             std::vector<std::span<const double>> spans;
             for (const auto& r : rows)
                 spans.emplace_back(r[combined]);
-            csv.add_row(table.combine(spans));
+            table_rows.push_back(table.combine(spans));
+            csv.add_row(table_rows.back());
         }
         const auto t = std::chrono::steady_clock::now();
         if (csv.rows() > on_disk && (now || t - last_write >= std::chrono::seconds(1))) {
@@ -170,7 +230,17 @@ int run_run(const RunOptions& o, const CLI::App& app) {
             const ProgressSink report = [&, r](double done, double end, double coll) {
                 progress.update(r, done, end, coll);
             };
-            run_replica(spec, *tables, r, sink, report, &summaries[static_cast<std::size_t>(r)]);
+            HistogramSink hsink;
+            if (htable) {
+                hsink = [&, r](const HistogramSet& h) {
+                    if (cancel)
+                        throw Cancelled{};
+                    std::lock_guard lock(mutex);
+                    hsets[static_cast<std::size_t>(r)].push_back(h);
+                    flush_histograms();
+                };
+            }
+            run_replica(spec, *tables, r, sink, report, &summaries[static_cast<std::size_t>(r)], hsink);
         } catch (const Cancelled&) {
         } catch (...) {
             std::lock_guard lock(mutex);
@@ -193,14 +263,38 @@ int run_run(const RunOptions& o, const CLI::App& app) {
         }
     }
 
+    std::string steady_note;
+    if (spec.shear) { // the steady state and its averages: DIR/steady.csv (io/steady_csv.hpp)
+        const std::vector<std::string> names = table.names();
+        const SteadyResult st = steady_summary(names, table_rows, true);
+        CsvProvenance sp = prov;
+        sp.units.clear();
+        sp.notes.push_back("steady-state summary of moments.csv: drift criterion and batch means "
+                           "(observables/steady_state.hpp); X_err = batch-means standard error");
+        CsvWriter steady(steady_csv_columns(st), sp);
+        steady.add_row(steady_csv_row(st, names, table_rows));
+        steady.write(dir / "steady.csv");
+        const auto cpp = std::find(names.begin(), names.end(), "coll_per_particle") - names.begin();
+        steady_note = st.reached
+                          ? fmt::format("; steady from {:.4g} collisions per particle ({} rows averaged): {}",
+                                        table_rows[st.first_row][static_cast<std::size_t>(cpp)], st.rows,
+                                        (dir / "steady.csv").string())
+                          : fmt::format("; steady state NOT reached (drift of T or P*_ij resolved); {} holds "
+                                        "the second half's averages",
+                                        (dir / "steady.csv").string());
+    }
+
     double collisions = 0, seconds = progress.seconds();
     for (const ReplicaSummary& s : summaries)
         collisions += static_cast<double>(s.collisions);
     std::cout << fmt::format(
         "roughgas run: wrote {} ({} rows, {} columns, {} replica{}): {:.4g} collisions in "
-        "{:.3g} s ({:.3g} collisions/s; kernel {})\n",
+        "{:.3g} s ({:.3g} collisions/s; kernel {}){}\n",
         path.string(), csv.rows(), table.columns().size(), K, K > 1 ? "s" : "", collisions, seconds,
-        seconds > 0 ? collisions / seconds : 0.0, summaries[0].kernel);
+        seconds > 0 ? collisions / seconds : 0.0, summaries[0].kernel, steady_note);
+    if (hcsv)
+        std::cout << fmt::format("roughgas run: wrote {} ({} histogram times x {} bins)\n", hpath.string(),
+                                 sets_written, spec.histogram_bins);
     return exit_ok;
 }
 
@@ -208,8 +302,8 @@ int run_run(const RunOptions& o, const CLI::App& app) {
 
 Subcommand add_run_command(CLI::App& parent) {
     auto o = std::make_shared<RunOptions>();
-    CLI::App* app = parent.add_subcommand("run", "run a DSMC simulation of the homogeneous cooling state, "
-                                                 "writing DIR/moments.csv");
+    CLI::App* app = parent.add_subcommand("run", "run a DSMC simulation of the homogeneous cooling state or of "
+                                                 "uniform shear flow, writing DIR/moments.csv");
     CLI::Option* case_opt = app->add_option("CASE", o->case_file, "case file (TOML)");
     app->add_option("--out", o->out, "output directory (moments.csv)");
     add_set_option(*app, o->sets);

@@ -1,12 +1,32 @@
-// roughgas sweep CASE.toml --param KEY=FROM:TO:COUNT --out DIR: runs over one parameter (issue 3).
-// The case is validated at both ends of the sweep now, so a bad sweep fails before any work.
+// roughgas sweep CASE.toml --param KEY=FROM:TO:COUNT --out DIR: runs a case at COUNT values of one
+// key, FROM to TO evenly spaced (COUNT = 1: FROM only), and writes one summary row per point to
+// DIR/sweep.csv, plus each point's moments.csv in DIR/point_K/.
+//
+// Every point is validated before any work (exit 2 naming the key and the allowed range). Points
+// run in parallel over --threads (OpenMP, dynamic schedule); each point runs its replicas in turn
+// and is deterministic from the case's seed, so the files do not depend on the thread count.
+// The summary is the steady state of the point (observables/steady_state.hpp, io/steady_csv.hpp):
+// for shear runs the steady window of T and P*_ij; for cooling runs the scaled homogeneous cooling
+// state (theta, a20, a02 stop drifting while T falls), averaged with batch-means errors.
 #include "commands.hpp"
 
+#include "roughgas/dsmc/run.hpp"
 #include "roughgas/io/case_file.hpp"
+#include "roughgas/io/csv_writer.hpp"
+#include "roughgas/io/moments_csv.hpp"
+#include "roughgas/io/run_spec_from_case.hpp"
+#include "roughgas/io/run_tables.hpp"
+#include "roughgas/io/steady_csv.hpp"
+
+#include <fmt/format.h>
+#include <omp.h>
 
 #include <charconv>
+#include <exception>
+#include <filesystem>
 #include <iostream>
 #include <memory>
+#include <mutex>
 
 namespace roughgas::cli {
 namespace {
@@ -49,15 +69,142 @@ Sweep parse_sweep(const SweepOptions& o) {
     return s;
 }
 
+namespace fs = std::filesystem;
+
+double parse_number(const SweepOptions& o, const std::string& text) {
+    double x = 0;
+    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), x);
+    if (ec != std::errc() || ptr != text.data() + text.size())
+        throw InputError(o.case_file, "--param",
+                         "--param " + o.param + ": FROM and TO must be numbers (expected KEY=FROM:TO:COUNT)");
+    return x;
+}
+
+// One point: every replica in turn, the rows combined as `roughgas run` does.
+struct PointResult {
+    std::vector<std::string> names, units;
+    std::vector<std::vector<double>> rows;
+    SteadyResult steady;
+};
+
+PointResult run_point(const CaseConfig& cfg) {
+    RunSpec spec = run_spec_from_case(cfg);
+    spec.threads = 1;
+    MomentsTable table(spec);
+    const auto tables = build_run_tables(spec);
+    std::vector<std::vector<std::vector<double>>> rows(static_cast<std::size_t>(spec.replicas));
+    for (int r = 0; r < spec.replicas; ++r) {
+        run_replica(spec, *tables, r, [&](std::span<const double> row) {
+            table.check(row); // NonFiniteValue: stop, naming the column and t
+            rows[static_cast<std::size_t>(r)].emplace_back(row.begin(), row.end());
+        });
+    }
+    PointResult p{table.names(), table.units(), {}, {}};
+    for (std::size_t k = 0; k < rows[0].size(); ++k) {
+        std::vector<std::span<const double>> spans;
+        for (const auto& r : rows)
+            spans.emplace_back(r[k]);
+        p.rows.push_back(table.combine(spans));
+    }
+    p.steady = steady_summary(p.names, p.rows, spec.shear.has_value());
+    return p;
+}
+
 int run_sweep(const SweepOptions& o) {
     const Sweep s = parse_sweep(o);
-    for (const std::string& end : {s.from, s.to}) {
+    const double from = parse_number(o, s.from), to = parse_number(o, s.to);
+    // Every point is validated (exit 2) before any work.
+    std::vector<double> values;
+    std::vector<CaseConfig> cases;
+    std::vector<std::vector<std::string>> point_sets;
+    for (long k = 0; k < s.count; ++k) {
+        const double x = s.count == 1
+                             ? from
+                             : from + (to - from) * static_cast<double>(k) / static_cast<double>(s.count - 1);
         std::vector<std::string> sets = o.sets;
-        sets.push_back(s.key + "=" + end);
-        (void)load_case(o.case_file, sets, CaseUse::run); // exit 2 if either end is invalid
+        sets.push_back(fmt::format("{}={:.17g}", s.key, x));
+        cases.push_back(load_case(o.case_file, sets, CaseUse::run));
+        values.push_back(x);
+        point_sets.push_back(sets);
     }
-    std::cerr << "roughgas sweep: not implemented yet (DSMC: issue 3)\n";
-    return exit_failure;
+    const fs::path dir(o.out);
+    if (fs::exists(dir) && !fs::is_directory(dir))
+        throw InputError(dir.string(), "--out", "--out " + dir.string() + ": exists and is not a directory");
+    if (!o.force && fs::exists(dir / "sweep.csv"))
+        throw InputError(dir.string(), "--out",
+                         fmt::format("--out {}: sweep.csv exists (use --force to overwrite)", dir.string()));
+    fs::create_directories(dir);
+
+    const int threads =
+        std::min<int>(o.threads > 0 ? o.threads : omp_get_max_threads(), static_cast<int>(s.count));
+    std::vector<PointResult> results(values.size());
+    std::exception_ptr error;
+    std::mutex mutex;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+    for (long k = 0; k < s.count; ++k) {
+        try {
+            {
+                std::lock_guard lock(mutex);
+                if (error)
+                    continue;
+            }
+            PointResult p = run_point(cases[static_cast<std::size_t>(k)]);
+            CsvProvenance prov;
+            prov.case_file = o.case_file;
+            prov.overrides = point_sets[static_cast<std::size_t>(k)];
+            prov.seed = cases[static_cast<std::size_t>(k)].run.seed;
+            prov.resolved_case = emit_case(cases[static_cast<std::size_t>(k)]);
+            prov.notes = {fmt::format("sweep point {} of {}: {} = {:.17g}", k, s.count, s.key,
+                                      values[static_cast<std::size_t>(k)])};
+            prov.units = p.units;
+            CsvWriter csv(p.names, prov);
+            for (const auto& row : p.rows)
+                csv.add_row(row);
+            const fs::path pd = dir / fmt::format("point_{}", k);
+            fs::create_directories(pd);
+            csv.write(pd / "moments.csv");
+            std::lock_guard lock(mutex);
+            if (!o.quiet)
+                std::cerr << fmt::format("roughgas sweep: point {} ({} = {:.6g}) done{}\n", k, s.key,
+                                         values[static_cast<std::size_t>(k)],
+                                         p.steady.reached ? "" : " (steady state NOT reached)");
+            results[static_cast<std::size_t>(k)] = std::move(p);
+        } catch (...) {
+            std::lock_guard lock(mutex);
+            if (!error)
+                error = std::current_exception();
+        }
+    }
+    if (error)
+        std::rethrow_exception(error);
+
+    std::vector<std::string> columns = {s.key};
+    const std::vector<std::string> steady_cols = steady_csv_columns(results[0].steady);
+    columns.insert(columns.end(), steady_cols.begin(), steady_cols.end());
+    CsvProvenance prov;
+    prov.case_file = o.case_file;
+    prov.overrides = o.sets;
+    prov.seed = cases[0].run.seed;
+    prov.resolved_case = emit_case(cases[0]);
+    prov.notes = {
+        fmt::format("sweep of {} from {} to {} ({} points); one row per point: the steady state "
+                    "(shear: of T and P*_ij; cooling: the scaled state of theta, a20, a02), batch means "
+                    "(io/steady_csv.hpp); each point's rows in point_K/moments.csv",
+                    s.key, s.from, s.to, s.count)};
+    CsvWriter csv(columns, prov);
+    for (std::size_t k = 0; k < results.size(); ++k) {
+        if (steady_csv_columns(results[k].steady) != steady_cols)
+            throw std::runtime_error("roughgas sweep: the points have different columns (a sweep changes one "
+                                     "scalar key only)");
+        std::vector<double> row = {values[k]};
+        const std::vector<double> st = steady_csv_row(results[k].steady, results[k].names, results[k].rows);
+        row.insert(row.end(), st.begin(), st.end());
+        csv.add_row(row);
+    }
+    csv.write(dir / "sweep.csv");
+    std::cout << fmt::format("roughgas sweep: wrote {} ({} points, {} columns)\n",
+                             (dir / "sweep.csv").string(), results.size(), columns.size());
+    return exit_ok;
 }
 
 } // namespace
@@ -65,12 +212,15 @@ int run_sweep(const SweepOptions& o) {
 Subcommand add_sweep_command(CLI::App& parent) {
     auto o = std::make_shared<SweepOptions>();
     CLI::App* app =
-        parent.add_subcommand("sweep", "run a case over a range of one parameter (not implemented yet)");
+        parent.add_subcommand("sweep", "run a case over a range of one parameter, writing DIR/sweep.csv "
+                                       "(one steady-state summary row per point)");
     app->add_option("CASE", o->case_file, "case file (TOML)")->required();
     app->add_option("--param", o->param, "KEY=FROM:TO:COUNT, e.g. collision.alpha=0.5:0.9:5")->required();
     app->add_option("--out", o->out, "output directory")->required();
     add_set_option(*app, o->sets);
-    app->add_option("--threads", o->threads, "OpenMP threads")->check(CLI::PositiveNumber);
+    app->add_option("--threads", o->threads,
+                    "threads over the points (default: all; results do not depend on it)")
+        ->check(CLI::PositiveNumber);
     app->add_flag("--quiet", o->quiet, "no progress output");
     app->add_flag("--force", o->force, "overwrite an existing output directory");
     return {app, [o] { return run_sweep(*o); }};

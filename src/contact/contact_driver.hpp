@@ -62,9 +62,14 @@ struct DriverResult {
 };
 
 // Bounded work: the smooth motion takes a few hundred steps even at rel = 1e-14; each break
-// adds about one. More than this means the step size collapsed.
+// adds about one; an unbroken asperity spring oscillates with angular frequency
+// sqrt(k_e k_p |X''|) (e'' = k_e k_p X'' e), |X''| = O(1) in Hertz units over a contact of duration
+// O(3), and dopri5 needs about 30 steps per period at rel = 1e-12: max_steps_per_stiffness
+// sqrt(k_e k_p) covers ~10x that (huge mu/kappa over tiny zeta_0: tests/stress). More than the sum
+// means the step size collapsed.
 inline constexpr long max_smooth_steps = 100000;
 inline constexpr long max_steps_per_break = 16;
+inline constexpr double max_steps_per_stiffness = 1000;
 
 template <std::size_t N> class ContactRun {
   public:
@@ -128,8 +133,15 @@ template <std::size_t N> class ContactRun {
         return ode_.point(t, x);
     }
 
+    long step_budget() const {
+        const OdeCoefficients& c = setup_.coefficients;
+        const double stiffness = std::sqrt(std::abs(c.k_e * c.k_p));
+        return max_smooth_steps + max_steps_per_break * static_cast<long>(result_.breaks) +
+               static_cast<long>(std::min(max_steps_per_stiffness * stiffness, 1e12));
+    }
+
     void count_step() {
-        if (++steps_ > max_smooth_steps + max_steps_per_break * static_cast<long>(result_.breaks)) {
+        if (++steps_ > step_budget()) {
             std::ostringstream msg;
             msg << "roughgas: contact integration exceeded " << steps_ - 1
                 << " steps (u = " << setup_.coefficients.u << ", form " << name(setup_.coefficients.form)

@@ -5,13 +5,16 @@
 #include "roughgas/dsmc/engine.hpp"
 #include "roughgas/dsmc/init.hpp"
 #include "roughgas/dsmc/particles.hpp"
+#include "roughgas/dsmc/shear.hpp"
 #include "roughgas/dsmc/tables.hpp"
 #include "roughgas/observables/moments.hpp"
+#include "roughgas/observables/pressure.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -56,6 +59,43 @@ void validate(const RunSpec& spec) {
         prev = t;
     }
     require(!spec.output_times.empty() || (std::isfinite(spec.end) && spec.end > 0), "end must be > 0");
+    const double end = spec.output_times.empty() ? spec.end : spec.output_times.back();
+    prev = 0;
+    for (double t : spec.histogram_times) {
+        require(std::isfinite(t) && t > prev && t <= end * (1 + 1e-12),
+                "histogram times must be positive, increasing and not after the end");
+        prev = t;
+    }
+    require(spec.histogram_bins >= 1 && spec.histogram_max > 0 && std::isfinite(spec.histogram_max),
+            "histogram_bins must be >= 1 and histogram_max > 0");
+    if (spec.shear) {
+        require(std::isfinite(spec.shear->rate) && spec.shear->rate > 0, "shear rate must be > 0");
+        require(std::isfinite(spec.shear->time_step) && spec.shear->time_step > 0,
+                "shear time step must be > 0");
+    }
+}
+
+const char* const shear_quantities[] = {"P_xx",      "P_yy",      "P_zz",      "P_xy",      "P_xz",
+                                        "P_yz",      "omega_x",   "omega_y",   "omega_z",   "a_star",
+                                        "eta_star",  "P_xx_star", "P_yy_star", "P_zz_star", "P_xy_star",
+                                        "P_xz_star", "P_yz_star", "N1_star",   "N2_star"};
+
+// The Maxwellian collision frequency per grain (as the engine's step length, dsmc/engine.hpp):
+// nu_c = (2/N) sum_ab P_ab pi sigma_ab^2 <g_ab>/V, <g_ab> = sqrt((8/pi)(T_a/m_a + T_b/m_b)).
+double collision_frequency(const std::vector<PairType>& types, const std::vector<SpeciesBlock>& blocks,
+                           const Moments& m, double volume) {
+    double nu = 0, N = 0;
+    for (const SpeciesBlock& b : blocks)
+        N += static_cast<double>(b.count);
+    const auto T_over_m = [&](std::size_t s) {
+        const double T = blocks.size() > 1 ? m.species[s].T_tr : m.all.T_tr;
+        return T / blocks[s].grain.mass;
+    };
+    for (const PairType& t : types) {
+        const double mean_g = std::sqrt(8.0 / std::numbers::pi * (T_over_m(t.a) + T_over_m(t.b)));
+        nu += 2.0 * t.pairs * t.pc.cross_section * mean_g / volume / N;
+    }
+    return nu;
 }
 
 // Sums over the collisions since the last output row.
@@ -84,7 +124,8 @@ struct Tally {
 
 template <class Policy, bool Mixture, CollisionKernel Kernel>
 void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
-           int replica, const RowSink& sink, const ProgressSink& progress, ReplicaSummary* summary) {
+           int replica, const RowSink& sink, const ProgressSink& progress, ReplicaSummary* summary,
+           const HistogramSink& histograms) {
     using Store = std::conditional_t<Policy::needs_rotation, RoughAoS, SmoothAoS>;
     const auto wall0 = std::chrono::steady_clock::now();
     const std::size_t N = static_cast<std::size_t>(spec.particles);
@@ -111,9 +152,25 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
     std::vector<double> row;
     row.reserve(columns);
 
+    std::vector<UsfSpecies> usf_species;
+    for (const SpeciesBlock& b : blocks)
+        usf_species.push_back(
+            {static_cast<double>(b.count) / static_cast<double>(N), b.grain.mass, b.grain.radius});
+    std::vector<Vec3> spin; // shear: omega - Omega, so that T_rot is about the mean spin
+    const auto moments_now = [&](Vec3& Omega) {
+        if (!spec.shear)
+            return compute_moments(engine.store().velocities(), engine.store().angular_velocities(), slices);
+        const Vec3Column w = engine.store().angular_velocities();
+        Omega = mean_spin(w, slices);
+        spin.resize(N);
+        for (std::size_t i = 0; i < N; ++i)
+            spin[i] = w[i] - Omega;
+        return compute_moments(engine.store().velocities(), column_of(spin.data(), 0), slices);
+    };
+
     const auto emit = [&] {
-        const Moments m =
-            compute_moments(engine.store().velocities(), engine.store().angular_velocities(), slices);
+        Vec3 Omega{};
+        const Moments m = moments_now(Omega);
         const double t = engine.time();
         const std::int64_t c = engine.collisions();
         const double dt = t - t_prev;
@@ -129,6 +186,17 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
         group(m.all);
         row.push_back(2.0 * static_cast<double>(c - c_prev) / static_cast<double>(N) * inv_dt);
         row.push_back(-tally.dE / engine.volume() * inv_dt);
+        if (spec.shear) {
+            const PressureTensor P =
+                pressure_tensor(engine.store().velocities(), slices, engine.volume(), m.mean_velocity);
+            const double T = m.all.T_tr;
+            const UsfReduced r =
+                usf_reduced(P, spec.shear->rate, usf_nu(usf_species, spec.density, T), spec.density, T);
+            for (double x : {P.xx, P.yy, P.zz, P.xy, P.xz, P.yz, Omega.x, Omega.y, Omega.z, r.a_star,
+                             r.eta_star, r.P_star.xx, r.P_star.yy, r.P_star.zz, r.P_star.xy, r.P_star.xz,
+                             r.P_star.yz, r.N1_star, r.N2_star})
+                row.push_back(x);
+        }
         if (S > 1) {
             std::vector<double> per_species(S, 0.0);
             for (std::size_t k = 0; k < types.size(); ++k) {
@@ -157,14 +225,71 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
         std::fill(tally.per_type.begin(), tally.per_type.end(), 0);
     };
 
+    const HistogramGrid grid{spec.histogram_bins, spec.histogram_max};
+    const auto emit_histograms = [&] {
+        const auto& store = engine.store();
+        Vec3 Omega{};
+        const Moments m = moments_now(Omega); // shear: omega about the mean spin, as the rows
+        const Vec3Column w = spec.shear ? column_of(spin.data(), 0) : store.angular_velocities();
+        HistogramSet h;
+        h.t = engine.time();
+        h.coll_per_particle = 2.0 * static_cast<double>(engine.collisions()) / static_cast<double>(N);
+        h.species = compute_histograms(store.velocities(), w, slices, m, grid);
+        histograms(h);
+    };
+
     emit();
     std::vector<double> outputs = spec.output_times;
     if (outputs.empty())
         outputs.push_back(spec.end);
     const double end = outputs.back();
+    // The pauses: output rows and histograms, in order of their collision counts (a pause keeps the
+    // engine's pending candidate, so the trajectory does not depend on where it pauses).
+    struct Pause {
+        std::int64_t target;
+        bool row, histogram;
+    };
+    const auto target_of = [&](double x) {
+        return static_cast<std::int64_t>(std::llround(x * static_cast<double>(N) / 2.0));
+    };
+    std::vector<Pause> pauses;
+    for (double out : outputs)
+        pauses.push_back({target_of(out), true, false});
+    if (histograms)
+        for (double h : spec.histogram_times)
+            pauses.push_back({target_of(h), false, true});
+    std::stable_sort(pauses.begin(), pauses.end(),
+                     [](const Pause& a, const Pause& b) { return a.target < b.target; });
     const std::int64_t chunk = std::max<std::int64_t>(std::int64_t{1} << 16, spec.particles / 2);
-    for (double out : outputs) {
-        const auto target = static_cast<std::int64_t>(std::llround(out * static_cast<double>(N) / 2.0));
+    // Uniform shear flow: Strang steps (dsmc/shear.hpp) of h = time_step mean free times, h set from
+    // the temperatures at the start of each interval between pauses; a pause (row or histogram)
+    // comes at the end of the first step at or after its collision count.
+    const auto advance_shear = [&](std::int64_t target) {
+        const double a = spec.shear->rate;
+        const auto stream = [&](double s) {
+            stream_shear(engine.store(), a, s);
+            engine.restart_step(); // the velocities changed: refresh the engine's bounds (exact)
+        };
+        const auto collide = [&](double h) {
+            engine.run(std::numeric_limits<std::int64_t>::max(), engine.time() + h, tally);
+        };
+        Vec3 Omega{};
+        const double nu_c = collision_frequency(types, blocks, moments_now(Omega), engine.volume());
+        if (!(nu_c > 0) || !std::isfinite(nu_c))
+            throw std::runtime_error("run_replica: no collision can happen: every grain is at rest in "
+                                     "the centre-of-mass frame (translational temperature 0)");
+        strang_steps(spec.shear->time_step / nu_c, stream, collide, [&] {
+            if (progress) {
+                const auto c = static_cast<double>(engine.collisions());
+                progress(2.0 * c / static_cast<double>(N), end, c);
+            }
+            return engine.collisions() >= target;
+        });
+    };
+    for (const Pause& pause : pauses) {
+        const std::int64_t target = pause.target;
+        if (spec.shear && engine.collisions() < target)
+            advance_shear(target);
         while (engine.collisions() < target) {
             const std::int64_t next = std::min(target, engine.collisions() + chunk);
             if (engine.run(next, std::numeric_limits<double>::infinity(), tally) == StopReason::stalled) {
@@ -177,7 +302,10 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
                 progress(2.0 * c / static_cast<double>(N), end, c);
             }
         }
-        emit();
+        if (pause.row)
+            emit();
+        if (pause.histogram)
+            emit_histograms();
     }
 
     if (summary) {
@@ -203,13 +331,14 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
 // The kernel is a compile-time choice too: one switch per run.
 template <class Policy, bool Mixture>
 void drive_kernel(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
-                  int replica, const RowSink& sink, const ProgressSink& progress, ReplicaSummary* summary) {
+                  int replica, const RowSink& sink, const ProgressSink& progress, ReplicaSummary* summary,
+                  const HistogramSink& histograms) {
     if (spec.kernel == CollisionKernel::maxwell)
         drive<Policy, Mixture, CollisionKernel::maxwell>(spec, blocks, std::move(policies), replica, sink, progress,
-                                                         summary);
+                                                         summary, histograms);
     else
         drive<Policy, Mixture, CollisionKernel::hard_sphere>(spec, blocks, std::move(policies), replica, sink,
-                                                             progress, summary);
+                                                             progress, summary, histograms);
 }
 
 } // namespace
@@ -226,6 +355,14 @@ std::vector<Column> dsmc_columns(const RunSpec& spec) {
                              {"A_cw", "-"},
                              {"coll_rate", "1/time"},
                              {"E_diss_rate", "energy/(volume*time)"}};
+    if (spec.shear) {
+        for (const char* q : shear_quantities) {
+            const std::string name = q;
+            c.push_back({name, name.starts_with("P_") && !name.ends_with("_star") ? "energy/volume"
+                               : name.starts_with("omega")                        ? "1/time"
+                                                                                  : "-"});
+        }
+    }
     const std::size_t S = spec.species.size();
     if (S > 1) {
         for (const SpeciesSpec& s : spec.species)
@@ -246,7 +383,7 @@ std::vector<Column> dsmc_columns(const RunSpec& spec) {
 }
 
 void run_replica(const RunSpec& spec, const RestitutionTables& tables, int replica, const RowSink& sink,
-                 const ProgressSink& progress, ReplicaSummary* summary) {
+                 const ProgressSink& progress, ReplicaSummary* summary, const HistogramSink& histograms) {
     validate(spec);
     require(replica >= 0, "negative replica index");
     const std::vector<SpeciesBlock> blocks = make_species_blocks(spec.species, spec.particles);
@@ -264,7 +401,7 @@ void run_replica(const RunSpec& spec, const RestitutionTables& tables, int repli
         std::visit(
             [&](const auto& p) {
                 using P = std::decay_t<decltype(p)>;
-                drive_kernel<P, false>(spec, blocks, {p}, replica, sink, progress, summary);
+                drive_kernel<P, false>(spec, blocks, {p}, replica, sink, progress, summary, histograms);
             },
             policies[0]);
         return;
@@ -278,7 +415,7 @@ void run_replica(const RunSpec& spec, const RestitutionTables& tables, int repli
                 std::vector<P> v;
                 for (const AnyPolicy& p : policies)
                     v.push_back(std::get<P>(p));
-                drive_kernel<P, true>(spec, blocks, std::move(v), replica, sink, progress, summary);
+                drive_kernel<P, true>(spec, blocks, std::move(v), replica, sink, progress, summary, histograms);
             },
             policies[0]);
         return;
@@ -288,13 +425,14 @@ void run_replica(const RunSpec& spec, const RestitutionTables& tables, int repli
         std::vector<AnySmoothPolicy> v;
         for (const AnyPolicy& p : policies)
             v.push_back(to_any_smooth(p));
-        drive_kernel<AnySmoothPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary);
+        drive_kernel<AnySmoothPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary,
+                                            histograms);
         return;
     }
     std::vector<AnyRoughPolicy> v;
     for (const AnyPolicy& p : policies)
         v.push_back(to_any_rough(p));
-    drive_kernel<AnyRoughPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary);
+    drive_kernel<AnyRoughPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary, histograms);
 }
 
 } // namespace roughgas

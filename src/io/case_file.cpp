@@ -554,7 +554,8 @@ class Builder {
             c.material = material(Reader(m, "material"));
         c.contact = contact(Reader(root_["contact"].as_table(), "contact"));
         if (const toml::table* s = root_["shear"].as_table(); s != nullptr && s->contains("rate")) {
-            c.shear = ShearConfig{Reader(s, "shear").real("rate")};
+            const Reader r(s, "shear");
+            c.shear = ShearConfig{r.real("rate"), r.real("time_step")};
         }
         c.restitution = grid(Reader(root_["restitution"].as_table(), "restitution"));
         check(c);
@@ -574,6 +575,10 @@ class Builder {
         c.end = r.real("end");
         c.output_every = r.real("output_every");
         c.output_spacing = r.choice<OutputSpacing>("output_spacing", output_spacing_names);
+        c.histogram_every = r.real("histogram_every");
+        c.histogram_spacing = r.choice<OutputSpacing>("histogram_spacing", output_spacing_names);
+        c.histogram_bins = r.integer("histogram_bins");
+        c.histogram_max = r.real("histogram_max");
         return c;
     }
 
@@ -724,6 +729,11 @@ class Builder {
         check_material(c);
         if (c.run.kind == RunKind::shear) {
             require(c.shear.has_value(), "shear.rate", "run.kind = \"shear\"", "shear");
+        }
+        if (c.run.histogram_every > c.run.end) {
+            add("run.histogram_every",
+                fmt::format("run.histogram_every = {}: after the end of the run (must be <= run.end = {})",
+                            c.run.histogram_every, c.run.end));
         }
         check_grid(c.restitution);
     }
@@ -958,6 +968,10 @@ std::string emit_case(const CaseConfig& c) {
     e.put("end", c.run.end);
     e.put("output_every", c.run.output_every);
     e.put("output_spacing", name(c.run.output_spacing));
+    e.put("histogram_every", c.run.histogram_every);
+    e.put("histogram_spacing", name(c.run.histogram_spacing));
+    e.put("histogram_bins", c.run.histogram_bins);
+    e.put("histogram_max", c.run.histogram_max);
     for (const SpeciesConfig& s : c.species) {
         e.header("[[species]]");
         e.put("name", s.name);
@@ -1002,6 +1016,7 @@ std::string emit_case(const CaseConfig& c) {
     if (c.shear) {
         e.header("[shear]");
         e.put("rate", c.shear->rate);
+        e.put("time_step", c.shear->time_step);
     }
     e.header("[restitution]");
     e.put("g_n_min", c.restitution.g_n_min);

@@ -155,6 +155,26 @@ std::vector<Key> keys() {
             .one_of(output_spacing_names)
             .doc("linear: every output_every; log: at output_every x 10^(k/10), k = 0, 1, ... (10 per "
                  "decade)"),
+        Key("run.histogram_every", T::real)
+            .unit("collisions per particle")
+            .fallback(0.0)
+            .ge(0)
+            .doc("histograms of c*, w*, c*.w* to DIR/histograms.csv at these times (spaced as "
+                 "histogram_spacing, always at the end); 0: none. Must be <= end"),
+        Key("run.histogram_spacing", T::string)
+            .fallback(std::string("linear"))
+            .one_of(output_spacing_names)
+            .doc("as output_spacing, for the histogram times"),
+        Key("run.histogram_bins", T::integer)
+            .fallback(std::int64_t{50})
+            .ge(1)
+            .le(100000)
+            .doc("bins per histogram"),
+        Key("run.histogram_max", T::real)
+            .fallback(5.0)
+            .gt(0)
+            .doc("range of the histograms: reduced speeds in [0, max), c*.w* in [-max, max) (a "
+                 "Maxwellian has 1e-10 of its grains beyond 5)"),
         // [[species]]
         Key("species.name", T::string)
             .fallback(std::string("grain"))
@@ -259,7 +279,15 @@ std::vector<Key> keys() {
             .unit("1/time")
             .when("required for run.kind = shear")
             .gt(0)
-            .doc("shear rate a of the uniform shear flow"),
+            .doc("shear rate a of the uniform shear flow u = a y x (peculiar velocities; physical units, "
+                 "1/s for SI cases)"),
+        Key("shear.time_step", T::real)
+            .unit("mean free times")
+            .fallback(0.2)
+            .gt(0)
+            .le(1)
+            .doc("Strang splitting step h (stream h/2, collide h, stream h/2), in mean free times at the "
+                 "start of each output interval; the error of the steady P*_xy is O(h^2) (README)"),
         // [restitution]
         Key("restitution.g_n_min", T::real)
             .unit("m/s")

@@ -1,6 +1,7 @@
 #include "roughgas/io/moments_csv.hpp"
 
 #include "roughgas/dsmc/run.hpp"
+#include "roughgas/io/replica_mean.hpp"
 
 #include <fmt/format.h>
 
@@ -29,7 +30,8 @@ MomentsTable::MomentsTable(const RunSpec& spec) : solver_(dsmc_columns(spec)), r
         if (replicas_ > 1)
             columns_.push_back({c.name + "_err", c.unit});
     }
-    if (std::optional<HcsTheory> th = hcs_theory(spec)) {
+    // The theory columns describe free cooling: not written for shear runs.
+    if (std::optional<HcsTheory> th = spec.shear ? std::nullopt : hcs_theory(spec)) {
         trajectory_.emplace(std::move(*th), initial_temperatures(spec));
         columns_.push_back({"T_tr_theory", "energy"});
         columns_.push_back({"T_rot_theory", "energy"});
@@ -42,20 +44,6 @@ MomentsTable::MomentsTable(const RunSpec& spec) : solver_(dsmc_columns(spec)), r
             }
         }
     }
-}
-
-std::vector<std::string> MomentsTable::names() const {
-    std::vector<std::string> v;
-    for (const Column& c : columns_)
-        v.push_back(c.name);
-    return v;
-}
-
-std::vector<std::string> MomentsTable::units() const {
-    std::vector<std::string> v;
-    for (const Column& c : columns_)
-        v.push_back(c.unit);
-    return v;
 }
 
 void MomentsTable::check(std::span<const double> row) const {
@@ -101,19 +89,14 @@ std::vector<double> MomentsTable::combine(std::span<const std::span<const double
     const std::size_t n = solver_.size();
     std::vector<double> out;
     out.reserve(columns_.size());
-    const double K = static_cast<double>(replicas_);
+    std::vector<double> x(rows.size());
     for (std::size_t j = 0; j < n; ++j) {
-        double sum = 0;
-        for (const auto& r : rows)
-            sum += r[j];
-        const double mean = sum / K;
-        out.push_back(mean);
-        if (replicas_ > 1) {
-            double ss = 0;
-            for (const auto& r : rows)
-                ss += (r[j] - mean) * (r[j] - mean);
-            out.push_back(std::sqrt(ss / (K * (K - 1))));
-        }
+        for (std::size_t r = 0; r < rows.size(); ++r)
+            x[r] = rows[r][j];
+        const ReplicaMean m = replica_mean(x);
+        out.push_back(m.mean);
+        if (replicas_ > 1)
+            out.push_back(m.error);
     }
     if (trajectory_) {
         const double t = out[0];
@@ -152,9 +135,30 @@ const std::map<std::string, std::string>& meanings() {
         {"beta_clamped",
          "collisions so far whose brilliantov beta left [-1, 1] and was clamped (brilliantov runs)"},
         {"T_tr_theory",
-         "T_tr of the Maxwellian approximation at t (constant alpha, beta; Haff's law when smooth)"},
+         "T_tr of the Maxwellian approximation at t (constant alpha, beta; Haff's law when smooth); with "
+         "run.kernel = maxwell the exact solution of its linear ODEs"},
         {"T_rot_theory", "T_rot of the Maxwellian approximation at t (constant alpha, beta)"},
         {"theta_theory", "T_rot_theory/T_tr_theory"},
+        // uniform shear flow (run.kind = shear; observables/pressure.hpp)
+        {"P_xx", "kinetic pressure tensor (1/V) sum m V_x V_x, V the peculiar velocity (shear runs)"},
+        {"P_yy", "(1/V) sum m V_y V_y (shear runs)"},
+        {"P_zz", "(1/V) sum m V_z V_z (shear runs)"},
+        {"P_xy", "(1/V) sum m V_x V_y: the shear stress, < 0 (shear runs)"},
+        {"P_xz", "(1/V) sum m V_x V_z: 0 by symmetry (shear runs)"},
+        {"P_yz", "(1/V) sum m V_y V_z: 0 by symmetry (shear runs)"},
+        {"omega_x", "mean spin Omega_x = sum J omega_x/sum J (shear runs; T_rot is about Omega)"},
+        {"omega_y", "mean spin Omega_y (shear runs)"},
+        {"omega_z", "mean spin Omega_z (shear runs)"},
+        {"a_star", "reduced shear rate a/nu, nu = p/eta_0 = (16/5) n sigma^2 sqrt(pi T_tr/m) (shear runs)"},
+        {"eta_star", "reduced shear viscosity -P_xy_star/a_star (shear runs)"},
+        {"P_xx_star", "P_xx/(n T_tr) (shear runs)"},
+        {"P_yy_star", "P_yy/(n T_tr) (shear runs)"},
+        {"P_zz_star", "P_zz/(n T_tr) (shear runs)"},
+        {"P_xy_star", "P_xy/(n T_tr) (shear runs)"},
+        {"P_xz_star", "P_xz/(n T_tr) (shear runs)"},
+        {"P_yz_star", "P_yz/(n T_tr) (shear runs)"},
+        {"N1_star", "first normal stress difference P_xx_star - P_yy_star (shear runs)"},
+        {"N2_star", "second normal stress difference P_yy_star - P_zz_star (shear runs)"},
     };
     return m;
 }
@@ -212,6 +216,12 @@ std::string moments_columns_markdown() {
     const MomentsTable t1(one);
     for (const Column& c : t1.columns())
         if (!c.name.ends_with("_err") || c.name == "t_err")
+            add(c);
+    RunSpec shear = one; // the shear columns come after the base columns
+    shear.shear = ShearSpec{};
+    const MomentsTable t4(shear);
+    for (const Column& c : t4.columns())
+        if (!c.name.ends_with("_err"))
             add(c);
     const MomentsTable t2(mix), t3(mix_constant);
     for (const Column& c : t2.columns())

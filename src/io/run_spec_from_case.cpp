@@ -24,10 +24,12 @@ std::vector<double> output_times(double every, double end, OutputSpacing spacing
 }
 
 RunSpec run_spec_from_case(const CaseConfig& cfg) {
-    if (cfg.run.kind != RunKind::cooling)
-        throw std::invalid_argument("run.kind = \"" + std::string(name(cfg.run.kind)) +
-                                    "\": only homogeneous cooling runs are implemented");
     RunSpec spec;
+    if (cfg.run.kind == RunKind::shear) {
+        if (!cfg.shear)
+            throw std::invalid_argument("run.kind = \"shear\" without [shear]");
+        spec.shear = ShearSpec{cfg.shear->rate, cfg.shear->time_step};
+    }
     for (const SpeciesConfig& s : cfg.species) {
         SpeciesSpec sp;
         sp.name = s.name;
@@ -69,6 +71,10 @@ RunSpec run_spec_from_case(const CaseConfig& cfg) {
     spec.kernel = cfg.run.kernel;
     spec.end = cfg.run.end;
     spec.output_times = output_times(cfg.run.output_every, cfg.run.end, cfg.run.output_spacing);
+    if (cfg.run.histogram_every > 0)
+        spec.histogram_times = output_times(cfg.run.histogram_every, cfg.run.end, cfg.run.histogram_spacing);
+    spec.histogram_bins = static_cast<int>(cfg.run.histogram_bins);
+    spec.histogram_max = cfg.run.histogram_max;
     spec.contact_tolerance = cfg.contact.tolerance;
     spec.cache_file = cfg.contact.cache_file;
     spec.use_cache = cfg.contact.cache;

@@ -75,7 +75,8 @@ std::map<std::string, std::vector<double>> TableCacheFile::decode(const std::str
         const std::uint64_t count = r.u64();
         if (count > (bytes.size() - r.pos) / sizeof(double)) throw std::runtime_error("truncated");
         std::vector<double> payload(count);
-        std::memcpy(payload.data(), bytes.data() + r.pos, count * sizeof(double));
+        if (count > 0) // memcpy from or to a null pointer is undefined even for 0 bytes (UBSan)
+            std::memcpy(payload.data(), bytes.data() + r.pos, count * sizeof(double));
         r.pos += count * sizeof(double);
         entries.emplace(std::move(key), std::move(payload));
     }

@@ -58,9 +58,9 @@ Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesS
     const Vec3 u = mass > 0 ? (1.0 / mass) * p : Vec3{};
     m.mean_velocity = u;
 
-    // Pass 2: second moments -> temperatures; the raw <c^2>, <omega^2> of all particles.
+    // Pass 2: second moments -> temperatures.
     std::vector<double> c2(species.size(), 0.0), w2(species.size(), 0.0);
-    double mc2_all = 0, Jw2_all = 0, c2_all = 0, w2_all = 0;
+    double mc2_all = 0, Jw2_all = 0;
     for (std::size_t s = 0; s < species.size(); ++s) {
         const SpeciesSlice& sp = species[s];
         for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i) {
@@ -75,8 +75,6 @@ Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesS
         g.theta = g.T_rot / g.T_tr;
         mc2_all += sp.mass * c2[s];
         Jw2_all += sp.moment_of_inertia * w2[s];
-        c2_all += c2[s];
-        w2_all += w2[s];
     }
     const double N = static_cast<double>(n_all);
     m.all.count = n_all;
@@ -86,12 +84,10 @@ Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesS
     const bool rot_all = m.all.T_rot > 0;
 
     // Pass 3: fourth moments on reduced vectors. Per species: c* = c sqrt(m/(2 T_tr,s)); over all,
-    // the same with the mixture's temperatures. A_cw over all uses c/sqrt(<c^2>), omega/sqrt(<omega^2>)
-    // (raw, unweighted), accumulated separately.
+    // the same with the mixture's temperatures, so that every grain's c* and w* have the unit
+    // Maxwellian's law when each species is Maxwellian at the mixture's temperatures (the cumulants
+    // and A_cw then vanish, whatever the species' m and J).
     Sums all;
-    double cw2_all = 0;
-    const double sc_raw = 1.0 / std::sqrt(c2_all / N),
-                 sw_raw = w2_all > 0 ? 1.0 / std::sqrt(w2_all / N) : 0.0;
     for (std::size_t s = 0; s < species.size(); ++s) {
         const SpeciesSlice& sp = species[s];
         GroupMoments& g = m.species[s];
@@ -100,22 +96,15 @@ Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesS
         const double sw = rot ? std::sqrt(sp.moment_of_inertia / (2.0 * g.T_rot)) : 0.0;
         const double sc_all = std::sqrt(sp.mass / (2.0 * m.all.T_tr));
         const double sw_all = rot_all ? std::sqrt(sp.moment_of_inertia / (2.0 * m.all.T_rot)) : 0.0;
-        Sums own, mix;
+        Sums own;
         for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i) {
             const Vec3 c = v[i] - u;
             const Vec3& w = omega[i];
             add(own, sc * c, sw * w);
-            add(mix, sc_all * c, sw_all * w);
-            const double cw = dot(sc_raw * c, sw_raw * w);
-            cw2_all += cw * cw;
+            add(all, sc_all * c, sw_all * w);
         }
         finish(g, own, static_cast<double>(sp.count), rot);
-        all.c4 += mix.c4;
-        all.w4 += mix.w4;
-        all.c2w2 += mix.c2w2;
     }
-    all.c2 = all.w2 = N; // A_cw over all: raw vectors scaled to <c^2> = <omega^2> = 1
-    all.cw2 = cw2_all;
     finish(m.all, all, N, rot_all);
     return m;
 }

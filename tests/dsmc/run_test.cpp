@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <boost/math/distributions/chi_squared.hpp>
+
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -306,10 +308,102 @@ TEST(Run, RejectsInvalidSpecs) {
     bad = s;
     bad.species[0].mass = 0;
     fails(bad);
+    bad = s;
+    bad.histogram_times = {5}; // after the end (4)
+    fails(bad);
+    bad = s;
+    bad.histogram_times = {1};
+    bad.histogram_bins = 0;
+    fails(bad);
     // At rest: no collision can ever happen.
     bad = s;
     bad.species[0].temperature = 0;
     EXPECT_THROW(run_replica(bad, *tables, 0, [](std::span<const double>) {}), std::runtime_error);
+}
+
+// Runs one replica with histograms at spec.histogram_times; returns the rows and the sets.
+Rows run_with_histograms(const RunSpec& spec, std::vector<HistogramSet>& sets) {
+    const auto tables = RestitutionTables::build(spec);
+    Rows rows;
+    run_replica(
+        spec, *tables, 0, [&](std::span<const double> r) { rows.emplace_back(r.begin(), r.end()); }, {}, nullptr,
+        [&](const HistogramSet& h) { sets.push_back(h); });
+    return rows;
+}
+
+TEST(Run, HistogramsLeaveTheRowsAndAgreeWithTheMoments) {
+    // Rough grains, alpha = 0.5, beta = 0.5: far from Maxwellian after 8 collisions per particle.
+    // (1) Pausing for histograms (at 0.7, 2.5 and the end) leaves every row bit for bit.
+    // (2) The last histograms are of the state of the last row: their moments reproduce the row's
+    // cumulants, <c*^4> = (15/4)(1 + a20), <w*^4> = (15/4)(1 + a02), <(c*.w*)^2> = (9/4)(A_cw + 1/3),
+    // up to the binning: with bins of width 0.0125 the midpoint rule's error of <x^4> is about
+    // (w^2/2) <x^2> = 1e-4 relative, and no grain may lie beyond the range (checked: the spins' tail
+    // is fat, a02 = 0.2, and c*.w* reaches beyond 5, so the range is 8). Tolerance 1e-3 on each.
+    RunSpec s = one_species(ConstantRestitution{0.5, 0.5}, 20000, 8);
+    s.output_times = {2, 4, 8};
+    const Rows plain = run(s, 0);
+    s.histogram_times = {0.7, 2.5, 8};
+    s.histogram_bins = 640;
+    s.histogram_max = 8;
+    std::vector<HistogramSet> sets;
+    const Rows with = run_with_histograms(s, sets);
+    EXPECT_TRUE(bitwise_equal(plain, with));
+    ASSERT_EQ(sets.size(), 3u);
+    EXPECT_DOUBLE_EQ(sets[0].coll_per_particle, 0.7);
+    EXPECT_DOUBLE_EQ(sets[2].coll_per_particle, 8.0);
+    EXPECT_DOUBLE_EQ(sets[2].t, with.back()[column(s, "t")]);
+    const HistogramGrid g{s.histogram_bins, s.histogram_max};
+    const std::vector<double> xs = speed_bin_centres(g), xp = product_bin_centres(g);
+    const double ws = xs[1] - xs[0], wp = xp[1] - xp[0];
+    const SpeciesHistograms& h = sets[2].species[0];
+    double c4 = 0, w4 = 0, cw2 = 0, mass_c = 0, mass_w = 0, mass_cw = 0;
+    for (std::size_t k = 0; k < xs.size(); ++k) {
+        c4 += std::pow(xs[k], 4) * h.c[k] * ws;
+        w4 += std::pow(xs[k], 4) * h.w[k] * ws;
+        cw2 += xp[k] * xp[k] * h.cw[k] * wp;
+        mass_c += h.c[k] * ws;
+        mass_w += h.w[k] * ws;
+        mass_cw += h.cw[k] * wp;
+    }
+    const std::vector<double>& last = with.back();
+    EXPECT_NEAR(mass_c, 1.0, 1e-12); // every grain inside the range
+    EXPECT_NEAR(mass_w, 1.0, 1e-12);
+    EXPECT_NEAR(mass_cw, 1.0, 1e-12);
+    EXPECT_GT(std::abs(last[column(s, "a20")]), 0.01);
+    EXPECT_NEAR((4.0 / 15.0) * c4 - 1, last[column(s, "a20")], 1e-3);
+    EXPECT_NEAR((4.0 / 15.0) * w4 - 1, last[column(s, "a02")], 1e-3);
+    EXPECT_NEAR(cw2 / 2.25 - 1.0 / 3.0, last[column(s, "A_cw")], 1e-3);
+}
+
+TEST(Run, ElasticSmoothGasStaysMaxwellianInTheHistograms) {
+    // alpha = 1, beta = -1 from a Maxwellian: the equilibrium is stationary, so after 10 collisions
+    // per particle the speed histogram is the Maxwellian's (and omega, untouched, too): Pearson's
+    // chi^2 over the bins with >= 5 expected grains below its 1 - 1e-4 quantile. N = 20000.
+    RunSpec s = one_species(ConstantRestitution{1.0, -1.0}, 20000, 10);
+    s.output_times = {10};
+    s.histogram_times = {10};
+    s.histogram_bins = 40;
+    s.histogram_max = 4;
+    std::vector<HistogramSet> sets;
+    run_with_histograms(s, sets);
+    ASSERT_EQ(sets.size(), 1u);
+    const HistogramGrid g{s.histogram_bins, s.histogram_max};
+    const double n = 20000, w = 0.1;
+    const auto p_value = [&](const std::vector<double>& f, const std::vector<double>& ref, double width) {
+        double x2 = 0;
+        int dof = -1;
+        for (std::size_t k = 0; k < f.size(); ++k) {
+            const double expected = ref[k] * width * n, observed = f[k] * width * n;
+            if (expected < 5)
+                continue;
+            x2 += (observed - expected) * (observed - expected) / expected;
+            ++dof;
+        }
+        return boost::math::cdf(boost::math::chi_squared(dof), x2);
+    };
+    EXPECT_LT(p_value(sets[0].species[0].c, maxwell_speed_bins(g), w), 1 - 1e-4);
+    EXPECT_LT(p_value(sets[0].species[0].w, maxwell_speed_bins(g), w), 1 - 1e-4);
+    EXPECT_LT(p_value(sets[0].species[0].cw, maxwell_product_bins(g), 2 * w), 1 - 1e-4);
 }
 
 } // namespace

@@ -3,6 +3,7 @@
 #include "io_test_support.hpp"
 
 #include "roughgas/io/case_schema.hpp"
+#include "roughgas/io/histograms_csv.hpp"
 #include "roughgas/io/moments_csv.hpp"
 #include "roughgas/io/restitution_csv.hpp"
 
@@ -54,6 +55,14 @@ TEST(Readme, DocumentsMomentsColumns) {
     EXPECT_NE(columns.find(moments_columns_markdown()), std::string::npos)
         << "regenerate with `roughgas keys --output`:\n"
         << moments_columns_markdown();
+}
+
+TEST(Readme, DocumentsHistogramsColumns) {
+    const std::string columns = section(readme(), "histograms.csv columns");
+    ASSERT_FALSE(columns.empty()) << "README.md has no section '## histograms.csv columns'";
+    EXPECT_NE(columns.find(histograms_columns_markdown()), std::string::npos)
+        << "regenerate with `roughgas keys --output`:\n"
+        << histograms_columns_markdown();
 }
 
 TEST(Schema, EveryKeyIsWellFormed) {

@@ -265,6 +265,44 @@ TEST(RunCli, ExistingOutputIsRefusedWithoutForce) {
     EXPECT_EQ(run_roughgas(run_args(f, file, "--quiet --force"), dir).status, 2);
 }
 
+TEST(RunCli, WritesHistogramsWhenAsked) {
+    // run.histogram_every = 2 with end = 4: histograms at 2 and 4 collisions per particle, 30 bins
+    // each, two replicas (f_x and f_x_err); moments.csv is the same as without histograms but for the
+    // echoed case lines; an existing histograms.csv is refused without --force.
+    const test::ScratchDir dir;
+    const fs::path f = dir.write("c.toml", constant_case(0.8, 0.2, 2000, 4.0, 2));
+    const fs::path out = dir / "out", plain = dir / "plain";
+    ASSERT_EQ(run_roughgas(run_args(f, plain, "--quiet"), dir).status, 0);
+    EXPECT_FALSE(fs::exists(plain / "histograms.csv"));
+    const std::string sets = "--quiet --set run.histogram_every=2.0 --set run.histogram_bins=30";
+    ASSERT_EQ(run_roughgas(run_args(f, out, sets), dir).status, 0);
+    const Moments h = read_moments(out / "histograms.csv");
+    EXPECT_EQ(h.rows, 60u);
+    const std::vector<std::string> expected = {
+        "coll_per_particle", "t",      "t_err",         "c_star", "f_c",   "f_c_err", "f_c_maxwell",
+        "w_star",            "f_w",    "f_w_err",       "f_w_maxwell",    "cw_star", "f_cw",
+        "f_cw_err",          "f_cw_maxwell"};
+    EXPECT_EQ(h.names, expected);
+    EXPECT_EQ(h["coll_per_particle"].front(), 2.0);
+    EXPECT_EQ(h["coll_per_particle"].back(), 4.0);
+    double mass = 0;
+    for (std::size_t k = 30; k < 60; ++k)
+        mass += h["f_c"][k] * (5.0 / 30.0);
+    EXPECT_NEAR(mass, 1.0, 1e-12);
+    const auto data = [](const fs::path& p) { // the header and rows, without the '#' lines
+        std::string d;
+        std::istringstream in(test::read_file(p));
+        for (std::string line; std::getline(in, line);)
+            if (line.rfind("#", 0) != 0)
+                d += line + "\n";
+        return d;
+    };
+    EXPECT_EQ(data(plain / "moments.csv"), data(out / "moments.csv"));
+    const test::CommandResult again = run_roughgas(run_args(f, out, sets), dir);
+    EXPECT_EQ(again.status, 2);
+    EXPECT_NE(again.err.find("exists (use --force to overwrite)"), std::string::npos) << again.err;
+}
+
 struct BadRun {
     std::string name;
     std::string case_text;
@@ -294,6 +332,14 @@ std::vector<BadRun> bad_runs() {
         {"ZeroParticles", c, "--set run.particles=0", "run.particles", "must be >= 2"},
         {"FractionsNotSummingToOne", two, "", "species.fraction", "must sum to 1 (within 1e-9)"},
         {"UnknownKey", replaced(c, "particles", "particle"), "", "run.particle", "unknown key"},
+        {"ShearWithoutShearTable", c, "--set run.kind=shear", "shear.rate",
+         "required for run.kind = \"shear\" but missing (must be a real number > 0"},
+        {"NegativeShearRate", c + "\n[shear]\nrate = -1.0\n", "--set run.kind=shear", "shear.rate", "must be > 0"},
+        {"ShearTimeStepTooLarge", c + "\n[shear]\nrate = 1.0\ntime_step = 2.0\n", "--set run.kind=shear",
+         "shear.time_step", "must be in (0, 1]"},
+        {"HistogramsAfterTheEnd", c, "--set run.histogram_every=5.0", "run.histogram_every",
+         "must be <= run.end = 4"},
+        {"NegativeHistogramTime", c, "--set run.histogram_every=-1.0", "run.histogram_every", "must be >= 0"},
     };
 }
 

@@ -92,10 +92,17 @@ TEST(RunSpecFromCase, ViscoelasticPairsCarryTheirContactConstants) {
     EXPECT_EQ(s.cache_file, "tables.bin");
 }
 
-TEST(RunSpecFromCase, ShearIsNotACoolingRun) {
+TEST(RunSpecFromCase, ShearCarriesRateAndStep) {
     CaseConfig c = mixture_case();
     c.run.kind = RunKind::shear;
-    EXPECT_THROW(run_spec_from_case(c), std::invalid_argument);
+    EXPECT_THROW(run_spec_from_case(c), std::invalid_argument); // no [shear]: the parser rejects it first
+    c.shear = ShearConfig{0.25, 0.05};
+    const RunSpec s = run_spec_from_case(c);
+    ASSERT_TRUE(s.shear.has_value());
+    EXPECT_EQ(s.shear->rate, 0.25);
+    EXPECT_EQ(s.shear->time_step, 0.05);
+    c.run.kind = RunKind::cooling; // [shear] is ignored by cooling runs
+    EXPECT_FALSE(run_spec_from_case(c).shear.has_value());
 }
 
 } // namespace

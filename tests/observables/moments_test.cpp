@@ -87,6 +87,36 @@ TEST(Moments, MixtureUsesTheCentreOfMassAndEachSpeciesTemperature) {
     EXPECT_EQ(m.all.count, 12u);
 }
 
+TEST(Moments, MaxwellianMixtureOfUnequalGrainsHasZeroCumulantsOverAll) {
+    // Two species at the same T_tr = T_rot = 1 with masses 1 and 8 and moments of inertia 0.1 and
+    // 3.2, each Maxwellian: the mixture as a whole is Maxwellian in the reduced variables, so every
+    // mixture-wide cumulant and A_cw is 0 up to sampling noise. Standard errors with N = 1e5 grains:
+    // a20, a02: sd((4/15) c*^4) = (4/15) sqrt(945/16 - 225/16) = 1.79, se = 0.0057; a11: similar;
+    // A_cw: sd((c*.w*)^2)/(9/4) = 1.5/2.25, se = 0.0021. Tolerance 0.03 is >= 5 se; a definition
+    // over the raw c and omega gives A_cw = 0.25 here (the light grains are fast in both).
+    Rng rng = make_stream(32, Stream::test, 0, 0);
+    boost::random::normal_distribution<double> normal;
+    const std::size_t n = 50000;
+    const double m[2] = {1.0, 8.0}, J[2] = {0.1, 3.2};
+    std::vector<Vec3> v, w;
+    for (int s = 0; s < 2; ++s)
+        for (std::size_t i = 0; i < n; ++i) {
+            const double sv = 1.0 / std::sqrt(m[s]), sw = 1.0 / std::sqrt(J[s]);
+            v.push_back({sv * normal(rng), sv * normal(rng), sv * normal(rng)});
+            w.push_back({sw * normal(rng), sw * normal(rng), sw * normal(rng)});
+        }
+    const SpeciesSlice sp[2] = {{0, n, m[0], J[0]}, {n, n, m[1], J[1]}};
+    const Moments mo = compute_moments(col(v), col(w), sp);
+    EXPECT_NEAR(mo.all.T_tr, 1.0, 0.02);
+    EXPECT_NEAR(mo.all.T_rot, 1.0, 0.02);
+    EXPECT_NEAR(mo.all.a20, 0.0, 0.03);
+    EXPECT_NEAR(mo.all.a02, 0.0, 0.03);
+    EXPECT_NEAR(mo.all.a11, 0.0, 0.03);
+    EXPECT_NEAR(mo.all.A_cw, 0.0, 0.03);
+    for (const GroupMoments& g : mo.species)
+        EXPECT_NEAR(g.A_cw, 0.0, 0.03);
+}
+
 TEST(Moments, NoRotationGivesNaNForRotationalCumulants) {
     std::vector<Vec3> v, w;
     shell(v, w, 1.0, 0.0, {});

@@ -2,6 +2,7 @@
 // Initial state: Maxwellian v and omega per species at its temperatures (k_B = 1), then the
 // mass-weighted mean velocity removed, so the total momentum is zero to round-off.
 #include "roughgas/core/rng.hpp"
+#include "roughgas/core/vec.hpp"
 #include "roughgas/dsmc/species.hpp"
 
 #include <boost/random/normal_distribution.hpp>

@@ -13,6 +13,20 @@ struct Column {
     std::string unit; // e.g. "energy", "1/time", "-"
 };
 
+inline std::vector<std::string> column_names(const std::vector<Column>& columns) {
+    std::vector<std::string> v;
+    for (const Column& c : columns)
+        v.push_back(c.name);
+    return v;
+}
+
+inline std::vector<std::string> column_units(const std::vector<Column>& columns) {
+    std::vector<std::string> v;
+    for (const Column& c : columns)
+        v.push_back(c.unit);
+    return v;
+}
+
 // Called once per output time with the values of the columns, in order.
 using RowSink = std::function<void(std::span<const double> row)>;
 

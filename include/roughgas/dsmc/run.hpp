@@ -2,6 +2,7 @@
 // One DSMC run of the homogeneous gas (issue 3): the columns it reports and the run itself.
 #include "roughgas/dsmc/output_columns.hpp"
 #include "roughgas/dsmc/run_spec.hpp"
+#include "roughgas/observables/histograms.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -14,6 +15,13 @@ class RestitutionTables; // dsmc/tables.hpp
 
 // Progress of a run: collisions per particle done so far, the end, and collisions done.
 using ProgressSink = std::function<void(double done, double end, double collisions)>;
+
+// The histograms of one replica at one of spec.histogram_times.
+struct HistogramSet {
+    double t = 0, coll_per_particle = 0;
+    std::vector<SpeciesHistograms> species; // in spec.species order
+};
+using HistogramSink = std::function<void(const HistogramSet&)>;
 
 // Columns of moments.csv for this spec, in the order of interface.md: t, coll_per_particle, T_tr,
 // T_rot, theta, a20, a02, a11, A_cw, coll_rate, E_diss_rate, then per species X.NAME and ratios
@@ -54,8 +62,10 @@ struct ReplicaSummary {
 };
 
 // The same with tables built by the caller (RestitutionTables::build, or build_run_tables for the
-// cache file): in the physics library. `summary` (optional) receives what the run did.
+// cache file): in the physics library. `summary` (optional) receives what the run did; `histograms`
+// (optional) is called at every spec.histogram_times entry.
 void run_replica(const RunSpec& spec, const RestitutionTables& tables, int replica, const RowSink& sink,
-                 const ProgressSink& progress = {}, ReplicaSummary* summary = nullptr);
+                 const ProgressSink& progress = {}, ReplicaSummary* summary = nullptr,
+                 const HistogramSink& histograms = {});
 
 } // namespace roughgas

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -35,6 +36,12 @@ using PairRestitution = std::variant<ConstantRestitution, CoulombRestitution, Vi
 // closed linear ODEs exactly (observables/theory.hpp).
 enum class CollisionKernel { hard_sphere, maxwell };
 
+// Uniform shear flow u = a y x^ (issue 4, dsmc/shear.hpp).
+struct ShearSpec {
+    double rate = 1;        // a, 1/time
+    double time_step = 0.2; // Strang step h in mean free times (at each output interval's start)
+};
+
 struct RunSpec {
     std::vector<SpeciesSpec> species;
     // Model of species pair (a, b), a <= b, at index pair_index(a, b, species.size()).
@@ -45,6 +52,12 @@ struct RunSpec {
     int replicas = 1;
     double end = 10;                    // collisions per particle
     std::vector<double> output_times;   // collisions per particle, increasing, the last one == end
+    // Histograms of c*, w*, c*.w* (observables/histograms.hpp) at these times (collisions per
+    // particle, increasing, <= end; empty: none), with `histogram_bins` bins over [0, histogram_max)
+    // (speeds) and [-histogram_max, histogram_max) (c*.w*). Pausing there does not change the run.
+    std::vector<double> histogram_times;
+    int histogram_bins = 50;
+    double histogram_max = 5.0;
     // OpenMP threads of one replica (the groups of a step run in parallel): no influence on the
     // results. The command line shares --threads between replicas and groups (cli/run_command.cpp).
     int threads = 1;
@@ -63,6 +76,8 @@ struct RunSpec {
     std::filesystem::path cache_file;
     bool use_cache = true;
     double table_g_min = 1e-6, table_g_max = 1e2;
+    // Uniform shear flow instead of free cooling (run.kind = "shear").
+    std::optional<ShearSpec> shear;
 };
 
 // The automatic group count: particles/16384 rounded down to a power of two (at least 1, at most

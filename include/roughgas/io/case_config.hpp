@@ -68,6 +68,10 @@ struct RunConfig {
     double end = 0;            // collisions per particle
     double output_every = 1.0; // collisions per particle (first output for log spacing)
     OutputSpacing output_spacing = OutputSpacing::linear;
+    double histogram_every = 0; // collisions per particle; 0: no histograms
+    OutputSpacing histogram_spacing = OutputSpacing::linear;
+    std::int64_t histogram_bins = 50;
+    double histogram_max = 5.0; // reduced speed range
     friend bool operator==(const RunConfig&, const RunConfig&) = default;
 };
 
@@ -137,7 +141,8 @@ struct ContactConfig {
 
 // [shear]
 struct ShearConfig {
-    double rate = 0; // a [1/time]
+    double rate = 0;        // a [1/time]
+    double time_step = 0.2; // Strang step h in mean free times (dsmc/shear.hpp)
     friend bool operator==(const ShearConfig&, const ShearConfig&) = default;
 };
 

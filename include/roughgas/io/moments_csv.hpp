@@ -37,8 +37,8 @@ class MomentsTable {
 
     // Every CSV column in order, with its unit.
     const std::vector<Column>& columns() const { return columns_; }
-    std::vector<std::string> names() const;
-    std::vector<std::string> units() const;
+    std::vector<std::string> names() const { return column_names(columns_); }
+    std::vector<std::string> units() const { return column_units(columns_); }
     const std::vector<Column>& solver_columns() const { return solver_; }
     bool has_theory() const { return trajectory_.has_value(); }
     int replicas() const { return replicas_; }

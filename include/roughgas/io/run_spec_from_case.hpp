@@ -15,8 +15,9 @@ namespace roughgas {
 std::vector<double> output_times(double every, double end, OutputSpacing spacing);
 
 // Species, the model of every species pair (its [[pair]] table, else [collision]), particles,
-// density, seed, replicas, end and output times, and the contact settings. run.kind = "shear"
-// is not a homogeneous cooling run: std::invalid_argument.
+// density, seed, replicas, end and output times, the contact settings, and for run.kind = "shear"
+// the shear rate and time step (std::invalid_argument without [shear]; the parser rejects that
+// case first).
 RunSpec run_spec_from_case(const CaseConfig& cfg);
 
 } // namespace roughgas

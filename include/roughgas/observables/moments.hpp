@@ -7,8 +7,14 @@
 //
 // with u the centre-of-mass (mass-weighted mean) velocity of all particles, and the reduced
 // c* = c/sqrt(2 T_tr/m), w* = omega/sqrt(2 T_rot/J). Per species, T_tr and T_rot are the species'
-// own; over all particles of a mixture, c*^2 = m c^2/(2 T_tr) with each particle's mass and the
-// mixture's T_tr (likewise w*), and A_cw is taken over the raw c and omega of all particles.
+// own; over all particles of a mixture, c* = c sqrt(m/(2 T_tr)) with each particle's mass and the
+// mixture's T_tr (likewise w* with each J), and A_cw is taken over these reduced vectors:
+// A_cw = <(c*.w*)^2>/(<c*^2><w*^2>) - 1/3. For one species the reduced form is A_cw of physics.md §5
+// exactly (the constant factors cancel); for a mixture it is the form that vanishes when every
+// species is Maxwellian at the mixture's temperatures, whatever their m and J (the raw c and omega
+// of light and heavy grains are correlated in size, which gave A_cw = 0.25 for a Maxwellian mixture).
+// The mixture-wide a20, a02, a11 are not 0 when the species' temperatures differ (a sum of
+// Maxwellians of different widths is not one): read the per-species columns for each species' shape.
 //
 // Range: every fourth-order sum is accumulated on the reduced vectors c*, w* (O(1) whatever the
 // temperature), so nothing like T^2 or v^4 is formed; a run can cool through 40 decades of T.

@@ -1,0 +1,23 @@
+#pragma once
+// The steady-state summary (observables/steady_state.hpp) as one CSV row: `steady` (1 if the
+// drift criterion was met, else 0: the values are then those of the second half of the run, not
+// a steady state), `steady_from` (coll_per_particle of the window's first row), `steady_rows`,
+// then every averaged column X followed by X_err (batch-means standard error). Written by
+// `roughgas run` (DIR/steady.csv, shear runs) and, one row per point, by `roughgas sweep`.
+#include "roughgas/observables/steady_state.hpp"
+
+#include <string>
+#include <vector>
+
+namespace roughgas {
+
+std::vector<std::string> steady_csv_columns(const SteadyResult& r);
+std::vector<double> steady_csv_row(const SteadyResult& r, const std::vector<std::string>& names,
+                                   const std::vector<std::vector<double>>& rows);
+
+// find_steady_state over moments.csv rows with the monitored quantities of the run's kind
+// (coll_per_particle is kept among the averages, t is not).
+SteadyResult steady_summary(const std::vector<std::string>& names,
+                            const std::vector<std::vector<double>>& rows, bool shear);
+
+} // namespace roughgas

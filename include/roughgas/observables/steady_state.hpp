@@ -1,0 +1,60 @@
+#pragma once
+// The steady part of a time series of output rows, and its averages with batch-means errors
+// (issue 4: "a run can start anywhere and report when it has reached the steady state").
+//
+// Criterion (drift). For a candidate start row k0, the window [k0, n) is cut into two halves.
+// The second half's mean of every monitored quantity X gets a batch-means standard error se_2
+// (the half cut into `batches/2` consecutive batches); the first half's mean is taken to have the
+// same variance per row (a transient in it would inflate its own batch error and hide itself).
+// The window is steady when, for every monitored X,
+//     |mean_2(X) - mean_1(X)| <= threshold se_2 sqrt(1 + n_2/n_1),
+// i.e. no drift of X is resolved by the data. The steady start is the first such k0 (scanned
+// upwards, over at most the first half of the rows, with at least `min_rows` rows in the window).
+// Monitored: T_tr, T_rot and P*_xx, P*_yy, P*_zz, P*_xy for shear runs; the scale-free theta, a20
+// (and a02 where defined) for cooling runs, whose steady state is the scaled (homogeneous
+// cooling) state.
+//
+// Averages. Every other quantity is averaged over the steady window with the batch-means error:
+// the window cut into `batches` consecutive batches of equal length, se = sd(batch means)/sqrt(B).
+// Batches longer than the correlation time (rows are about one collision per particle apart; the
+// stresses relax within a few) make the batch means independent; the rows being replica means,
+// the error includes the spread of the replicas.
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace roughgas {
+
+struct SteadyOptions {
+    std::vector<std::string> monitored;
+    int batches = 10;
+    double threshold = 3;
+    std::size_t min_rows = 20;
+};
+
+struct SteadyValue {
+    std::string name;
+    double mean = 0, err = 0;
+};
+
+struct SteadyResult {
+    bool reached = false;
+    std::size_t first_row = 0;       // the window's first row (reached or not: the last candidate tried)
+    std::size_t rows = 0;            // rows in the window
+    std::vector<SteadyValue> values; // every column but the skipped ones, in column order
+};
+
+// Mean and batch-means standard error of x (B batches of equal length; the first len % B values
+// are left out, so every batch has the same weight). err is NaN with fewer than 2 batches.
+SteadyValue batch_mean(std::span<const double> x, int batches);
+
+// `names`: the columns of `rows`; columns named in `skip` (and every X_err column) are not averaged.
+SteadyResult find_steady_state(const std::vector<std::string>& names,
+                               const std::vector<std::vector<double>>& rows, const SteadyOptions& options,
+                               const std::vector<std::string>& skip = {"t"});
+
+// The monitored quantities above for a run of the given kind, among `names`.
+std::vector<std::string> steady_monitored(const std::vector<std::string>& names, bool shear);
+
+} // namespace roughgas

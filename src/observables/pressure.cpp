@@ -1,0 +1,70 @@
+#include "roughgas/observables/pressure.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace roughgas {
+
+PressureTensor pressure_tensor(Vec3Column v, std::span<const SpeciesSlice> species, double volume,
+                               const Vec3& u) {
+    PressureTensor P;
+    for (const SpeciesSlice& sp : species) {
+        PressureTensor s;
+        for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i) {
+            const Vec3 c = v[i] - u;
+            s.xx += c.x * c.x;
+            s.yy += c.y * c.y;
+            s.zz += c.z * c.z;
+            s.xy += c.x * c.y;
+            s.xz += c.x * c.z;
+            s.yz += c.y * c.z;
+        }
+        const double f = sp.mass / volume;
+        P.xx += f * s.xx;
+        P.yy += f * s.yy;
+        P.zz += f * s.zz;
+        P.xy += f * s.xy;
+        P.xz += f * s.xz;
+        P.yz += f * s.yz;
+    }
+    return P;
+}
+
+Vec3 mean_spin(Vec3Column omega, std::span<const SpeciesSlice> species) {
+    Vec3 L{};
+    double J = 0;
+    for (const SpeciesSlice& sp : species) {
+        Vec3 s{};
+        for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i)
+            s += omega[i];
+        L += sp.moment_of_inertia * s;
+        J += sp.moment_of_inertia * static_cast<double>(sp.count);
+    }
+    return J > 0 ? (1.0 / J) * L : Vec3{};
+}
+
+double usf_nu(std::span<const UsfSpecies> species, double density, double T) {
+    double nu_c = 0;
+    for (const UsfSpecies& a : species) {
+        for (const UsfSpecies& b : species) {
+            const double sigma = a.radius + b.radius;
+            const double m_ab = a.mass * b.mass / (a.mass + b.mass);
+            nu_c += a.fraction * b.fraction * density * sigma * sigma *
+                    std::sqrt(8.0 * std::numbers::pi * T / m_ab);
+        }
+    }
+    return 0.8 * nu_c; // (4/5) nu_c = (16/5) n sigma^2 sqrt(pi T/m) for equal spheres
+}
+
+UsfReduced usf_reduced(const PressureTensor& P, double rate, double nu, double density, double T) {
+    UsfReduced r;
+    const double p = density * T;
+    r.a_star = rate / nu;
+    r.P_star = {P.xx / p, P.yy / p, P.zz / p, P.xy / p, P.xz / p, P.yz / p};
+    r.eta_star = -r.P_star.xy / r.a_star;
+    r.N1_star = r.P_star.xx - r.P_star.yy;
+    r.N2_star = r.P_star.yy - r.P_star.zz;
+    return r;
+}
+
+} // namespace roughgas

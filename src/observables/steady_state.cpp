@@ -1,0 +1,113 @@
+#include "roughgas/observables/steady_state.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace roughgas {
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+std::size_t index_of(const std::vector<std::string>& names, const std::string& n) {
+    return static_cast<std::size_t>(std::find(names.begin(), names.end(), n) - names.begin());
+}
+
+} // namespace
+
+SteadyValue batch_mean(std::span<const double> x, int batches) {
+    SteadyValue v;
+    const std::size_t B = static_cast<std::size_t>(std::max(batches, 1));
+    const std::size_t len = x.size() / B;
+    if (len == 0) {
+        v.mean = v.err = nan;
+        return v;
+    }
+    const std::size_t skip = x.size() - len * B;
+    std::vector<double> m(B, 0.0);
+    for (std::size_t b = 0; b < B; ++b) {
+        for (std::size_t k = 0; k < len; ++k)
+            m[b] += x[skip + b * len + k];
+        m[b] /= static_cast<double>(len);
+    }
+    double mean = 0;
+    for (double y : m)
+        mean += y;
+    mean /= static_cast<double>(B);
+    double ss = 0;
+    for (double y : m)
+        ss += (y - mean) * (y - mean);
+    v.mean = mean;
+    v.err = B > 1 ? std::sqrt(ss / (static_cast<double>(B) * static_cast<double>(B - 1))) : nan;
+    return v;
+}
+
+SteadyResult find_steady_state(const std::vector<std::string>& names,
+                               const std::vector<std::vector<double>>& rows, const SteadyOptions& o,
+                               const std::vector<std::string>& skip) {
+    SteadyResult r;
+    const std::size_t n = rows.size();
+    const auto series = [&](std::size_t col, std::size_t from, std::size_t to) {
+        std::vector<double> x;
+        for (std::size_t k = from; k < to; ++k)
+            x.push_back(rows[k][col]);
+        return x;
+    };
+    std::vector<std::size_t> mon;
+    for (const std::string& m : o.monitored)
+        if (const std::size_t j = index_of(names, m); j < names.size())
+            mon.push_back(j);
+    const int half_batches = std::max(2, o.batches / 2);
+    // Row 0 is the initial state (its rates are undefined): never part of the window.
+    std::size_t k0 = std::min<std::size_t>(1, n);
+    const std::size_t stride = std::max<std::size_t>(1, n / 100);
+    for (; k0 + std::max<std::size_t>(o.min_rows, 4) <= n && k0 <= n / 2; k0 += stride) {
+        const std::size_t mid = k0 + (n - k0) / 2;
+        bool steady = true;
+        for (std::size_t j : mon) {
+            const std::vector<double> a = series(j, k0, mid), b = series(j, mid, n);
+            const SteadyValue A = batch_mean(a, half_batches), B = batch_mean(b, half_batches);
+            if (!std::isfinite(A.mean) && !std::isfinite(B.mean))
+                continue; // undefined throughout (e.g. T_rot of smooth grains started without spin)
+            // The error of both means from the second half's batches (a transient inside the first
+            // half would inflate its own batch error and hide itself); the 1e-12 relative slack:
+            // a constant column, e.g. T_rot of smooth grains, has err = 0.
+            const double se =
+                B.err * std::sqrt(1.0 + static_cast<double>(b.size()) / static_cast<double>(a.size()));
+            const double slack = 1e-12 * std::max(std::abs(A.mean), std::abs(B.mean));
+            if (!(std::abs(B.mean - A.mean) <= o.threshold * se + slack)) {
+                steady = false;
+                break;
+            }
+        }
+        if (steady) {
+            r.reached = true;
+            break;
+        }
+    }
+    if (!r.reached)
+        k0 = std::min(k0, n > 0 ? n / 2 : 0);
+    r.first_row = k0;
+    r.rows = n - k0;
+    for (std::size_t j = 0; j < names.size(); ++j) {
+        if (names[j].ends_with("_err") || std::find(skip.begin(), skip.end(), names[j]) != skip.end())
+            continue;
+        SteadyValue v = batch_mean(series(j, k0, n), o.batches);
+        v.name = names[j];
+        r.values.push_back(v);
+    }
+    return r;
+}
+
+std::vector<std::string> steady_monitored(const std::vector<std::string>& names, bool shear) {
+    const std::vector<std::string> want =
+        shear ? std::vector<std::string>{"T_tr", "T_rot", "P_xx_star", "P_yy_star", "P_zz_star", "P_xy_star"}
+              : std::vector<std::string>{"theta", "a20", "a02"};
+    std::vector<std::string> out;
+    for (const std::string& w : want)
+        if (std::find(names.begin(), names.end(), w) != names.end())
+            out.push_back(w);
+    return out;
+}
+
+} // namespace roughgas

@@ -1,0 +1,89 @@
+// The steady-state detector and batch means (observables/steady_state.hpp) on synthetic series
+// with known statistics: a relaxation plus noise, stationary noise, and a drift.
+#include "roughgas/core/rng.hpp"
+#include "roughgas/observables/steady_state.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace roughgas {
+namespace {
+
+double gauss(Rng& r) { // Box-Muller
+    return std::sqrt(-2.0 * std::log(uniform01_open0(r))) * std::cos(2.0 * std::numbers::pi * uniform01(r));
+}
+
+// rows: t, coll_per_particle, X, with X = level + jump exp(-k/tau) + slope k + noise sigma.
+std::vector<std::vector<double>> series(std::uint64_t seed, std::size_t n, double jump, double tau,
+                                        double slope, double sigma) {
+    Rng r = make_stream(seed, Stream::test, 0, 0);
+    std::vector<std::vector<double>> rows;
+    for (std::size_t k = 0; k < n; ++k) {
+        const double x = 1.0 + jump * std::exp(-static_cast<double>(k) / tau) +
+                         slope * static_cast<double>(k) + sigma * gauss(r);
+        rows.push_back({static_cast<double>(k), static_cast<double>(k), x});
+    }
+    return rows;
+}
+
+const std::vector<std::string> names = {"t", "coll_per_particle", "T_tr"};
+
+SteadyOptions options() {
+    SteadyOptions o;
+    o.monitored = {"T_tr"};
+    return o;
+}
+
+// Batch means of iid N(0, 1): the error is 1/sqrt(n) up to the scatter of a 10-batch estimate
+// (relative sd ~ 1/sqrt(2 x 9) = 24%); over 20 seeds the mean ratio is within 15% of 1, and the
+// means scatter as the errors say (|mean| < 4 err for each).
+TEST(BatchMean, ErrorOfIidData) {
+    double ratio = 0;
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+        Rng r = make_stream(seed, Stream::test, 1, 0);
+        std::vector<double> x(1000);
+        for (double& y : x)
+            y = gauss(r);
+        const SteadyValue v = batch_mean(x, 10);
+        EXPECT_LT(std::abs(v.mean), 4 * v.err);
+        ratio += v.err * std::sqrt(1000.0) / 20.0;
+    }
+    EXPECT_NEAR(ratio, 1.0, 0.15);
+}
+
+// A relaxation from 1 + 5 (time constant 10 rows) with noise 0.01: the transient is resolved
+// until 5 exp(-k/10) is well below the noise of a half-window mean (~0.01/sqrt(200) x 3), i.e.
+// k > 10 ln(5/0.002) ~ 80; the steady window starts there, not at 0, and not after half the run.
+TEST(SteadyState, FindsTheEndOfARelaxation) {
+    for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+        const SteadyResult r = find_steady_state(names, series(seed, 600, 5.0, 10.0, 0.0, 0.01), options());
+        EXPECT_TRUE(r.reached);
+        EXPECT_GT(r.first_row, 40u);
+        EXPECT_LT(r.first_row, 120u);
+        ASSERT_EQ(r.values.size(), 2u); // coll_per_particle and T_tr (t skipped)
+        EXPECT_NEAR(r.values[1].mean, 1.0, 5 * r.values[1].err + 1e-4);
+    }
+}
+
+TEST(SteadyState, StationaryFromTheStart) {
+    int early = 0;
+    for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+        const SteadyResult r = find_steady_state(names, series(seed, 300, 0.0, 1.0, 0.0, 0.1), options());
+        EXPECT_TRUE(r.reached);
+        early += r.first_row <= 10;
+    }
+    EXPECT_GE(early, 8); // a 3-sigma criterion with 4-dof errors rejects a stationary window rarely
+}
+
+// A drift of 0.2 over the run against noise 0.01 is always resolved: never steady.
+TEST(SteadyState, DriftIsNotSteady) {
+    const SteadyResult r = find_steady_state(names, series(3, 400, 0.0, 1.0, 0.0005, 0.01), options());
+    EXPECT_FALSE(r.reached);
+    EXPECT_EQ(r.first_row, 200u);
+}
+
+} // namespace
+} // namespace roughgas
