@@ -1,16 +1,33 @@
 #!/usr/bin/env bash
-# Sets up and runs the main job on a case (default: cases/ice.toml).
-# Until the DSMC lands, the main job is the restitution tabulation of the contact model:
-# it writes out/<case>/normal.csv and tangential.csv and draws them to PNG.
+# Sets up (Debian packages, Release build) and runs the main job on a case (default: cases/ice.toml):
+#  - cases with a contact model ([material]): `roughgas restitution` tabulates it and
+#    scripts/plot_restitution.py draws it (the paper's Figs. 1 and 2; the ice cases add the measured
+#    ice law their dissipation was fitted to);
+#  - every case: `roughgas run` (the DSMC, cooling or shear) writes moments.csv (and steady.csv for
+#    shear) and scripts/plot.py (cooling) or scripts/plot_shear.py (shear) draws it.
+# Results go to out/<case>/ (or $ROUGHGAS_OUT); earlier results there are replaced.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/setup.sh"
 case_file="${1:-$root/cases/ice.toml}"
 name=$(basename "$case_file" .toml)
 out="${ROUGHGAS_OUT:-$root/out/$name}"
-"${ROUGHGAS_BUILD_DIR:-$root/build}/roughgas" restitution "$case_file" --out "$out" --force
-# The ice cases also draw the measured ice law their dissipation A was fitted to (paper Fig. 1).
-plot_args=()
-case "$name" in ice*) plot_args+=(--bridges) ;; esac
-"$root/scripts/python3" "$root/scripts/plot_restitution.py" "$out" "${plot_args[@]}"
+roughgas="${ROUGHGAS_BUILD_DIR:-$root/build}/roughgas"
+mkdir -p "$out"
+# Both commands share the contact tables through one cache file (built once).
+cache=(--set "contact.cache_file=\"$out/tables.cache\"")
+if grep -q '^\[material\]' "$case_file"; then
+  "$roughgas" restitution "$case_file" --out "$out" --force "${cache[@]}"
+  plot_args=()
+  case "$name" in ice*) plot_args+=(--bridges) ;; esac
+  "$root/scripts/python3" "$root/scripts/plot_restitution.py" "$out" "${plot_args[@]}"
+else
+  cache=()
+fi
+"$roughgas" run "$case_file" --out "$out" --force "${cache[@]}"
+if grep -q '^kind *= *"shear"' "$case_file"; then
+  "$root/scripts/python3" "$root/scripts/plot_shear.py" "$out"
+else
+  "$root/scripts/python3" "$root/scripts/plot.py" "$out"
+fi
 echo "run: results in $out"

@@ -5,9 +5,9 @@
 // Order of work: validate the case and the output directory (exit 2, nothing written), build the
 // restitution tables, then run the replicas (in parallel over --threads when replicas > 1, and the
 // groups of one replica over the threads left; each replica is deterministic, so the file does not
-// depend on the thread count). The file is
-// rewritten atomically as rows complete (every row complete over all replicas, at most once a
-// second, and at the end), so a crash or a kill keeps what was computed.
+// depend on the thread count). The file is rewritten atomically as rows complete (at every output
+// time, batched only when rewriting would take more than a tenth of the time, and at the end), so a
+// crash or a kill keeps what was computed.
 // `roughgas run --resume DIR` and `--checkpoint-every` are accepted but not implemented yet (exit 1).
 #include "commands.hpp"
 #include "progress.hpp"
@@ -184,7 +184,12 @@ int run_run(const RunOptions& o, const CLI::App& app) {
     std::mutex mutex;
     std::size_t combined = 0, on_disk = 0;
     std::vector<std::vector<double>> table_rows; // the combined rows, for the steady-state summary
+    // The file is rewritten (atomically: temporary, fsync, rename) at every output time whose row
+    // is complete, so a crash keeps every row computed; only when rewriting would take more than a
+    // tenth of the run's time (a large file and dense outputs: each rewrite costs O(file size)) are
+    // rows batched, the next rewrite waiting until 10x the last one's duration has passed.
     auto last_write = std::chrono::steady_clock::now() - std::chrono::hours(1);
+    std::chrono::steady_clock::duration write_cost{};
     const auto flush = [&](bool now) { // under `mutex`
         std::size_t complete = rows[0].size();
         for (const auto& r : rows)
@@ -197,10 +202,11 @@ int run_run(const RunOptions& o, const CLI::App& app) {
             csv.add_row(table_rows.back());
         }
         const auto t = std::chrono::steady_clock::now();
-        if (csv.rows() > on_disk && (now || t - last_write >= std::chrono::seconds(1))) {
+        if (csv.rows() > on_disk && (now || t - last_write >= 10 * write_cost)) {
             csv.write(path);
             on_disk = csv.rows();
-            last_write = t;
+            last_write = std::chrono::steady_clock::now();
+            write_cost = last_write - t;
         }
     };
 
