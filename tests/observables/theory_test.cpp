@@ -199,8 +199,9 @@ void check_collision_averages(const HcsTheory& th) {
             const double mean_w = sw / N, se_w = std::sqrt((sw2 / N - mean_w * mean_w) / N);
             const double f_mc =
                 th.density() * B.fraction * sigma * sigma * 2 * std::numbers::pi; // hemisphere
-            if (!th.maxwell())
+            if (!th.maxwell()) {
                 EXPECT_NEAR(x.frequency, f_mc * mean_w, 4 * f_mc * se_w) << a << b;
+            }
             // Ratio estimators <w dE>/<w> with their delta-method standard errors.
             const double scale = std::abs(x.dE_tr) + std::abs(x.dE_rot);
             const auto check = [&](double sum, double sum2, double cross_sum, double theory,
