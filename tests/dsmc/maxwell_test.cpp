@@ -1,6 +1,7 @@
 // The Maxwell kernel (run.kernel = "maxwell", dsmc/run_spec.hpp): the DSMC against the closed linear
 // ODEs of its temperatures (observables/theory.hpp), which are exact for this kernel (no Maxwellian
 // assumption), so any deviation beyond the sampling error is a bug of the kernel or the ODEs.
+#include "run_test_support.hpp"
 #include "roughgas/dsmc/run.hpp"
 #include "roughgas/dsmc/tables.hpp"
 #include "roughgas/observables/theory.hpp"
@@ -18,14 +19,7 @@
 namespace roughgas {
 namespace {
 
-std::size_t column(const RunSpec& spec, const std::string& name) {
-    const auto cols = dsmc_columns(spec);
-    for (std::size_t k = 0; k < cols.size(); ++k)
-        if (cols[k].name == name)
-            return k;
-    ADD_FAILURE() << "no column " << name;
-    return 0;
-}
+using test::column;
 
 using test::MeanErr;
 using test::mean_err;

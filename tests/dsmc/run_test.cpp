@@ -1,5 +1,6 @@
 // run_replica and dsmc_columns (dsmc/run.hpp): determinism, the column contract, the kernel
 // dispatch over all restitution models and mixtures, and cooling through 40 decades of T.
+#include "run_test_support.hpp"
 #include "roughgas/dsmc/run.hpp"
 #include "roughgas/dsmc/tables.hpp"
 
@@ -27,14 +28,7 @@ Rows run(const RunSpec& spec, int replica, ReplicaSummary* summary = nullptr) {
     return rows;
 }
 
-std::size_t column(const RunSpec& spec, const std::string& name) {
-    const auto cols = dsmc_columns(spec);
-    for (std::size_t k = 0; k < cols.size(); ++k)
-        if (cols[k].name == name)
-            return k;
-    ADD_FAILURE() << "no column " << name;
-    return 0;
-}
+using test::column;
 
 RunSpec one_species(PairRestitution model, std::int64_t N = 2000, double end = 4) {
     RunSpec s;

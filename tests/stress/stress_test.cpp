@@ -2,6 +2,7 @@
 // Every test asserts finite, physically admissible output: 0 <= eps^N <= 1, beta in [-1, 1] after the
 // policy, T > 0, theta >= 0, and no NaN or infinity in any row unless undefined by definition
 // (MomentsTable::check, the rule the CSV writer enforces).
+#include "../dsmc/run_test_support.hpp"
 #include "../io/io_test_support.hpp"
 
 #include "roughgas/contact/contact_integrator.hpp"
@@ -40,14 +41,7 @@ Rows run(const RunSpec& spec, int replica = 0, ReplicaSummary* summary = nullptr
     return rows;
 }
 
-std::size_t column(const RunSpec& spec, const std::string& name) {
-    const auto cols = dsmc_columns(spec);
-    for (std::size_t k = 0; k < cols.size(); ++k)
-        if (cols[k].name == name)
-            return k;
-    ADD_FAILURE() << "no column " << name;
-    return 0;
-}
+using test::column;
 
 // T_tr > 0, T_rot >= 0, theta >= 0 in every row (and per species for mixtures).
 void expect_admissible(const RunSpec& s, const Rows& rows) {
