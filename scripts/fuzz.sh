@@ -9,13 +9,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 seconds="${1:-60}"
 "$root/scripts/apt_install.sh" --base clang libclang-rt-14-dev libomp-14-dev
 cd "$root"
-log="$root/build-fuzz/build.log"
 [ -f build-fuzz/CMakeCache.txt ] || cmake --preset fuzz >/dev/null
-if ! cmake --build --preset fuzz >"$log" 2>&1; then
-  grep -E -A5 "error|Error" "$log" | head -60 >&2
-  echo "fuzz: build failed (full log: $log)" >&2
-  exit 1
-fi
+"$root/scripts/cmake_build.sh" fuzz "$root/build-fuzz/build.log" --preset fuzz
 corpus=$(mktemp -d)
 trap 'rm -rf "$corpus"' EXIT
 cp cases/*.toml "$corpus/"

@@ -6,11 +6,6 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/apt_install.sh" --base
 cd "$root"
-log="$root/build-sanitize/build.log"
 [ -f build-sanitize/CMakeCache.txt ] || cmake --preset sanitize >/dev/null
-if ! cmake --build --preset sanitize >"$log" 2>&1; then
-  grep -E -A5 "error|Error" "$log" | head -60 >&2
-  echo "sanitize: build failed (full log: $log)" >&2
-  exit 1
-fi
+"$root/scripts/cmake_build.sh" sanitize "$root/build-sanitize/build.log" --preset sanitize
 ctest --preset sanitize "$@"

@@ -10,9 +10,4 @@ build="${ROUGHGAS_BUILD_DIR:-$root/build}"
 if [ ! -f "$build/CMakeCache.txt" ]; then
   cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 fi
-log="$build/build.log"
-if ! cmake --build "$build" --parallel "$(nproc)" >"$log" 2>&1; then
-  grep -E -A5 "error|Error" "$log" | head -80 >&2
-  echo "setup: build failed (full log: $log)" >&2
-  exit 1
-fi
+"$root/scripts/cmake_build.sh" setup "$build/build.log" "$build" --parallel "$(nproc)"

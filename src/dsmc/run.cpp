@@ -80,22 +80,17 @@ const char* const shear_quantities[] = {"P_xx",      "P_yy",      "P_zz",      "
                                         "eta_star",  "P_xx_star", "P_yy_star", "P_zz_star", "P_xy_star",
                                         "P_xz_star", "P_yz_star", "N1_star",   "N2_star"};
 
-// The Maxwellian collision frequency per grain (as the engine's step length, dsmc/engine.hpp):
-// nu_c = (2/N) sum_ab P_ab pi sigma_ab^2 <g_ab>/V, <g_ab> = sqrt((8/pi)(T_a/m_a + T_b/m_b)).
+// The Maxwellian collision frequency per grain at the temperatures of `m` (as the engine's step
+// length, dsmc/species.hpp).
 double collision_frequency(const std::vector<PairType>& types, const std::vector<SpeciesBlock>& blocks,
                            const Moments& m, double volume) {
-    double nu = 0, N = 0;
-    for (const SpeciesBlock& b : blocks)
-        N += static_cast<double>(b.count);
-    const auto T_over_m = [&](std::size_t s) {
-        const double T = blocks.size() > 1 ? m.species[s].T_tr : m.all.T_tr;
-        return T / blocks[s].grain.mass;
-    };
-    for (const PairType& t : types) {
-        const double mean_g = std::sqrt(8.0 / std::numbers::pi * (T_over_m(t.a) + T_over_m(t.b)));
-        nu += 2.0 * t.pairs * t.pc.cross_section * mean_g / volume / N;
+    double N = 0;
+    std::vector<double> T_over_m;
+    for (std::size_t s = 0; s < blocks.size(); ++s) {
+        N += static_cast<double>(blocks[s].count);
+        T_over_m.push_back((blocks.size() > 1 ? m.species[s].T_tr : m.all.T_tr) / blocks[s].grain.mass);
     }
-    return nu;
+    return maxwellian_collision_frequency(types, T_over_m, volume, N);
 }
 
 // Sums over the collisions since the last output row.

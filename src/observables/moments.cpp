@@ -39,23 +39,28 @@ void add(Sums& s, const Vec3& c, const Vec3& w) {
 
 } // namespace
 
+Vec3 weighted_mean(Vec3Column x, std::span<const SpeciesSlice> species, double SpeciesSlice::*weight) {
+    Vec3 sum{};
+    double total = 0;
+    for (const SpeciesSlice& sp : species) {
+        Vec3 s{};
+        for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i)
+            s += x[i];
+        sum += sp.*weight * s;
+        total += sp.*weight * static_cast<double>(sp.count);
+    }
+    return total > 0 ? (1.0 / total) * sum : Vec3{};
+}
+
 Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesSlice> species) {
     Moments m;
     m.species.resize(species.size());
 
     // Pass 1: centre-of-mass velocity.
-    Vec3 p{};
-    double mass = 0;
     std::size_t n_all = 0;
-    for (const SpeciesSlice& sp : species) {
-        Vec3 ps{};
-        for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i)
-            ps += v[i];
-        p += sp.mass * ps;
-        mass += sp.mass * static_cast<double>(sp.count);
+    for (const SpeciesSlice& sp : species)
         n_all += sp.count;
-    }
-    const Vec3 u = mass > 0 ? (1.0 / mass) * p : Vec3{};
+    const Vec3 u = weighted_mean(v, species, &SpeciesSlice::mass);
     m.mean_velocity = u;
 
     // Pass 2: second moments -> temperatures.

@@ -31,16 +31,7 @@ PressureTensor pressure_tensor(Vec3Column v, std::span<const SpeciesSlice> speci
 }
 
 Vec3 mean_spin(Vec3Column omega, std::span<const SpeciesSlice> species) {
-    Vec3 L{};
-    double J = 0;
-    for (const SpeciesSlice& sp : species) {
-        Vec3 s{};
-        for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i)
-            s += omega[i];
-        L += sp.moment_of_inertia * s;
-        J += sp.moment_of_inertia * static_cast<double>(sp.count);
-    }
-    return J > 0 ? (1.0 / J) * L : Vec3{};
+    return weighted_mean(omega, species, &SpeciesSlice::moment_of_inertia);
 }
 
 double usf_nu(std::span<const UsfSpecies> species, double density, double T) {

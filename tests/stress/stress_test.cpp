@@ -81,8 +81,9 @@ TEST(Stress, ConstantRestitutionAtItsLimits) {
             const RunSpec s = one_species(ConstantRestitution{alpha, beta}, 2000, 30);
             const Rows rows = run(s);
             expect_admissible(s, rows);
-            if (alpha == 1 && beta == 1 - 1e-12) // nearly elastic and perfectly rough: theta -> 1
+            if (alpha == 1 && beta == 1 - 1e-12) { // nearly elastic and perfectly rough: theta -> 1
                 EXPECT_NEAR(rows.back()[column(s, "theta")], 1.0, 0.1);
+            }
         }
 }
 
@@ -194,8 +195,9 @@ TEST(Stress, DissipationFromZeroToHuge) {
             const double e = table.eps_n(pc.w(g));
             EXPECT_GE(e, 0);
             EXPECT_LE(e, 1);
-            if (A == 1e-30)
+            if (A == 1e-30) {
                 EXPECT_NEAR(e, 1.0, 1e-9) << "g = " << g;
+            }
             if (pc.u(g) <= 10) { // the direct integrator's range
                 const ContactResult r = integrate_normal_contact(pc, g);
                 EXPECT_NEAR(r.eps_n, e, 1e-7) << "A = " << A << ", g = " << g;
@@ -220,8 +222,9 @@ TEST(Stress, TinyAsperitiesAndHugeFrictionTakeBoundedTime) {
         std::printf("  z = %g: eps_T = %.6f, %d breaks, %.3f s\n", z, r.eps_t, r.breaks, sec);
         EXPECT_TRUE(std::isfinite(r.eps_t));
         EXPECT_GT(r.eps_t, 0.9); // sliding throughout: eps^T -> 1 - mu (1 + eps^N) g_N/(2 kappa g_T) as z -> 0
-        if (previous_breaks > 0)
+        if (previous_breaks > 0) {
             EXPECT_NEAR(r.breaks / static_cast<double>(previous_breaks), 10.0, 0.5);
+        }
         previous_breaks = r.breaks;
     }
     for (double mk : {1e2, 1e3})

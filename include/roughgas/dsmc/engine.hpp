@@ -233,6 +233,7 @@ class Engine {
         for (std::size_t i = 0; i < n; ++i)
             perm_[i] = static_cast<std::uint32_t>(i);
         mv2_.assign(S, 0.0);
+        T_over_m_.assign(S, 0.0);
         cut2_.assign(cuts_.size(), 0.0);
         count_.assign(K_ * G_, 0);
         max2_.assign(K_ * G_, 0.0);
@@ -852,17 +853,13 @@ class Engine {
             }
         }
 
-        // Mean free time from the Maxwellian collision frequency at the species' temperatures:
-        // nu = (2/N) sum_ab P_ab pi sigma^2 <g_ab>/V, <g_ab> = sqrt((8/pi)(T_a/m_a + T_b/m_b)).
-        double nu = 0;
-        for (const PairType& t : types_) {
-            const auto T_over_m = [&](std::size_t s) {
-                const double N = static_cast<double>(species_[s].count);
-                return N > 0 ? mv2_[s] / (3.0 * N * species_[s].grain.mass) : 0.0; // mv2 = m sum v^2 = 3 N T
-            };
-            const double mean_g = std::sqrt(8.0 / std::numbers::pi * (T_over_m(t.a) + T_over_m(t.b)));
-            nu += 2.0 * t.pairs * t.pc.cross_section * mean_g / volume_ / static_cast<double>(store_.size());
+        // Mean free time from the Maxwellian collision frequency at the species' temperatures.
+        for (std::size_t s = 0; s < S; ++s) {
+            const double N = static_cast<double>(species_[s].count);
+            T_over_m_[s] = N > 0 ? mv2_[s] / (3.0 * N * species_[s].grain.mass) : 0.0; // mv2 = m sum v^2 = 3 N T
         }
+        const double nu =
+            maxwellian_collision_frequency(types_, T_over_m_, volume_, static_cast<double>(store_.size()));
         double rate = 0;
         for (std::size_t q = 0; q < G_; ++q) {
             Group& g = groups_[q];
@@ -910,7 +907,7 @@ class Engine {
     std::vector<std::uint32_t> perm_;
     // Scratch of begin_step: each grain's bucket (2 bytes per grain, K G > 1 only), per-species sums.
     std::vector<std::uint16_t> key_;
-    std::vector<double> mv2_, cut2_, max2_;
+    std::vector<double> mv2_, T_over_m_, cut2_, max2_;
     std::vector<std::uint32_t> count_, ccount_;        // per bucket; per (chunk, bucket)
     std::vector<double> cmax2_, csum2_;                 // per (chunk, bucket); per chunk
     std::vector<Vec3> cps_;                             // per chunk

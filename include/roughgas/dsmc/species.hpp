@@ -4,8 +4,11 @@
 #include "roughgas/collision/pair_constants.hpp"
 #include "roughgas/dsmc/run_spec.hpp"
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <numbers>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -32,5 +35,18 @@ struct PairType {
     double pairs = 0; // distinct candidate pairs: N_a N_b, or N_a (N_a - 1)/2 for a = b
 };
 std::vector<PairType> make_pair_types(const std::vector<SpeciesBlock>& species);
+
+// The Maxwellian collision frequency per grain at the species' temperatures (T_over_m[s] = T_tr,s/m_s):
+// nu = (2/N) sum_ab P_ab pi sigma_ab^2 <g_ab>/V, <g_ab> = sqrt((8/pi)(T_a/m_a + T_b/m_b)). The engine's
+// step length and the shear time step are set in units of 1/nu.
+inline double maxwellian_collision_frequency(const std::vector<PairType>& types, std::span<const double> T_over_m,
+                                             double volume, double particles) {
+    double nu = 0;
+    for (const PairType& t : types) {
+        const double mean_g = std::sqrt(8.0 / std::numbers::pi * (T_over_m[t.a] + T_over_m[t.b]));
+        nu += 2.0 * t.pairs * t.pc.cross_section * mean_g / volume / particles;
+    }
+    return nu;
+}
 
 } // namespace roughgas

@@ -48,6 +48,10 @@ struct Moments {
     Vec3 mean_velocity{}; // u
 };
 
+// The mean of x over all grains weighted by a per-species property (mass: the centre-of-mass velocity;
+// moment_of_inertia: the mean spin); 0 when the weights sum to 0.
+Vec3 weighted_mean(Vec3Column x, std::span<const SpeciesSlice> species, double SpeciesSlice::*weight);
+
 Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesSlice> species);
 
 } // namespace roughgas
