@@ -23,14 +23,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from roughgas_csv import read_csv  # noqa: E402
+from roughgas_csv import read_csv, species_names  # noqa: E402
 
 CUMULANTS = ["a20", "a02", "a11", "A_cw"]
-
-
-def species_names(d):
-    """Species of a mixture, from the columns T_tr.NAME (not the ratios T_tr.A/T_tr.B)."""
-    return [c[len("T_tr."):] for c in d if c.startswith("T_tr.") and "/" not in c and not c.endswith("_err")]
 
 
 def draw(ax, x, d, name, logy, drawn, label=None, **style):

@@ -25,13 +25,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from roughgas_csv import read_csv  # noqa: E402
+from roughgas_csv import read_csv, species_names  # noqa: E402
 
 STRESS = ["P_xx_star", "P_yy_star", "P_zz_star", "P_xy_star"]
-
-
-def species_names(d):
-    return [c[len("T_tr."):] for c in d if c.startswith("T_tr.") and "/" not in c and not c.endswith("_err")]
 
 
 def curve(ax, x, d, name, drawn, logy=False, label=None, **style):

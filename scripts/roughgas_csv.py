@@ -9,3 +9,8 @@ def read_csv(path):
     names = [n.strip() for n in lines[0].split(",")]
     data = np.array([[float(v) for v in line.split(",")] for line in lines[1:] if line.strip()], ndmin=2)
     return {n: data[:, i] for i, n in enumerate(names)}
+
+
+def species_names(d):
+    """Species of a mixture, from the columns T_tr.NAME (not the ratios T_tr.A/T_tr.B)."""
+    return [c[len("T_tr."):] for c in d if c.startswith("T_tr.") and "/" not in c and not c.endswith("_err")]

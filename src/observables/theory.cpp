@@ -129,22 +129,22 @@ void HcsTheory::rates(std::span<const double> T_tr, std::span<const double> T_ro
     }
 }
 
-double HcsTheory::mixture_T_tr(const HcsTemperatures& T) const {
+// sum_s x_s T_s / sum_s x_s: the temperature of the mixture (physics.md §5 over all grains).
+double HcsTheory::fraction_weighted(std::span<const double> T) const {
     double sum = 0, x = 0;
     for (std::size_t s = 0; s < species_.size(); ++s) {
-        sum += species_[s].fraction * T.T_tr[s];
+        sum += species_[s].fraction * T[s];
         x += species_[s].fraction;
     }
     return sum / x;
 }
 
+double HcsTheory::mixture_T_tr(const HcsTemperatures& T) const {
+    return fraction_weighted(T.T_tr);
+}
+
 double HcsTheory::mixture_T_rot(const HcsTemperatures& T) const {
-    double sum = 0, x = 0;
-    for (std::size_t s = 0; s < species_.size(); ++s) {
-        sum += species_[s].fraction * T.T_rot[s];
-        x += species_[s].fraction;
-    }
-    return sum / x;
+    return fraction_weighted(T.T_rot);
 }
 
 // --- the trajectory ---

@@ -119,6 +119,7 @@ class HcsTheory {
     double mixture_T_rot(const HcsTemperatures& T) const;
 
   private:
+    double fraction_weighted(std::span<const double> T) const;
     std::vector<HcsSpecies> species_;
     std::vector<ConstantRestitution> pairs_;
     double density_;
