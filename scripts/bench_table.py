@@ -20,12 +20,14 @@ import csv
 import datetime
 import json
 import os
-import platform
 import re
 import statistics
 import subprocess
 import sys
 import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bench_common import BENCH_ENV, loadavg, machine  # noqa: E402
 
 CASES = [
     ("SmoothConstant", "constant, smooth (alpha 0.9)"),
@@ -36,35 +38,6 @@ CASES = [
     ("Viscoelastic", "viscoelastic, beta 0.5 (ice)"),
     ("Brilliantov", "brilliantov, cached (ice)"),
 ]
-
-
-def loadavg():
-    with open("/proc/loadavg") as f:
-        return float(f.read().split()[0])
-
-
-def machine():
-    model, l2, l3 = "?", "?", "?"
-    try:
-        out = subprocess.run(["lscpu"], capture_output=True, text=True).stdout
-        for line in out.splitlines():
-            k, _, v = line.partition(":")
-            v = v.strip()
-            if k == "Model name":
-                model = v
-            elif k == "L2 cache":
-                l2 = v
-            elif k == "L3 cache":
-                l3 = v
-    except OSError:
-        pass
-    return f"{model}, {os.cpu_count()} CPUs, L2 {l2}, L3 {l3}, {platform.node()}"
-
-
-# Idle OpenMP threads sleep instead of spinning: on a machine shared with other work a spinning
-# thread takes CPU from the thread it waits for (measured: 2 threads 3x slower than 1 at load 4 on
-# 2 cores with libgomp's default spinning; same CPU time per collision as 1 thread when passive).
-BENCH_ENV = {**os.environ, "OMP_WAIT_POLICY": os.environ.get("OMP_WAIT_POLICY", "passive")}
 
 
 def run_bench(binary, flt, reps, out_json):

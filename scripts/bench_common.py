@@ -1,0 +1,68 @@
+"""What the measurement scripts (bench_table.py, bench_accuracy.py, make_reference.py) share: where they
+ran (machine, load average, commit) and how they run `roughgas run` (idle OpenMP threads sleep)."""
+import os
+import platform
+import re
+import resource
+import subprocess
+import time
+
+# Idle OpenMP threads sleep instead of spinning: on a machine shared with other work a spinning
+# thread takes CPU from the thread it waits for (measured: 2 threads 3x slower than 1 at load 4 on
+# 2 cores with libgomp's default spinning; same CPU time per collision as 1 thread when passive).
+BENCH_ENV = {**os.environ, "OMP_WAIT_POLICY": os.environ.get("OMP_WAIT_POLICY", "passive")}
+
+
+def loadavg():
+    """The 1-minute load average (/proc/loadavg)."""
+    with open("/proc/loadavg") as f:
+        return float(f.read().split()[0])
+
+
+def machine():
+    model, l2, l3 = "?", "?", "?"
+    try:
+        out = subprocess.run(["lscpu"], capture_output=True, text=True).stdout
+        for line in out.splitlines():
+            k, _, v = line.partition(":")
+            v = v.strip()
+            if k == "Model name":
+                model = v
+            elif k == "L2 cache":
+                l2 = v
+            elif k == "L3 cache":
+                l3 = v
+    except OSError:
+        pass
+    return f"{model}, {os.cpu_count()} CPUs, L2 {l2}, L3 {l3}, {platform.node()}"
+
+
+def commit():
+    """The checkout's commit, with '+changes' when the work tree differs from it."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    try:
+        head = subprocess.run(["git", "-C", here, "rev-parse", "HEAD"], capture_output=True, text=True,
+                              check=True).stdout.strip()
+        dirty = subprocess.run(["git", "-C", here, "status", "--porcelain", "--untracked-files=no"],
+                               capture_output=True, text=True, check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+    return head + ("+changes" if dirty else "")
+
+
+def run_roughgas(roughgas, case, out, sets=(), threads=1):
+    """`roughgas run CASE --out OUT --force --quiet --threads T --set S...`; returns a dict with the
+    CLI's own wall time of the collisions ("collisions in ... s"), the CPU time of the whole process
+    (tables included), the wall time of the whole process, and the load average before and after."""
+    cmd = [roughgas, "run", case, "--out", out, "--force", "--quiet", "--threads", str(threads)]
+    for s in sets:
+        cmd += ["--set", s]
+    load0, usage0, wall0 = loadavg(), resource.getrusage(resource.RUSAGE_CHILDREN), time.monotonic()
+    r = subprocess.run(cmd, capture_output=True, text=True, env=BENCH_ENV)
+    wall, usage1, load1 = time.monotonic() - wall0, resource.getrusage(resource.RUSAGE_CHILDREN), loadavg()
+    if r.returncode != 0:
+        raise RuntimeError(f"{' '.join(cmd)}: exit {r.returncode}\n{r.stderr}")
+    m = re.search(r"collisions in ([0-9.eE+-]+) s", r.stdout)
+    cpu = (usage1.ru_utime + usage1.ru_stime) - (usage0.ru_utime + usage0.ru_stime)
+    return {"seconds": float(m.group(1)), "cpu_seconds": cpu, "process_seconds": wall, "load_before": load0,
+            "load_after": load1, "stdout": r.stdout}
