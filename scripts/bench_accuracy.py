@@ -1,40 +1,62 @@
 #!/usr/bin/env python3
-"""Work-precision diagram of the DSMC (issue 5 item 4, first part): wall time against error.
+"""Work-precision diagram of the DSMC (issue 5 item 4): wall time against error.
 
     scripts/python3 scripts/bench_accuracy.py [--build build] [--out out/accuracy] [--quick]
+                                              [--panels maxwell,hcs,restitution,shear]
 
-Reference with a known answer: the inelastic rough Maxwell model (run.kernel = "maxwell"), whose
-T_tr(t) and T_rot(t) obey closed linear ODEs exactly (README "The Maxwell kernel"); every
-constant-restitution run writes that solution as its theory columns. Each point is one
-`roughgas run` of a rough gas (alpha = 0.8, beta = 0.4, theta(0) = 0.1, 8 collisions per particle,
-8 output rows) with some setting; its error is the rms over the rows and replicas of
-T_tr/T_tr_theory - 1 and T_rot/T_rot_theory - 1, its cost the wall time of the run (the CLI's
-own "collisions in ... s"). Curves: N (the statistical error falls as N^-1/2 at fixed collisions per
-particle), threads 1 and 2, and groups (automatic against 1). The DSMC of the homogeneous gas has
-no time-step error (exact majorant sampling; the step only refreshes bounds: tests/dsmc), so no
-time-step curve here; the time step of uniform shear flow (shear.time_step) and the restitution
-cache against the direct integrator are the next curves to add.
+Each point is one `roughgas run` (shear: several, with other seeds); its cost is the wall time of
+its collisions (the CLI's own "collisions in ... s"; the CSV has the process's CPU time too), its
+error the deviation from a reference with a known answer. One panel per reference:
 
-Writes DIR/accuracy.csv and DIR/accuracy.png and prints the load average with every point.
+maxwell      the inelastic rough Maxwell model (run.kernel = "maxwell"), whose T_tr(t), T_rot(t) obey
+             closed linear ODEs exactly (README "The Maxwell kernel"; the theory columns): a rough
+             gas (alpha = 0.8, beta = 0.4, theta(0) = 0.1) over 8 collisions per particle, 2
+             replicas; error = rms over the rows and replicas of T_tr/T_tr_theory - 1 and
+             T_rot/T_rot_theory - 1. Curves: N, threads 1 and 2, groups automatic against 1.
+hcs          the same gas with hard spheres (tests/data/hcs_rough_reference.toml, to 32 collisions
+             per particle), 2 replicas, against tests/data/hcs_rough_reference.csv (make_reference.py
+             hcs: 400 replicas of N = 1e5, its own error ~2e-4); error = rms over the rows of
+             T_tr/T_tr_ref - 1 and T_rot/T_rot_ref - 1. Curves: N on 1 and 2 threads.
+restitution  viscoelastic ice (cases/hcs_viscoelastic_ice.toml, smooth) and, without --quick,
+             brilliantov ice (cases/hcs_brilliantov.toml) over 4 collisions per particle, 2 replicas:
+             the cached tables against the direct integrator (contact.cache = false). Error = rms of
+             T_tr, T_rot against a cached run with 8x the statistics of the largest point (another
+             seed). Open markers: the tables' own share, the rms of cached/direct - 1 of the same seed
+             (the same random numbers). The tables are built once (contact.cache_file); their build
+             time is printed, not added to the points.
+shear        uniform shear flow (tests/data/usf_rough_reference.toml: alpha = 0.9, beta = 0, a = 1,
+             started steady) for shear.time_step h and N, R runs each over SHEAR_WINDOW collisions per
+             particle of steady rows; error = rms over the runs of P*_xy/P0 - 1, P0 the Richardson
+             extrapolation h -> 0 of tests/data/usf_rough_reference.csv. Prints the bias c2 h^2, the
+             statistical error s/sqrt(N L), where they cross, and the time step that minimises the
+             error at a given cost.
+
+The homogeneous DSMC has no time-step error (exact majorant sampling; run.step only refreshes
+bounds: tests/dsmc), so only the shear panel has a time-step curve.
+
+Writes DIR/accuracy.csv and DIR/accuracy.png and prints the machine and the load average with
+every point.
 """
 import argparse
 import csv
+import datetime
 import os
-import re
-import subprocess
 import sys
 import tempfile
 
+import numpy as np
+
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bench_common import loadavg, machine, run_roughgas  # noqa: E402
+from make_reference import HCS_CASE, HCS_REFERENCE, ROOT, USF_CASE, STEADY_FROM, read_usf_reference, steady  # noqa: E402
 from roughgas_csv import read_csv  # noqa: E402
 
-CASE = """[run]
-particles = {n}
+MAXWELL_CASE = """[run]
+particles = 1000
 end = 8.0
 output_every = 1.0
-replicas = {replicas}
+replicas = 2
 kernel = "maxwell"
-groups = {groups}
 [[species]]
 mass = 1.0
 radius = 0.5
@@ -45,75 +67,227 @@ model = "constant"
 alpha = 0.8
 beta = 0.4
 """
+SHEAR_WINDOW = 40.0  # collisions per particle of steady rows per run (after STEADY_FROM)
+COLUMNS = ["panel", "curve", "N", "replicas", "threads", "groups", "time_step", "runs", "seconds", "cpu_seconds",
+           "rms_error", "bias", "stat_error", "load_before", "load_after"]
 
 
-def loadavg():
-    with open("/proc/loadavg") as f:
-        return float(f.read().split()[0])
+def rms_relative(d, ref, columns):
+    """rms over the rows t > 0 and the columns of d[c]/ref[c] - 1."""
+    rows = d["coll_per_particle"] > 0
+    rel = np.concatenate([d[c][rows] / ref[c][rows] - 1 for c in columns])
+    return float(np.sqrt((rel ** 2).mean()))
 
 
-def point(roughgas, n, replicas, groups, threads):
-    env = {**os.environ, "OMP_WAIT_POLICY": os.environ.get("OMP_WAIT_POLICY", "passive")}
-    with tempfile.TemporaryDirectory() as d:
-        case = os.path.join(d, "case.toml")
-        with open(case, "w") as f:
-            f.write(CASE.format(n=n, replicas=replicas, groups=groups))
-        load0 = loadavg()
-        r = subprocess.run([roughgas, "run", case, "--out", os.path.join(d, "o"), "--quiet", "--threads",
-                            str(threads)], capture_output=True, text=True, env=env, check=True)
-        load1 = loadavg()
-        m = re.search(r"collisions in ([0-9.eE+-]+) s", r.stdout)
-        seconds = float(m.group(1))
-        c = read_csv(os.path.join(d, "o", "moments.csv"))
-    rows = c["t"] > 0
-    e2, k = 0.0, 0
-    for col in ("T_tr", "T_rot"):
-        rel = c[col][rows] / c[col + "_theory"][rows] - 1
-        e2 += float((rel ** 2).sum())
-        k += int(rows.sum())
-    return seconds, (e2 / k) ** 0.5, load0, load1
+class Runner:
+    """Runs points, prints each with the load average, and collects the CSV rows."""
+
+    def __init__(self, build, scratch):
+        self.roughgas = os.path.join(build, "roughgas")
+        self.scratch = scratch
+        self.rows = []
+
+    def run(self, case, sets, threads=1):
+        r = run_roughgas(self.roughgas, case, os.path.join(self.scratch, "o"), sets, threads)
+        return read_csv(os.path.join(self.scratch, "o", "moments.csv")), r
+
+    def add(self, panel, curve, timing, rms_error, **extra):
+        row = {k: "" for k in COLUMNS}
+        row.update(panel=panel, curve=curve, rms_error=rms_error, **extra)
+        for k in ("seconds", "cpu_seconds", "load_before", "load_after"):
+            row[k] = timing[k]
+        self.rows.append(row)
+        print(f"{panel:11s} {curve:34s} N = {row['N']:8d}: {row['seconds']:8.3f} s ({row['cpu_seconds']:7.2f} s CPU), "
+              f"rms error {rms_error:.2e} (load {row['load_before']:.2f} .. {row['load_after']:.2f})", flush=True)
+        return row
+
+
+def maxwell_panel(run, quick):
+    case = os.path.join(run.scratch, "maxwell.toml")
+    with open(case, "w") as f:
+        f.write(MAXWELL_CASE)
+    sizes = [2000, 10000, 100000] if quick else [2000, 10000, 100000, 1000000]
+    for label, groups, threads in [("1 thread, groups auto", 0, 1), ("2 threads, groups auto", 0, 2),
+                                   ("1 thread, 1 group", 1, 1)]:
+        for n in sizes:
+            d, r = run.run(case, [f"run.particles={n}", f"run.groups={groups}"], threads)
+            theory = {c: d[c + "_theory"] for c in ("T_tr", "T_rot")} | {"coll_per_particle": d["coll_per_particle"]}
+            run.add("maxwell", label, r, rms_relative(d, theory, ("T_tr", "T_rot")), N=n, replicas=2,
+                    threads=threads, groups=groups)
+
+
+def hcs_panel(run, quick):
+    ref = read_csv(HCS_REFERENCE)
+    sizes = [2000, 10000, 100000] if quick else [2000, 10000, 100000, 1000000]
+    for threads in (1, 2):
+        for n in sizes:
+            d, r = run.run(HCS_CASE, [f"run.particles={n}", "run.replicas=2", "run.seed=7"], threads)
+            stat = float(np.sqrt(np.mean([(d[c + "_err"][1:] / d[c][1:]) ** 2 for c in ("T_tr", "T_rot")])))
+            run.add("hcs", f"{threads} thread{'s' if threads > 1 else ''}", r, rms_relative(d, ref, ("T_tr", "T_rot")),
+                    N=n, replicas=2, threads=threads, stat_error=stat)
+    rows = ref["coll_per_particle"] > 0
+    own = float(np.sqrt(np.mean([(ref[c + "_err"][rows] / ref[c][rows]) ** 2 for c in ("T_tr", "T_rot")])))
+    print(f"hcs reference's own rms relative error: {own:.2e}")
+    return own
+
+
+RESTITUTION_MODELS = [("viscoelastic", "cases/hcs_viscoelastic_ice.toml"), ("brilliantov", "cases/hcs_brilliantov.toml")]
+
+
+def restitution_panel(run, quick):
+    models = RESTITUTION_MODELS[:1] if quick else RESTITUTION_MODELS
+    cached_sizes = [1000, 4000] if quick else [1000, 4000, 16000, 64000, 256000]
+    direct_sizes = [1000] if quick else [1000, 4000, 16000]
+    ref_n = 8 * cached_sizes[-1] // 4  # 4 replicas: 8x the statistics of the largest point
+    for model, case in models:
+        case = os.path.join(ROOT, case)
+        tables = f"contact.cache_file={os.path.join(run.scratch, model + '.tables')}"
+        build = run.run(case, [tables, "run.particles=1000", "run.end=0.01", "run.output_every=0.01"])[1]
+        common = [tables, "run.end=4", "run.output_every=1", "run.output_spacing=linear"]
+        print(f"restitution {model}: tables built in {build['process_seconds'] - build['seconds']:.1f} s wall, "
+              f"{build['cpu_seconds']:.1f} s CPU (once: contact.cache_file)")
+        ref, _ = run.run(case, common + [f"run.particles={ref_n}", "run.replicas=4", "run.seed=99"])
+        cached = {}
+        for n in cached_sizes:
+            cached[n], r = run.run(case, common + [f"run.particles={n}", "run.replicas=2"])
+            run.add("restitution", f"{model}, cached", r, rms_relative(cached[n], ref, ("T_tr", "T_rot")), N=n,
+                    replicas=2, threads=1)
+        for n in direct_sizes:
+            d, r = run.run(case, common + [f"run.particles={n}", "run.replicas=2", "contact.cache=false"])
+            run.add("restitution", f"{model}, direct", r, rms_relative(d, ref, ("T_tr", "T_rot")), N=n, replicas=2,
+                    threads=1)
+            run.add("restitution", f"{model}, |cached - direct|, same seed", r,
+                    rms_relative(cached[n], d, ("T_tr", "T_rot")), N=n, replicas=2, threads=1)
+
+
+def shear_panel(run, quick):
+    p0, p0_err, c2, c4 = read_usf_reference()
+    print(f"shear reference: P0 = {p0:.6f} +- {p0_err:.6f}, c2 = {c2:.5f}, c4 = {c4:.5f}")
+    steps = [1.0, 0.25] if quick else [1.0, 0.5, 0.25, 0.125, 0.0625]
+    sizes = [2000, 10000] if quick else [10000, 100000, 1000000]
+    window = 20.0 if quick else SHEAR_WINDOW
+    for h in steps:
+        for n in sizes:
+            runs = 2 if quick or n >= 1000000 else 4
+            p, err, timing = [], [], []
+            for seed in range(1, runs + 1):
+                d, r = run.run(USF_CASE, [f"run.particles={n}", "run.replicas=1", f"run.seed={seed}",
+                                          f"run.end={STEADY_FROM + window}", f"shear.time_step={h}"])
+                m, e = steady(d, "P_xy_star")
+                p.append(m)
+                err.append(e)
+                timing.append(r)
+            rel = np.array(p) / p0 - 1
+            mean_timing = {k: float(np.mean([t[k] for t in timing])) for k in ("seconds", "cpu_seconds")}
+            mean_timing.update(load_before=timing[0]["load_before"], load_after=timing[-1]["load_after"])
+            run.add("shear", f"h = {h:g}", mean_timing, float(np.sqrt((rel ** 2).mean())), N=n, replicas=1,
+                    threads=1, time_step=h, runs=runs, bias=float(rel.mean()), stat_error=float(np.mean(err) / abs(p0)))
+    return crossover(run.rows, p0, c2, c4, window)
+
+
+def crossover(rows, p0, c2, c4, window):
+    """The time-step bias against the statistical error: where they cross, and the time step that
+    minimises the error at a given CPU time (printed; returned for the plot)."""
+    pts = [r for r in rows if r["panel"] == "shear"]
+    n_l = np.array([r["N"] * window for r in pts], dtype=float)
+    s = float(np.median([r["stat_error"] for r in pts] * np.sqrt(n_l)))  # sigma_rel = s/sqrt(N L)
+    # CPU time per collision = a + b/h (the run's collisions: N (STEADY_FROM + window)/2)
+    h = np.array([r["time_step"] for r in pts])
+    per = np.array([r["cpu_seconds"] / (r["N"] * (STEADY_FROM + window) / 2) for r in pts])
+    big = np.array([r["N"] >= 100000 for r in pts]) if any(r["N"] >= 100000 for r in pts) else np.ones(len(pts), bool)
+    (a, b), *_ = np.linalg.lstsq(np.stack([np.ones(big.sum()), 1 / h[big]], axis=1), per[big], rcond=None)
+
+    def bias(x):
+        return abs((c2 * x ** 2 + c4 * x ** 4) / p0)
+
+    print(f"\nshear crossover: statistical error {s:.3g}/sqrt(N L) (L = collisions per particle averaged over), "
+          f"time-step bias |c2 h^2 + c4 h^4|/|P0| = {abs(c2 / p0):.4f} h^2 (at h = 0.2: {bias(0.2):.2e}); "
+          f"CPU per collision {a * 1e9:.0f} ns + {b * 1e9:.1f} ns/h")
+    print("N L (particle-collisions averaged) | statistical error | h where bias = statistical error | "
+          "h minimising the error at that cost | error there / error at h = 0.2")
+    grid = np.linspace(0.01, 1.0, 991)
+    for nl in (1e6, 1e7, 1e8, 1e9):
+        sig = s / np.sqrt(nl)
+        h_x = grid[np.argmin(abs(np.array([bias(x) for x in grid]) - sig))]
+        cpu = nl / 2 * (a + b / 0.2)  # the cost of N L at h = 0.2
+        err = np.sqrt(s ** 2 * (a + b / grid) / (2 * cpu) + np.array([bias(x) for x in grid]) ** 2)
+        best = grid[np.argmin(err)]
+        ref = np.sqrt(sig ** 2 + bias(0.2) ** 2)
+        print(f"{nl:.0e} | {sig:.2e} | {h_x:.3f} | {best:.3f} ({cpu:.3g} s CPU) | {err.min() / ref:.3f}")
+    return {"s": s, "a": a, "b": b, "bias": bias}
+
+
+def plot(rows, out, hcs_own, shear_model, title):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    panels = [p for p in ("maxwell", "hcs", "restitution", "shear") if any(r["panel"] == p for r in rows)]
+    titles = {"maxwell": "Maxwell kernel vs exact ODEs (8 coll./particle)",
+              "hcs": "hard spheres vs tests/data reference (32 coll./particle)",
+              "restitution": "restitution tables vs direct integrator (4 coll./particle)",
+              "shear": "shear flow: steady P*_xy vs Richardson h -> 0"}
+    ylabels = {"maxwell": "rms rel. error of T_tr, T_rot", "hcs": "rms rel. error of T_tr, T_rot",
+               "restitution": "rms rel. error of T_tr, T_rot", "shear": "rms rel. error of P*_xy"}
+    cols = 2 if len(panels) > 1 else 1
+    nrows = (len(panels) + cols - 1) // cols
+    fig, axes = plt.subplots(nrows, cols, figsize=(6 * cols, 4.6 * nrows), squeeze=False)
+    for ax, panel in zip(axes.flat, panels):
+        pts = [r for r in rows if r["panel"] == panel]
+        for curve in dict.fromkeys(r["curve"] for r in pts):
+            c = [r for r in pts if r["curve"] == curve]
+            paired = "same seed" in curve
+            ax.loglog([r["seconds"] for r in c], [r["rms_error"] for r in c], "s--" if paired else "o-",
+                      mfc="none" if paired else None, label=curve)
+            for r in c:
+                ax.annotate(f"{r['N']:.0e}", (r["seconds"], r["rms_error"]), fontsize=6)
+        if panel == "hcs" and hcs_own:
+            ax.axhline(hcs_own, color="gray", ls=":", label="reference's own error")
+        if panel == "shear" and shear_model:
+            for i, h in enumerate(dict.fromkeys(r["time_step"] for r in pts)):
+                ax.axhline(shear_model["bias"](h), color=f"C{i}", ls=":", lw=0.8)
+        ax.set_xlabel("wall time of the collisions [s]")
+        ax.set_ylabel(ylabels[panel])
+        ax.set_title(titles[panel], fontsize=9)
+        ax.legend(fontsize=7)
+    for ax in list(axes.flat)[len(panels):]:
+        ax.axis("off")
+    fig.suptitle(title, fontsize=8)
+    fig.tight_layout()
+    tmp = os.path.join(out, ".accuracy.png.tmp")
+    fig.savefig(tmp, dpi=110, format="png")
+    os.replace(tmp, os.path.join(out, "accuracy.png"))
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--build", default="build")
     ap.add_argument("--out", default="out/accuracy")
-    ap.add_argument("--quick", action="store_true", help="N up to 1e5 (checks the script)")
+    ap.add_argument("--quick", action="store_true", help="small N only (checks the script; ~20 s)")
+    ap.add_argument("--panels", default="maxwell,hcs,restitution,shear")
     a = ap.parse_args()
-    roughgas = os.path.join(a.build, "roughgas")
+    panels = a.panels.split(",")
     os.makedirs(a.out, exist_ok=True)
-    sizes = [2000, 10000, 100000] if a.quick else [2000, 10000, 100000, 1000000]
-    curves = [("1 thread, groups auto", 0, 1), ("2 threads, groups auto", 0, 2), ("1 thread, 1 group", 1, 1)]
-    rows = []
-    for label, groups, threads in curves:
-        for n in sizes:
-            seconds, err, l0, l1 = point(roughgas, n, 2, groups, threads)
-            print(f"{label:24s} N = {n:8d}: {seconds:8.3f} s, rms error {err:.2e} (load {l0:.2f} .. {l1:.2f})")
-            rows.append({"curve": label, "N": n, "groups": groups, "threads": threads, "seconds": seconds,
-                         "rms_error": err, "load_before": l0, "load_after": l1})
+    title = (f"{datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M} UTC, {machine()}, "
+             f"load {loadavg():.2f} at the start{', --quick' if a.quick else ''}")
+    print(title, flush=True)
+    hcs_own, shear_model = None, None
+    with tempfile.TemporaryDirectory() as scratch:
+        run = Runner(a.build, scratch)
+        if "maxwell" in panels:
+            maxwell_panel(run, a.quick)
+        if "hcs" in panels:
+            hcs_own = hcs_panel(run, a.quick)
+        if "restitution" in panels:
+            restitution_panel(run, a.quick)
+        if "shear" in panels:
+            shear_model = shear_panel(run, a.quick)
     with open(os.path.join(a.out, "accuracy.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w = csv.DictWriter(f, fieldnames=COLUMNS)
         w.writeheader()
-        w.writerows(rows)
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, ax = plt.subplots(figsize=(6, 4.5))
-    for label, _, _ in curves:
-        pts = [r for r in rows if r["curve"] == label]
-        ax.loglog([p["seconds"] for p in pts], [p["rms_error"] for p in pts], "o-", label=label)
-        for p in pts:
-            ax.annotate(f"N={p['N']:.0e}", (p["seconds"], p["rms_error"]), fontsize=7)
-    ax.set_xlabel("wall time [s]")
-    ax.set_ylabel("rms relative error of T_tr, T_rot (Maxwell model, exact ODEs)")
-    ax.set_title("work-precision, 8 collisions per particle, 2 replicas")
-    ax.legend()
-    fig.tight_layout()
-    tmp = os.path.join(a.out, ".accuracy.png.tmp")
-    fig.savefig(tmp, dpi=120, format="png")
-    os.replace(tmp, os.path.join(a.out, "accuracy.png"))
+        w.writerows(run.rows)
+    plot(run.rows, a.out, hcs_own, shear_model, title)
     print(f"wrote {a.out}/accuracy.csv and accuracy.png")
 
 

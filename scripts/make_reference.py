@@ -149,9 +149,9 @@ def theory_deviation_lines(d):
     return lines
 
 
-def provenance(command, seconds, extra):
+def provenance(command, revision, seconds, extra):
     return [f"command: {command}",
-            f"commit: {commit()}",
+            f"commit: {revision}",
             f"date: {datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M} UTC",
             f"machine: {machine()}",
             f"time: {seconds['process_seconds']:.0f} s wall, {seconds['cpu_seconds']:.0f} s CPU; load average "
@@ -176,11 +176,12 @@ def make_hcs(a):
     command = (f"roughgas run {os.path.relpath(HCS_CASE, ROOT)} {' '.join('--set ' + s for s in sets)} "
                f"--threads {a.threads} (scripts/make_reference.py hcs)")
     print(f"{command}: {n * k * run['end'] / 2:.3g} collisions, load {loadavg():.2f}", flush=True)
+    revision = commit()
     with tempfile.TemporaryDirectory() as d:
         r = run_roughgas(roughgas, os.path.relpath(HCS_CASE), os.path.join(d, "o"), sets, a.threads)
         body = os.path.join(d, "o", "moments.csv")
         dev = theory_deviation_lines(read_csv(body))
-        header = provenance(command, r, [
+        header = provenance(command, revision, r, [
             f"statistics: {k} replicas of N = {n} (seed {REFERENCE_SEED}), {STATS_FACTOR * STATS_FACTOR}x the "
             f"{run['replicas']} replicas of N = {run['particles']} (seed {run['seed']}) of the check; X_err = "
             "standard error of the mean over the replicas",
@@ -221,9 +222,10 @@ def read_usf_reference(path=USF_REFERENCE):
 
 
 def make_usf(a):
-    roughgas = os.path.join(a.build, "roughgas")
+    roughgas = os.path.abspath(os.path.join(a.build, "roughgas"))
     run = case_run_keys(USF_CASE)
-    rows, header, total = [], [], {"process_seconds": 0, "cpu_seconds": 0, "load_before": loadavg()}
+    rows, total = [], {"process_seconds": 0, "cpu_seconds": 0, "load_before": loadavg()}
+    revision = commit()
     with tempfile.TemporaryDirectory() as d:
         for h in USF_STEPS:
             r = run_roughgas(roughgas, USF_CASE, os.path.join(d, "o"), [f"shear.time_step={h}"], a.threads)
@@ -242,7 +244,7 @@ def make_usf(a):
                                       [r["P_xy_star_err"] for r in rows])
     command = (f"roughgas run {os.path.relpath(USF_CASE, ROOT)} --set shear.time_step=H --threads {a.threads}, "
                f"H = {', '.join(f'{h:g}' for h in USF_STEPS)} (scripts/make_reference.py usf)")
-    header = provenance(command, total, [
+    header = provenance(command, revision, total, [
         f"statistics: {run['replicas']} replicas of N = {run['particles']} (seed {run['seed']}) per time step, "
         f"steady averages over the rows from {STEADY_FROM:g} to {run['end']:g} collisions per particle, errors "
         f"from {BATCHES} batch means",
