@@ -169,19 +169,19 @@ def shear_panel(run, quick):
     for h in steps:
         for n in sizes:
             runs = 2 if quick or n >= 1000000 else 4
-            p, err, timing = [], [], []
+            p, timing = [], []
             for seed in range(1, runs + 1):
                 d, r = run.run(USF_CASE, [f"run.particles={n}", "run.replicas=1", f"run.seed={seed}",
                                           f"run.end={STEADY_FROM + window}", f"shear.time_step={h}"])
-                m, e = steady(d, "P_xy_star")
-                p.append(m)
-                err.append(e)
+                p.append(steady(d, "P_xy_star")[0])
                 timing.append(r)
             rel = np.array(p) / p0 - 1
             mean_timing = {k: float(np.mean([t[k] for t in timing])) for k in ("seconds", "cpu_seconds")}
             mean_timing.update(load_before=timing[0]["load_before"], load_after=timing[-1]["load_after"])
+            # per point: the rms error of one run, the mean deviation (bias), and the statistical error
+            # of one run from the spread of the runs (independent seeds)
             run.add("shear", f"h = {h:g}", mean_timing, float(np.sqrt((rel ** 2).mean())), N=n, replicas=1,
-                    threads=1, time_step=h, runs=runs, bias=float(rel.mean()), stat_error=float(np.mean(err) / abs(p0)))
+                    threads=1, time_step=h, runs=runs, bias=float(rel.mean()), stat_error=float(rel.std(ddof=1)))
     return crossover(run.rows, p0, c2, c4, window)
 
 
@@ -190,7 +190,8 @@ def crossover(rows, p0, c2, c4, window):
     minimises the error at a given CPU time (printed; returned for the plot)."""
     pts = [r for r in rows if r["panel"] == "shear"]
     n_l = np.array([r["N"] * window for r in pts], dtype=float)
-    s = float(np.median([r["stat_error"] for r in pts] * np.sqrt(n_l)))  # sigma_rel = s/sqrt(N L)
+    # sigma_rel = s/sqrt(N L): s^2 pooled over the points' run-to-run variances
+    s = float(np.sqrt(np.mean(np.array([r["stat_error"] for r in pts]) ** 2 * n_l)))
     # CPU time per collision = a + b/h (the run's collisions: N (STEADY_FROM + window)/2)
     h = np.array([r["time_step"] for r in pts])
     per = np.array([r["cpu_seconds"] / (r["N"] * (STEADY_FROM + window) / 2) for r in pts])
