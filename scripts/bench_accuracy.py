@@ -79,6 +79,13 @@ def rms_relative(d, ref, columns):
     return float(np.sqrt((rel ** 2).mean()))
 
 
+def own_error(d):
+    """A run's own statistical error: rms over the rows t > 0 of T_tr_err/T_tr and T_rot_err/T_rot (the
+    standard errors of the replica mean)."""
+    rows = d["coll_per_particle"] > 0
+    return float(np.sqrt(np.mean([(d[c + "_err"][rows] / d[c][rows]) ** 2 for c in ("T_tr", "T_rot")])))
+
+
 class Runner:
     """Runs points, prints each with the load average, and collects the CSV rows."""
 
@@ -113,7 +120,7 @@ def maxwell_panel(run, quick):
             d, r = run.run(case, [f"run.particles={n}", f"run.groups={groups}"], threads)
             theory = {c: d[c + "_theory"] for c in ("T_tr", "T_rot")} | {"coll_per_particle": d["coll_per_particle"]}
             run.add("maxwell", label, r, rms_relative(d, theory, ("T_tr", "T_rot")), N=n, replicas=2,
-                    threads=threads, groups=groups)
+                    threads=threads, groups=groups, stat_error=own_error(d))
 
 
 def hcs_panel(run, quick):
@@ -122,11 +129,9 @@ def hcs_panel(run, quick):
     for threads in (1, 2):
         for n in sizes:
             d, r = run.run(HCS_CASE, [f"run.particles={n}", "run.replicas=2", "run.seed=7"], threads)
-            stat = float(np.sqrt(np.mean([(d[c + "_err"][1:] / d[c][1:]) ** 2 for c in ("T_tr", "T_rot")])))
             run.add("hcs", f"{threads} thread{'s' if threads > 1 else ''}", r, rms_relative(d, ref, ("T_tr", "T_rot")),
-                    N=n, replicas=2, threads=threads, stat_error=stat)
-    rows = ref["coll_per_particle"] > 0
-    own = float(np.sqrt(np.mean([(ref[c + "_err"][rows] / ref[c][rows]) ** 2 for c in ("T_tr", "T_rot")])))
+                    N=n, replicas=2, threads=threads, stat_error=own_error(d))
+    own = own_error(ref)
     print(f"hcs reference's own rms relative error: {own:.2e}")
     return own
 
