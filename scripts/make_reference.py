@@ -205,8 +205,8 @@ def batch_mean(x, batches=BATCHES):
     return float(x.mean()), float(b.std(ddof=1) / np.sqrt(batches))
 
 
-def steady(d, column):
-    return batch_mean(d[column][d["coll_per_particle"] >= STEADY_FROM])
+def steady(d, column, start=STEADY_FROM):
+    return batch_mean(d[column][d["coll_per_particle"] >= start])
 
 
 def richardson(h, p, err):
@@ -220,10 +220,15 @@ def richardson(h, p, err):
 
 
 def read_usf_reference(path=USF_REFERENCE):
-    """(P0, its error, c2, c4) of the Richardson fit over the rows of the shear reference."""
+    """The Richardson fit over the rows of the shear reference: P0, its error, c2, c4; and s, the
+    statistical error of a long steady average of P*_xy over N particles and L collisions per particle
+    being s/sqrt(N L) (relative; s pooled over the rows' batch-means errors)."""
     d = read_csv(path)
     coef, err, _, _ = richardson(d["time_step"], d["P_xy_star"], d["P_xy_star_err"])
-    return coef[0], err[0], coef[1], coef[2]
+    run = case_run_keys(USF_CASE)
+    n_l = run["particles"] * run["replicas"] * (run["end"] - STEADY_FROM)
+    s = float(np.sqrt(np.mean((d["P_xy_star_err"] / d["P_xy_star"]) ** 2) * n_l))
+    return {"P0": coef[0], "P0_err": err[0], "c2": coef[1], "c4": coef[2], "s": s}
 
 
 def make_usf(a):
