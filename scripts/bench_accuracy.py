@@ -6,17 +6,21 @@
 
 Each point is one `roughgas run` (shear: several, with other seeds); its cost is the wall time of
 its collisions (the CLI's own "collisions in ... s"; the CSV has the process's CPU time too), its
-error the deviation from a reference with a known answer. One panel per reference:
+error the deviation from a reference with a known answer. Every N has its own seed, so the points
+of a curve are independent (the thread and group curves share them: same seed, same trajectory
+but for the groups). One panel per reference:
 
 maxwell      the inelastic rough Maxwell model (run.kernel = "maxwell"), whose T_tr(t), T_rot(t) obey
              closed linear ODEs exactly (README "The Maxwell kernel"; the theory columns): a rough
-             gas (alpha = 0.8, beta = 0.4, theta(0) = 0.1) over 8 collisions per particle, 2
-             replicas; error = rms over the rows and replicas of T_tr/T_tr_theory - 1 and
-             T_rot/T_rot_theory - 1. Curves: N, threads 1 and 2, groups automatic against 1.
+             gas (alpha = 0.8, beta = 0.4, theta(0) = 0.1) over 8 collisions per particle, 4
+             replicas; error = rms over the rows of T_tr/T_tr_theory - 1 and T_rot/T_rot_theory - 1
+             of the replica mean. Curves: N, threads 1 and 2, groups automatic against 1.
 hcs          the same gas with hard spheres (tests/data/hcs_rough_reference.toml, to 32 collisions
-             per particle), 2 replicas, against tests/data/hcs_rough_reference.csv (make_reference.py
+             per particle), 4 replicas, against tests/data/hcs_rough_reference.csv (make_reference.py
              hcs: 400 replicas of N = 1e5, its own error ~2e-4); error = rms over the rows of
              T_tr/T_tr_ref - 1 and T_rot/T_rot_ref - 1. Curves: N on 1 and 2 threads.
+             Both panels also draw each run's own standard error (rms of X_err/X over the rows): a
+             deviation that tracks it is statistics, one above it a bias.
 restitution  viscoelastic ice (cases/hcs_viscoelastic_ice.toml, smooth) and, without --quick,
              brilliantov ice (cases/hcs_brilliantov.toml) over 4 collisions per particle, 2 replicas:
              the cached tables against the direct integrator (contact.cache = false). Error = rms of
@@ -29,7 +33,7 @@ shear        uniform shear flow (tests/data/usf_rough_reference.toml: alpha = 0.
              SHEAR_START collisions per particle; error = rms over the runs of P*_xy/P0 - 1, P0 the Richardson
              extrapolation h -> 0 of tests/data/usf_rough_reference.csv. Prints the bias c2 h^2, the
              statistical error s/sqrt(N L), where they cross, and the time step that minimises the
-             error at a given cost.
+             error at a given cost; draws the bias (dotted) and the model sqrt(bias^2 + s^2/(N L)) (x).
 
 The homogeneous DSMC has no time-step error (exact majorant sampling; run.step only refreshes
 bounds: tests/dsmc), so only the shear panel has a time-step curve.
@@ -55,7 +59,7 @@ MAXWELL_CASE = """[run]
 particles = 1000
 end = 8.0
 output_every = 1.0
-replicas = 2
+replicas = 4
 kernel = "maxwell"
 [[species]]
 mass = 1.0
@@ -122,9 +126,9 @@ def maxwell_panel(run, quick):
     for label, groups, threads in [("1 thread, groups auto", 0, 1), ("2 threads, groups auto", 0, 2),
                                    ("1 thread, 1 group", 1, 1)]:
         for n in sizes:
-            d, r = run.run(case, [f"run.particles={n}", f"run.groups={groups}"], threads)
+            d, r = run.run(case, [f"run.particles={n}", f"run.groups={groups}", f"run.seed={n + 7}"], threads)
             theory = {c: d[c + "_theory"] for c in ("T_tr", "T_rot")} | {"coll_per_particle": d["coll_per_particle"]}
-            run.add("maxwell", label, r, rms_relative(d, theory, ("T_tr", "T_rot")), N=n, replicas=2,
+            run.add("maxwell", label, r, rms_relative(d, theory, ("T_tr", "T_rot")), N=n, replicas=4,
                     threads=threads, groups=groups, stat_error=own_error(d))
 
 
@@ -133,9 +137,9 @@ def hcs_panel(run, quick):
     sizes = [2000, 10000, 100000] if quick else [2000, 10000, 100000, 1000000]
     for threads in (1, 2):
         for n in sizes:
-            d, r = run.run(HCS_CASE, [f"run.particles={n}", "run.replicas=2", "run.seed=7"], threads)
+            d, r = run.run(HCS_CASE, [f"run.particles={n}", "run.replicas=4", f"run.seed={n + 7}"], threads)
             run.add("hcs", f"{threads} thread{'s' if threads > 1 else ''}", r, rms_relative(d, ref, ("T_tr", "T_rot")),
-                    N=n, replicas=2, threads=threads, stat_error=own_error(d))
+                    N=n, replicas=4, threads=threads, stat_error=own_error(d))
     own = own_error(ref)
     print(f"hcs reference's own rms relative error: {own:.2e}")
     return own
@@ -159,11 +163,12 @@ def restitution_panel(run, quick):
         ref, _ = run.run(case, common + [f"run.particles={ref_n}", "run.replicas=4", "run.seed=99"])
         cached = {}
         for n in cached_sizes:
-            cached[n], r = run.run(case, common + [f"run.particles={n}", "run.replicas=2"])
+            cached[n], r = run.run(case, common + [f"run.particles={n}", "run.replicas=2", f"run.seed={n + 1}"])
             run.add("restitution", f"{model}, cached", r, rms_relative(cached[n], ref, ("T_tr", "T_rot")), N=n,
                     replicas=2, threads=1)
         for n in direct_sizes:
-            d, r = run.run(case, common + [f"run.particles={n}", "run.replicas=2", "contact.cache=false"])
+            d, r = run.run(case, common + [f"run.particles={n}", "run.replicas=2", f"run.seed={n + 1}",
+                                           "contact.cache=false"])
             run.add("restitution", f"{model}, direct", r, rms_relative(d, ref, ("T_tr", "T_rot")), N=n, replicas=2,
                     threads=1)
             run.add("restitution", f"{model}, |cached - direct|, same seed", r,
@@ -180,7 +185,7 @@ def shear_panel(run, quick):
         for n in sizes:
             runs = 2 if quick else 3 if n >= 1000000 else 4
             p, timing = [], []
-            for seed in range(1, runs + 1):
+            for seed in range(n + 1, n + runs + 1):  # other seeds for every N: independent points
                 d, r = run.run(USF_CASE, [f"run.particles={n}", "run.replicas=1", f"run.seed={seed}",
                                           f"run.end={SHEAR_START + window}", f"shear.time_step={h}"])
                 p.append(steady(d, "P_xy_star", SHEAR_START)[0])
@@ -233,7 +238,7 @@ def crossover(rows, ref, window):
         at = {x: err[np.argmin(abs(grid - x))] for x in (0.1, 0.2)}
         print(f"{nl:.0e} | {sig:.1e} | {h_x:.3f} | {cpu:.3g} | {grid[np.argmin(err)]:.3f} | {err.min():.1e}, "
               f"{at[0.1]:.1e}, {at[0.2]:.1e}")
-    return {"s": s, "a": a, "b": b, "bias": bias}
+    return {"s": s, "s_window": s_window, "window": window, "a": a, "b": b, "bias": bias}
 
 
 def markdown(rows):
@@ -265,18 +270,24 @@ def plot(rows, out, hcs_own, shear_model, title):
     fig, axes = plt.subplots(nrows, cols, figsize=(6 * cols, 4.6 * nrows), squeeze=False)
     for ax, panel in zip(axes.flat, panels):
         pts = [r for r in rows if r["panel"] == panel]
-        for curve in dict.fromkeys(r["curve"] for r in pts):
+        for i, curve in enumerate(dict.fromkeys(r["curve"] for r in pts)):
             c = [r for r in pts if r["curve"] == curve]
             paired = "same seed" in curve
-            ax.loglog([r["seconds"] for r in c], [r["rms_error"] for r in c], "s--" if paired else "o-",
+            x = [r["seconds"] for r in c]
+            ax.loglog(x, [r["rms_error"] for r in c], "s--" if paired else "o-", color=f"C{i}",
                       mfc="none" if paired else None, label=curve)
             for r in c:
                 ax.annotate(f"{r['N']:.0e}", (r["seconds"], r["rms_error"]), fontsize=6)
-        if panel == "hcs" and hcs_own:
-            ax.axhline(hcs_own, color="gray", ls=":", label="reference's own error")
-        if panel == "shear" and shear_model:
-            for i, h in enumerate(dict.fromkeys(r["time_step"] for r in pts)):
+            if panel in ("maxwell", "hcs"):
+                ax.loglog(x, [r["stat_error"] for r in c], ":", color=f"C{i}", lw=1,
+                          label="its own standard error" if i == 0 else None)
+            if panel == "shear" and shear_model:
+                h = c[0]["time_step"]
                 ax.axhline(shear_model["bias"](h), color=f"C{i}", ls=":", lw=0.8)
+                ax.loglog(x, [np.hypot(shear_model["bias"](h), shear_model["s_window"] / np.sqrt(r["N"] * shear_model["window"]))
+                              for r in c], "x", color=f"C{i}", label="bias + statistics (model)" if i == 0 else None)
+        if panel == "hcs" and hcs_own:
+            ax.axhline(hcs_own, color="gray", ls="-.", lw=0.8, label="reference's own error")
         ax.set_xlabel("wall time of the collisions [s]")
         ax.set_ylabel(ylabels[panel])
         ax.set_title(titles[panel], fontsize=9)
