@@ -171,7 +171,7 @@ def restitution_panel(run, quick):
                                            "contact.cache=false"])
             run.add("restitution", f"{model}, direct", r, rms_relative(d, ref, ("T_tr", "T_rot")), N=n, replicas=2,
                     threads=1)
-            run.add("restitution", f"{model}, |cached - direct|, same seed", r,
+            run.add("restitution", f"{model}, cached/direct - 1, same seed", r,
                     rms_relative(cached[n], d, ("T_tr", "T_rot")), N=n, replicas=2, threads=1)
 
 
@@ -242,14 +242,19 @@ def crossover(rows, ref, window):
 
 
 def markdown(rows):
-    """The points as the README's table."""
-    lines = ["| panel | curve | N | wall s | CPU s | rms error | own statistical error | load |",
-             "|-------|-------|---|--------|-------|-----------|-----------------------|------|"]
-    for r in rows:
-        stat = f"{r['stat_error']:.1e}" if r["stat_error"] != "" else "-"
-        lines.append(f"| {r['panel']} | {r['curve']} | {r['N']:.0e} | {r['seconds']:.3g} | {r['cpu_seconds']:.3g} | "
-                     f"{r['rms_error']:.1e} | {stat} | {r['load_before']:.1f}, {r['load_after']:.1f} |")
-    return "\n".join(lines)
+    """The points as the README's tables: one per panel, a row per curve, a column per N; each cell
+    "rms error (wall s)"."""
+    out = []
+    for panel in dict.fromkeys(r["panel"] for r in rows):
+        pts = [r for r in rows if r["panel"] == panel]
+        sizes = sorted({r["N"] for r in pts})
+        out += [f"| {panel} | " + " | ".join(f"N = {n:.2g}" for n in sizes) + " |",
+                "|---" * (len(sizes) + 1) + "|"]
+        for curve in dict.fromkeys(r["curve"] for r in pts):
+            cells = {r["N"]: f"{r['rms_error']:.1e} ({r['seconds']:.3g} s)" for r in pts if r["curve"] == curve}
+            out.append(f"| {curve} | " + " | ".join(cells.get(n, "") for n in sizes) + " |")
+        out.append("")
+    return "\n".join(out)
 
 
 def plot(rows, out, hcs_own, shear_model, title):
@@ -277,7 +282,7 @@ def plot(rows, out, hcs_own, shear_model, title):
             ax.loglog(x, [r["rms_error"] for r in c], "s--" if paired else "o-", color=f"C{i}",
                       mfc="none" if paired else None, label=curve)
             for r in c:
-                ax.annotate(f"{r['N']:.0e}", (r["seconds"], r["rms_error"]), fontsize=6)
+                ax.annotate(f"{r['N']:.2g}", (r["seconds"], r["rms_error"]), fontsize=6)
             if panel in ("maxwell", "hcs"):
                 ax.loglog(x, [r["stat_error"] for r in c], ":", color=f"C{i}", lw=1,
                           label="its own standard error" if i == 0 else None)
