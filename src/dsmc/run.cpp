@@ -1,7 +1,9 @@
 // One replica of a homogeneous cooling run: the kernel is chosen once (std::visit over the pairs'
-// restitution models, style.md §2.3) and the loop below only pauses it at the output times.
+// restitution models, style.md §2.3) and the loop below only pauses it at the output times (and
+// saves or restores its state for checkpoints, between chunks of the loop).
 #include "roughgas/dsmc/run.hpp"
 
+#include "roughgas/core/bytes.hpp"
 #include "roughgas/dsmc/engine.hpp"
 #include "roughgas/dsmc/init.hpp"
 #include "roughgas/dsmc/particles.hpp"
@@ -15,6 +17,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -117,11 +120,88 @@ struct Tally {
     }
 };
 
+// drive()'s state besides the engine's, in a checkpoint: where the replica is in its output schedule
+// (the next pause; between two Strang steps of a shear interval, that interval's step length) and
+// what its next row's rates are measured from.
+struct DriveState {
+    std::string kernel; // the specialised loop that saved it: a state of another loop is refused
+    std::uint64_t next_pause = 0;
+    std::optional<double> strang_h;
+    double t_prev = 0;
+    std::int64_t c_prev = 0;
+    Tally tally;
+
+    void save(ByteWriter& w) const {
+        w.str(kernel);
+        w.u64(next_pause);
+        w.put(strang_h.has_value());
+        w.f64(strang_h.value_or(0.0));
+        w.f64(t_prev);
+        w.put(c_prev);
+        w.f64(tally.dE);
+        w.u64(tally.per_type.size());
+        for (std::int64_t x : tally.per_type)
+            w.put(x);
+        w.put(tally.clamped);
+    }
+    void load(ByteReader& r) {
+        kernel = r.str();
+        next_pause = r.u64();
+        const bool mid = r.get<bool>();
+        const double h = r.f64();
+        strang_h = mid ? std::optional(h) : std::nullopt;
+        t_prev = r.f64();
+        c_prev = r.get<std::int64_t>();
+        tally.dE = r.f64();
+        tally.per_type.resize(r.count(sizeof(std::int64_t)));
+        for (std::int64_t& x : tally.per_type)
+            x = r.get<std::int64_t>();
+        tally.clamped = r.get<std::int64_t>();
+    }
+};
+
+template <class Engine>
+void fill_summary(ReplicaSummary* summary, const Engine& engine, const std::string& kernel, std::int64_t clamped,
+                  std::int64_t resumed_at, std::chrono::steady_clock::time_point wall0) {
+    if (!summary)
+        return;
+    const EngineCounters& k = engine.counters();
+    summary->kernel = kernel;
+    summary->groups = static_cast<int>(engine.groups());
+    summary->bytes_per_particle = std::remove_cvref_t<decltype(engine.store())>::bytes_per_particle;
+    summary->memory_per_particle = engine.bytes_per_particle();
+    summary->collisions = k.collisions;
+    summary->resumed_at = resumed_at;
+    summary->candidates = k.candidates;
+    summary->steps = k.steps;
+    summary->bound_raises = k.bound_raises;
+    summary->promotions = k.promotions;
+    summary->beta_clamped = clamped;
+    summary->max_mean_drift = k.max_mean_drift;
+    summary->recentrings = k.recentrings;
+    summary->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+}
+
+// What a replica reports to and is steered by: run_replica's arguments after the replica index.
+struct ReplicaIo {
+    const RowSink& sink;
+    const ProgressSink& progress;
+    ReplicaSummary* summary;
+    const HistogramSink& histograms;
+    const ReplicaCheckpoints* checkpoints;
+};
+
+// Thrown inside drive() once a stop was asked for and the state saved: unwinds the loops.
+struct Stopped {};
+
 template <class Policy, bool Mixture, CollisionKernel Kernel>
-void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
-           int replica, const RowSink& sink, const ProgressSink& progress, ReplicaSummary* summary,
-           const HistogramSink& histograms) {
+ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
+                 int replica, const ReplicaIo& io) {
     using Store = std::conditional_t<Policy::needs_rotation, RoughAoS, SmoothAoS>;
+    const RowSink& sink = io.sink;
+    const ProgressSink& progress = io.progress;
+    const HistogramSink& histograms = io.histograms;
+    const ReplicaCheckpoints* const ckpt = io.checkpoints;
     const auto wall0 = std::chrono::steady_clock::now();
     const std::size_t N = static_cast<std::size_t>(spec.particles);
     const auto rep = static_cast<std::uint64_t>(replica);
@@ -233,7 +313,6 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
         histograms(h);
     };
 
-    emit();
     std::vector<double> outputs = spec.output_times;
     if (outputs.empty())
         outputs.push_back(spec.end);
@@ -256,10 +335,82 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
     std::stable_sort(pauses.begin(), pauses.end(),
                      [](const Pause& a, const Pause& b) { return a.target < b.target; });
     const std::int64_t chunk = std::max<std::int64_t>(std::int64_t{1} << 16, spec.particles / 2);
+
+    // Checkpoints (run.hpp ReplicaCheckpoints): a DriveState, then the engine's state.
+    const std::string kernel = std::string(Store::name) + ", " + std::string(Policy::name) + ", " +
+                               (Mixture ? std::to_string(S) + " species" : "one species") +
+                               (Kernel == CollisionKernel::maxwell ? ", Maxwell kernel" : "");
+    std::size_t first_pause = 0;
+    std::optional<double> strang_h; // a resumed shear interval's step length
+    if (ckpt && !ckpt->resume.empty()) {
+        try {
+            ByteReader r(ckpt->resume);
+            DriveState d;
+            d.load(r);
+            if (d.kernel != kernel)
+                throw ResumeError("saved by the loop \"" + d.kernel + "\", this run's is \"" + kernel + "\"");
+            if (d.next_pause > pauses.size() || (d.strang_h && (!spec.shear || d.next_pause == pauses.size())))
+                throw ResumeError("the state's place in the output schedule does not fit the case");
+            if (d.tally.per_type.size() != tally.per_type.size())
+                throw ResumeError("the state has another number of species pairs");
+            first_pause = d.next_pause;
+            strang_h = d.strang_h;
+            t_prev = d.t_prev;
+            c_prev = d.c_prev;
+            tally = std::move(d.tally);
+            engine.load_state(r);
+            if (r.remaining() != 0)
+                throw ResumeError("trailing bytes after the engine state");
+        } catch (const ResumeError&) {
+            throw;
+        } catch (const std::exception& e) { // ByteReader, Engine::load_state
+            throw ResumeError(e.what());
+        }
+    } else {
+        emit();
+    }
+    const std::int64_t resumed_at = engine.collisions();
+    // The k-th checkpoint is due at target_of(k every); the next one is the first after the
+    // current count, so a resumed run keeps the schedule.
+    std::int64_t next_checkpoint = std::numeric_limits<std::int64_t>::max();
+    const auto schedule_next_checkpoint = [&] {
+        if (!ckpt || !(ckpt->every > 0))
+            return;
+        double k = std::floor(2.0 * static_cast<double>(engine.collisions()) / static_cast<double>(N) / ckpt->every);
+        while (target_of(k * ckpt->every) <= engine.collisions())
+            k += 1;
+        next_checkpoint = target_of(k * ckpt->every);
+    };
+    schedule_next_checkpoint();
+    // A boundary where the run may stop unchanged: pause p next, `h` the step length when between
+    // two Strang steps of a shear interval.
+    const auto boundary = [&](std::size_t p, std::optional<double> h) {
+        if (!ckpt)
+            return;
+        const bool stop = ckpt->stop && ckpt->stop();
+        if (!stop && engine.collisions() < next_checkpoint)
+            return;
+        ByteWriter w;
+        DriveState{kernel, p, h, t_prev, c_prev, tally}.save(w);
+        engine.save_state(w);
+        ckpt->save(w.take());
+        if (stop)
+            throw Stopped{};
+        schedule_next_checkpoint();
+    };
+    const auto report = [&] {
+        if (progress) {
+            const auto c = static_cast<double>(engine.collisions());
+            progress(2.0 * c / static_cast<double>(N), end, c);
+        }
+    };
+    report();
+
     // Uniform shear flow: Strang steps (dsmc/shear.hpp) of h = time_step mean free times, h set from
     // the temperatures at the start of each interval between pauses; a pause (row or histogram)
-    // comes at the end of the first step at or after its collision count.
-    const auto advance_shear = [&](std::int64_t target) {
+    // comes at the end of the first step at or after its collision count. `resume_h`: continue the
+    // interval of a checkpoint, between two of its steps.
+    const auto advance_shear = [&](std::int64_t target, std::size_t p, std::optional<double> resume_h) {
         const double a = spec.shear->rate;
         const auto stream = [&](double s) {
             stream_shear(engine.store(), a, s);
@@ -268,72 +419,68 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
         const auto collide = [&](double h) {
             engine.run(std::numeric_limits<std::int64_t>::max(), engine.time() + h, tally);
         };
-        Vec3 Omega{};
-        const double nu_c = collision_frequency(types, blocks, moments_now(Omega), engine.volume());
-        if (!(nu_c > 0) || !std::isfinite(nu_c))
-            throw std::runtime_error("run_replica: no collision can happen: every grain is at rest in "
-                                     "the centre-of-mass frame (translational temperature 0)");
-        strang_steps(spec.shear->time_step / nu_c, stream, collide, [&] {
-            if (progress) {
-                const auto c = static_cast<double>(engine.collisions());
-                progress(2.0 * c / static_cast<double>(N), end, c);
-            }
-            return engine.collisions() >= target;
-        });
-    };
-    for (const Pause& pause : pauses) {
-        const std::int64_t target = pause.target;
-        if (spec.shear && engine.collisions() < target)
-            advance_shear(target);
-        while (engine.collisions() < target) {
-            const std::int64_t next = std::min(target, engine.collisions() + chunk);
-            if (engine.run(next, std::numeric_limits<double>::infinity(), tally) == StopReason::stalled) {
-                throw std::runtime_error(
-                    "run_replica: no collision can happen: every grain is at rest in the "
-                    "centre-of-mass frame (translational temperature 0)");
-            }
-            if (progress) {
-                const auto c = static_cast<double>(engine.collisions());
-                progress(2.0 * c / static_cast<double>(N), end, c);
-            }
+        double h = resume_h.value_or(0.0);
+        if (!resume_h) {
+            Vec3 Omega{};
+            const double nu_c = collision_frequency(types, blocks, moments_now(Omega), engine.volume());
+            if (!(nu_c > 0) || !std::isfinite(nu_c))
+                throw std::runtime_error("run_replica: no collision can happen: every grain is at rest in "
+                                         "the centre-of-mass frame (translational temperature 0)");
+            h = spec.shear->time_step / nu_c;
         }
-        if (pause.row)
-            emit();
-        if (pause.histogram)
-            emit_histograms();
+        strang_steps(
+            h, stream, collide,
+            [&] {
+                report();
+                if (engine.collisions() >= target)
+                    return true;
+                boundary(p, h);
+                return false;
+            },
+            resume_h.has_value());
+    };
+    try {
+        for (std::size_t p = first_pause; p < pauses.size(); ++p) {
+            const Pause& pause = pauses[p];
+            const std::int64_t target = pause.target;
+            if (strang_h) { // resumed between two Strang steps: that interval first
+                advance_shear(target, p, strang_h);
+                strang_h.reset();
+            } else {
+                boundary(p, std::nullopt);
+                if (spec.shear && engine.collisions() < target)
+                    advance_shear(target, p, std::nullopt);
+            }
+            while (engine.collisions() < target) {
+                const std::int64_t next = std::min(target, engine.collisions() + chunk);
+                if (engine.run(next, std::numeric_limits<double>::infinity(), tally) == StopReason::stalled) {
+                    throw std::runtime_error(
+                        "run_replica: no collision can happen: every grain is at rest in the "
+                        "centre-of-mass frame (translational temperature 0)");
+                }
+                report();
+                boundary(p, std::nullopt);
+            }
+            if (pause.row)
+                emit();
+            if (pause.histogram)
+                emit_histograms();
+        }
+    } catch (const Stopped&) {
+        fill_summary(io.summary, engine, kernel, tally.clamped, resumed_at, wall0);
+        return ReplicaEnd::stopped;
     }
-
-    if (summary) {
-        const EngineCounters& k = engine.counters();
-        summary->kernel = std::string(Store::name) + ", " + std::string(Policy::name) + ", " +
-                          (Mixture ? std::to_string(S) + " species" : "one species") +
-                          (Kernel == CollisionKernel::maxwell ? ", Maxwell kernel" : "");
-        summary->groups = static_cast<int>(engine.groups());
-        summary->bytes_per_particle = Store::bytes_per_particle;
-        summary->memory_per_particle = engine.bytes_per_particle();
-        summary->collisions = k.collisions;
-        summary->candidates = k.candidates;
-        summary->steps = k.steps;
-        summary->bound_raises = k.bound_raises;
-        summary->promotions = k.promotions;
-        summary->beta_clamped = tally.clamped;
-        summary->max_mean_drift = k.max_mean_drift;
-        summary->recentrings = k.recentrings;
-        summary->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-    }
+    fill_summary(io.summary, engine, kernel, tally.clamped, resumed_at, wall0);
+    return ReplicaEnd::finished;
 }
 
 // The kernel is a compile-time choice too: one switch per run.
 template <class Policy, bool Mixture>
-void drive_kernel(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
-                  int replica, const RowSink& sink, const ProgressSink& progress, ReplicaSummary* summary,
-                  const HistogramSink& histograms) {
+ReplicaEnd drive_kernel(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
+                        int replica, const ReplicaIo& io) {
     if (spec.kernel == CollisionKernel::maxwell)
-        drive<Policy, Mixture, CollisionKernel::maxwell>(spec, blocks, std::move(policies), replica, sink, progress,
-                                                         summary, histograms);
-    else
-        drive<Policy, Mixture, CollisionKernel::hard_sphere>(spec, blocks, std::move(policies), replica, sink,
-                                                             progress, summary, histograms);
+        return drive<Policy, Mixture, CollisionKernel::maxwell>(spec, blocks, std::move(policies), replica, io);
+    return drive<Policy, Mixture, CollisionKernel::hard_sphere>(spec, blocks, std::move(policies), replica, io);
 }
 
 } // namespace
@@ -377,9 +524,11 @@ std::vector<Column> dsmc_columns(const RunSpec& spec) {
     return c;
 }
 
-void run_replica(const RunSpec& spec, const RestitutionTables& tables, int replica, const RowSink& sink,
-                 const ProgressSink& progress, ReplicaSummary* summary, const HistogramSink& histograms) {
+ReplicaEnd run_replica(const RunSpec& spec, const RestitutionTables& tables, int replica, const RowSink& sink,
+                       const ProgressSink& progress, ReplicaSummary* summary, const HistogramSink& histograms,
+                       const ReplicaCheckpoints* checkpoints) {
     validate(spec);
+    const ReplicaIo io{sink, progress, summary, histograms, checkpoints};
     require(replica >= 0, "negative replica index");
     const std::vector<SpeciesBlock> blocks = make_species_blocks(spec.species, spec.particles);
     const std::vector<PairType> types = make_pair_types(blocks);
@@ -393,41 +542,37 @@ void run_replica(const RunSpec& spec, const RestitutionTables& tables, int repli
             p = as_rough(p);
 
     if (blocks.size() == 1) { // one species, one model: a fully specialised loop
-        std::visit(
+        return std::visit(
             [&](const auto& p) {
                 using P = std::decay_t<decltype(p)>;
-                drive_kernel<P, false>(spec, blocks, {p}, replica, sink, progress, summary, histograms);
+                return drive_kernel<P, false>(spec, blocks, {p}, replica, io);
             },
             policies[0]);
-        return;
     }
     const bool same_type = std::all_of(policies.begin(), policies.end(),
                                        [&](const AnyPolicy& p) { return p.index() == policies[0].index(); });
     if (same_type) { // one policy type, per-pair values: no variant in the loop
-        std::visit(
+        return std::visit(
             [&](const auto& p0) {
                 using P = std::decay_t<decltype(p0)>;
                 std::vector<P> v;
                 for (const AnyPolicy& p : policies)
                     v.push_back(std::get<P>(p));
-                drive_kernel<P, true>(spec, blocks, std::move(v), replica, sink, progress, summary, histograms);
+                return drive_kernel<P, true>(spec, blocks, std::move(v), replica, io);
             },
             policies[0]);
-        return;
     }
     if (std::none_of(policies.begin(), policies.end(),
                      [](const AnyPolicy& p) { return needs_rotation(p); })) {
         std::vector<AnySmoothPolicy> v;
         for (const AnyPolicy& p : policies)
             v.push_back(to_any_smooth(p));
-        drive_kernel<AnySmoothPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary,
-                                            histograms);
-        return;
+        return drive_kernel<AnySmoothPolicy, true>(spec, blocks, std::move(v), replica, io);
     }
     std::vector<AnyRoughPolicy> v;
     for (const AnyPolicy& p : policies)
         v.push_back(to_any_rough(p));
-    drive_kernel<AnyRoughPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary, histograms);
+    return drive_kernel<AnyRoughPolicy, true>(spec, blocks, std::move(v), replica, io);
 }
 
 } // namespace roughgas

@@ -78,6 +78,7 @@
 // callers that change velocities between run() calls (uniform shear flow).
 #include "roughgas/collision/rule.hpp"
 #include "roughgas/collision/sampling.hpp"
+#include "roughgas/core/bytes.hpp"
 #include "roughgas/core/rng.hpp"
 #include "roughgas/dsmc/species.hpp"
 
@@ -93,6 +94,7 @@
 #include <new>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -346,6 +348,157 @@ class Engine {
         for (const Group& g : groups_)
             b = std::max(b, g.blocks[s * K_ + K_ - 1].bound);
         return b;
+    }
+
+    // Checkpoints (io/checkpoint_file.hpp). The complete dynamic state: every grain's v and omega,
+    // the index array, and per group the blocks, rates, pre-drawn candidates, demotable lists,
+    // stream and clock and counters; the time, the step's end and the engine's counters. An engine
+    // constructed with the same species, policies and options (threads aside: they never change the
+    // results) that loads it continues bit for bit as this one would: the pending candidate, the
+    // rings and the demotable lists all shape the trajectory, so nothing is recomputed. Scratch of
+    // begin_step (bucket keys, per-chunk sums) is rewritten before it is read and is left out.
+    void save_state(ByteWriter& w) const {
+        const std::size_t n = store_.size();
+        w.reserve(n * (6 * sizeof(double) + sizeof(std::uint32_t)) + 4096);
+        for (const std::size_t v : {n, species_.size(), K_, G_})
+            w.u64(v);
+        for (std::size_t i = 0; i < n; ++i)
+            for (const Vec3& x : {store_.v(i), store_.w(i)})
+                for (double c : {x.x, x.y, x.z})
+                    w.f64(c);
+        for (std::uint32_t p : perm_)
+            w.put(p);
+        w.f64s(thermal_speed_);
+        for (double x : {t_, t_step_end_, step_length_})
+            w.f64(x);
+        w.put(stalled_);
+        for (std::int64_t x : {c_.collisions, c_.candidates, c_.steps, c_.bound_raises, c_.promotions,
+                               c_.range_moves, c_.retargets, c_.recentrings, c_.phases, c_.overshoots})
+            w.put(x);
+        w.f64(c_.max_mean_drift);
+        for (const Group& g : groups_) {
+            for (const Block& b : g.blocks) {
+                for (std::uint32_t x : {b.begin, b.end, b.species})
+                    w.put(x);
+                for (double x : {b.ceiling2, b.bound, b.bound2})
+                    w.f64(x);
+            }
+            for (const BlockPair& bp : g.block_pairs) {
+                for (std::uint32_t x : {bp.x, bp.y, bp.species_pair})
+                    w.put(x);
+                for (double x : {bp.gmax, bp.rate, bp.pairs})
+                    w.f64(x);
+            }
+            for (double x : g.cumulative)
+                w.f64(x);
+            for (const Ring& r : g.rings) {
+                for (const Candidate& c : r.c)
+                    for (std::uint32_t x : {c.i, c.j, c.ib, c.ie, c.jb, c.je})
+                        w.put(x);
+                w.put(r.head);
+            }
+            for (const auto& d : g.demotable) {
+                w.u64(d.size());
+                for (std::uint32_t x : d)
+                    w.put(x);
+            }
+            for (std::uint64_t x : g.rng.state())
+                w.u64(x);
+            for (double x : {g.rate, g.inv_rate, g.t, g.t_next})
+                w.f64(x);
+            for (std::int64_t x : {g.c.collisions, g.c.candidates, g.c.bound_raises, g.c.promotions,
+                                   g.c.range_moves, g.c.retargets})
+                w.put(x);
+        }
+    }
+
+    // Loads what save_state wrote. Throws std::runtime_error when the state does not fit this engine
+    // (other particle count, species, speed classes or groups) or is malformed.
+    void load_state(ByteReader& r) {
+        const std::size_t n = store_.size();
+        const auto expect = [](std::uint64_t got, std::size_t want, const char* what) {
+            if (got != want)
+                throw std::runtime_error("engine state: " + std::to_string(got) + " " + what + ", expected " +
+                                         std::to_string(want));
+        };
+        expect(r.u64(), n, "particles");
+        expect(r.u64(), species_.size(), "species");
+        expect(r.u64(), K_, "speed classes");
+        expect(r.u64(), G_, "groups");
+        const auto index = [&](std::uint32_t x, std::size_t limit) {
+            if (x > limit)
+                throw std::runtime_error("engine state: index out of range");
+            return x;
+        };
+        r.need(n * 6 * sizeof(double));
+        for (std::size_t i = 0; i < n; ++i)
+            for (Vec3* x : {&store_.v(i), &store_.w(i)}) {
+                x->x = r.f64();
+                x->y = r.f64();
+                x->z = r.f64();
+            }
+        for (std::uint32_t& p : perm_)
+            p = index(r.get<std::uint32_t>(), n - 1);
+        std::vector<double> thermal = r.f64s();
+        expect(thermal.size(), thermal_speed_.size(), "species speeds");
+        thermal_speed_ = std::move(thermal);
+        t_ = r.f64();
+        t_step_end_ = r.f64();
+        step_length_ = r.f64();
+        stalled_ = r.get<bool>();
+        for (std::int64_t* x : {&c_.collisions, &c_.candidates, &c_.steps, &c_.bound_raises, &c_.promotions,
+                                &c_.range_moves, &c_.retargets, &c_.recentrings, &c_.phases, &c_.overshoots})
+            *x = r.get<std::int64_t>();
+        c_.max_mean_drift = r.f64();
+        for (Group& g : groups_) {
+            for (Block& b : g.blocks) {
+                b.begin = index(r.get<std::uint32_t>(), n);
+                b.end = index(r.get<std::uint32_t>(), n);
+                b.species = index(r.get<std::uint32_t>(), species_.size() - 1);
+                b.ceiling2 = r.f64();
+                b.bound = r.f64();
+                b.bound2 = r.f64();
+                if (b.end < b.begin)
+                    throw std::runtime_error("engine state: block range reversed");
+            }
+            for (BlockPair& bp : g.block_pairs) {
+                bp.x = index(r.get<std::uint32_t>(), g.blocks.size() - 1);
+                bp.y = index(r.get<std::uint32_t>(), g.blocks.size() - 1);
+                bp.species_pair = index(r.get<std::uint32_t>(), types_.size() - 1);
+                bp.gmax = r.f64();
+                bp.rate = r.f64();
+                bp.pairs = r.f64();
+            }
+            for (double& x : g.cumulative)
+                x = r.f64();
+            for (Ring& ring : g.rings) {
+                for (Candidate& c : ring.c)
+                    for (std::uint32_t* x : {&c.i, &c.j, &c.ib, &c.ie, &c.jb, &c.je})
+                        *x = index(r.get<std::uint32_t>(), n);
+                ring.head = index(r.get<unsigned>(), ring_size - 1);
+            }
+            for (auto& d : g.demotable) {
+                // The lists never grow past the capacity reserved at construction (settle()), and
+                // clear() + push_back keeps it: the same lists fill up at the same collision.
+                const std::size_t size = r.count(sizeof(std::uint32_t));
+                if (size > d.capacity())
+                    throw std::runtime_error("engine state: demotable list too long");
+                d.clear();
+                for (std::size_t k = 0; k < size; ++k)
+                    d.push_back(index(r.get<std::uint32_t>(), n - 1));
+            }
+            std::array<std::uint64_t, 4> s;
+            for (std::uint64_t& x : s)
+                x = r.u64();
+            g.rng.set_state(s);
+            g.rate = r.f64();
+            g.inv_rate = r.f64();
+            g.t = r.f64();
+            g.t_next = r.f64();
+            for (std::int64_t* x : {&g.c.collisions, &g.c.candidates, &g.c.bound_raises, &g.c.promotions,
+                                    &g.c.range_moves, &g.c.retargets})
+                *x = r.get<std::int64_t>();
+        }
     }
 
   private:

@@ -38,10 +38,13 @@ template <class Store> void stream_shear(Store& store, double a, double s) {
 // Runs Strang steps of length h until done() holds after a step (at least one step), with the
 // merged half-streams described above: stream(s) streams by s, collide(h) advances the collisions
 // by h. Returns the number of steps. The state is synchronised on return.
+// `resumed`: the state is that of an earlier call at a done() that returned false (a checkpoint,
+// dsmc/run.cpp), half a stream from synchronised; the steps go on from there, bit for bit as that
+// call would have (the merged stream of h first, not a new half-stream).
 template <class Stream, class Collide, class Done>
-std::int64_t strang_steps(double h, Stream&& stream, Collide&& collide, Done&& done) {
+std::int64_t strang_steps(double h, Stream&& stream, Collide&& collide, Done&& done, bool resumed = false) {
     std::int64_t steps = 0;
-    stream(0.5 * h);
+    stream(resumed ? h : 0.5 * h);
     for (;;) {
         collide(h);
         ++steps;
