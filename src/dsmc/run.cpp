@@ -68,6 +68,10 @@ void validate(const RunSpec& spec) {
     }
     require(spec.histogram_bins >= 1 && spec.histogram_max > 0 && std::isfinite(spec.histogram_max),
             "histogram_bins must be >= 1 and histogram_max > 0");
+    if (spec.kernel == CollisionKernel::maxwell)
+        require(std::all_of(spec.pairs.begin(), spec.pairs.end(),
+                            [](const PairRestitution& p) { return std::holds_alternative<ConstantRestitution>(p); }),
+                "the Maxwell kernel needs constant restitution for every pair");
     if (spec.shear) {
         require(std::isfinite(spec.shear->rate) && spec.shear->rate > 0, "shear rate must be > 0");
         require(std::isfinite(spec.shear->time_step) && spec.shear->time_step > 0,
@@ -256,24 +260,42 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
     std::stable_sort(pauses.begin(), pauses.end(),
                      [](const Pause& a, const Pause& b) { return a.target < b.target; });
     const std::int64_t chunk = std::max<std::int64_t>(std::int64_t{1} << 16, spec.particles / 2);
-    // Uniform shear flow: Strang steps (dsmc/shear.hpp) of h = time_step mean free times, h set from
-    // the temperatures at the start of each interval between pauses; a pause (row or histogram)
-    // comes at the end of the first step at or after its collision count.
-    const auto advance_shear = [&](std::int64_t target) {
+    // Uniform shear flow: Strang steps (dsmc/shear.hpp) of h = time_step mean free times each, the
+    // mean free time of the state each step's collisions start from (strang_step_length predicts it
+    // through the stream before them), so that the steps follow the temperature through a transient
+    // (heated by 10^10 in one stream, or cooled by 10^-20 while a tiny shear rate catches up:
+    // tests/stress). A pause (row or histogram) comes at the end of the first step at or after its
+    // collision count, a step shortened to end a few collisions after it.
+    const auto advance_shear = [&](std::int64_t target, std::int64_t cap) {
         const double a = spec.shear->rate;
+        // The state the next step is predicted from: its pressure tensor (times the volume) and
+        // collision frequency. At an interval's start, the current state; later, the state after the
+        // last stream (its sums from the stream's pass, its frequency from the engine's step start).
+        Vec3 Omega{};
+        PressureTensor P = pressure_tensor(engine.store().velocities(), slices, 1.0, Vec3{});
+        double nu_ref = collision_frequency(types, blocks, moments_now(Omega), engine.volume());
         const auto stream = [&](double s) {
-            stream_shear(engine.store(), a, s);
+            P = stream_shear(engine.store(), a, s, slices);
             engine.restart_step(); // the velocities changed: refresh the engine's bounds (exact)
         };
         const auto collide = [&](double h) {
-            engine.run(std::numeric_limits<std::int64_t>::max(), engine.time() + h, tally);
+            const double t0 = engine.time();
+            const StopReason stop = engine.run(cap, t0 + h, tally);
+            nu_ref = engine.collision_frequency(); // its step start: the state after the stream, P's
+            return stop == StopReason::collisions ? engine.time() - t0 : h;
         };
-        Vec3 Omega{};
-        const double nu_c = collision_frequency(types, blocks, moments_now(Omega), engine.volume());
-        if (!(nu_c > 0) || !std::isfinite(nu_c))
-            throw std::runtime_error("run_replica: no collision can happen: every grain is at rest in "
-                                     "the centre-of-mass frame (translational temperature 0)");
-        strang_steps(spec.shear->time_step / nu_c, stream, collide, [&] {
+        double h_prev = 0;
+        const auto step = [&] {
+            // A step expects tau x N/2 collisions; the last one before the pause expects only the
+            // remaining r and a margin of 1 + 3 sqrt(r) (it falls short with probability ~1e-3, and
+            // then one more short step follows), so that one step never spans two output rows.
+            const auto r = static_cast<double>(target - engine.collisions());
+            const double tau = std::min(spec.shear->time_step,
+                                        2.0 * (r + 1.0 + 3.0 * std::sqrt(r)) / static_cast<double>(N));
+            h_prev = strang_step_length(tau, nu_ref, P, a, h_prev);
+            return h_prev;
+        };
+        strang_steps(step, stream, collide, [&] {
             if (progress) {
                 const auto c = static_cast<double>(engine.collisions());
                 progress(2.0 * c / static_cast<double>(N), end, c);
@@ -281,10 +303,18 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
             return engine.collisions() >= target;
         });
     };
-    for (const Pause& pause : pauses) {
+    for (std::size_t p = 0; p < pauses.size(); ++p) {
+        const Pause& pause = pauses[p];
         const std::int64_t target = pause.target;
-        if (spec.shear && engine.collisions() < target)
-            advance_shear(target);
+        if (spec.shear && engine.collisions() < target) {
+            // A step reaching the next pause's count is cut there (rare: the last step aims at this
+            // target), so that no two pauses share one step (an empty interval between two rows).
+            std::int64_t cap = std::numeric_limits<std::int64_t>::max();
+            for (std::size_t q = p + 1; q < pauses.size() && cap == std::numeric_limits<std::int64_t>::max(); ++q)
+                if (pauses[q].target > target)
+                    cap = pauses[q].target - 1;
+            advance_shear(target, cap);
+        }
         while (engine.collisions() < target) {
             const std::int64_t next = std::min(target, engine.collisions() + chunk);
             if (engine.run(next, std::numeric_limits<double>::infinity(), tally) == StopReason::stalled) {
@@ -323,17 +353,29 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
     }
 }
 
+// Constant restitution: the policies the Maxwell kernel (validated: constant only) and the
+// same-type mixture loop are compiled for. Every other mixture runs the per-pair variant policies,
+// whose per-collision dispatch is small beside a table look-up or a contact integration; fewer
+// instantiations of the engine keep the build (and the sanitizer build in CI) short.
+template <class P>
+constexpr bool is_constant_policy = std::is_same_v<P, SmoothConstant> || std::is_same_v<P, RoughConstant>;
+
 // The kernel is a compile-time choice too: one switch per run.
 template <class Policy, bool Mixture>
 void drive_kernel(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
                   int replica, const RowSink& sink, const ProgressSink& progress, ReplicaSummary* summary,
                   const HistogramSink& histograms) {
-    if (spec.kernel == CollisionKernel::maxwell)
-        drive<Policy, Mixture, CollisionKernel::maxwell>(spec, blocks, std::move(policies), replica, sink, progress,
-                                                         summary, histograms);
-    else
-        drive<Policy, Mixture, CollisionKernel::hard_sphere>(spec, blocks, std::move(policies), replica, sink,
+    if constexpr (is_constant_policy<Policy>) {
+        if (spec.kernel == CollisionKernel::maxwell) {
+            drive<Policy, Mixture, CollisionKernel::maxwell>(spec, blocks, std::move(policies), replica, sink,
                                                              progress, summary, histograms);
+            return;
+        }
+    } else if (spec.kernel == CollisionKernel::maxwell) {
+        throw std::logic_error("run_replica: the Maxwell kernel with a non-constant policy"); // validate()
+    }
+    drive<Policy, Mixture, CollisionKernel::hard_sphere>(spec, blocks, std::move(policies), replica, sink, progress,
+                                                         summary, histograms);
 }
 
 } // namespace
@@ -403,17 +445,22 @@ void run_replica(const RunSpec& spec, const RestitutionTables& tables, int repli
     }
     const bool same_type = std::all_of(policies.begin(), policies.end(),
                                        [&](const AnyPolicy& p) { return p.index() == policies[0].index(); });
-    if (same_type) { // one policy type, per-pair values: no variant in the loop
+    if (same_type) { // one constant policy type, per-pair values: no variant in the loop
+        bool done = false;
         std::visit(
             [&](const auto& p0) {
                 using P = std::decay_t<decltype(p0)>;
-                std::vector<P> v;
-                for (const AnyPolicy& p : policies)
-                    v.push_back(std::get<P>(p));
-                drive_kernel<P, true>(spec, blocks, std::move(v), replica, sink, progress, summary, histograms);
+                if constexpr (is_constant_policy<P>) {
+                    std::vector<P> v;
+                    for (const AnyPolicy& p : policies)
+                        v.push_back(std::get<P>(p));
+                    drive_kernel<P, true>(spec, blocks, std::move(v), replica, sink, progress, summary, histograms);
+                    done = true;
+                }
             },
             policies[0]);
-        return;
+        if (done)
+            return;
     }
     if (std::none_of(policies.begin(), policies.end(),
                      [](const AnyPolicy& p) { return needs_rotation(p); })) {

@@ -78,6 +78,7 @@
 // callers that change velocities between run() calls (uniform shear flow).
 #include "roughgas/collision/rule.hpp"
 #include "roughgas/collision/sampling.hpp"
+#include "roughgas/core/prefetch.hpp"
 #include "roughgas/core/rng.hpp"
 #include "roughgas/dsmc/species.hpp"
 
@@ -332,6 +333,9 @@ class Engine {
         return Store::bytes_per_particle + sizeof(std::uint32_t) + (key_.empty() ? 0 : sizeof(std::uint16_t));
     }
     double step_length() const { return step_length_; }
+    // The Maxwellian collision frequency per grain at the start of the current step (0 before the
+    // first step): what the step length is measured in.
+    double collision_frequency() const { return nu_; }
     // Candidates per unit time, summed over the groups.
     double candidate_rate() const {
         double r = 0;
@@ -575,10 +579,9 @@ class Engine {
         const Block& X = g.blocks[bp.x];
         const Block& Y = g.blocks[bp.y];
         Candidate c{draw_in(g, X), draw_in(g, Y), X.begin, X.end, Y.begin, Y.end};
-        if (X.size())
-            store_.prefetch(perm_[c.i]);
-        if (Y.size())
-            store_.prefetch(perm_[c.j]);
+        // Stage 1 of 2: the index entries (the grains follow half a ring later, take_candidate).
+        prefetch_line(&perm_[c.i]);
+        prefetch_line(&perm_[c.j]);
         return c;
     }
 
@@ -607,6 +610,13 @@ class Engine {
         const Candidate c = r.c[r.head];
         r.c[r.head] = draw_candidate(g, k);
         r.head = (r.head + 1) % ring_size;
+        // Stage 2 of 2: the grains of the candidate half a ring ahead, whose index entries were
+        // prefetched half a ring ago (a hint only: perm_ may have changed since, which costs a miss).
+        const Candidate& ahead = r.c[(r.head + ring_size / 2) % ring_size];
+        if (ahead.ie > ahead.ib) [[likely]] // else an empty block: i == its begin may be past the end
+            store_.prefetch(perm_[ahead.i]);
+        if (ahead.je > ahead.jb) [[likely]]
+            store_.prefetch(perm_[ahead.j]);
         const BlockPair& bp = g.block_pairs[k];
         const Block& X = g.blocks[bp.x];
         i = retarget(g, c.i, c.ib, c.ie, X);
@@ -872,12 +882,14 @@ class Engine {
         const double t0 = t_step_end_;
         if (!(rate > 0) || !(nu > 0)) { // nothing moves: no collision can ever happen
             stalled_ = true;
+            nu_ = 0;
             step_length_ = std::numeric_limits<double>::infinity();
             t_step_end_ = std::numeric_limits<double>::infinity();
             for (Group& g : groups_)
                 g.t_next = std::numeric_limits<double>::infinity();
             return;
         }
+        nu_ = nu;
         step_length_ = opt_.step / nu;
         t_step_end_ = t0 + step_length_;
         for (Group& g : groups_) {
@@ -911,7 +923,7 @@ class Engine {
     std::vector<std::uint32_t> count_, ccount_;        // per bucket; per (chunk, bucket)
     std::vector<double> cmax2_, csum2_;                 // per (chunk, bucket); per chunk
     std::vector<Vec3> cps_;                             // per chunk
-    double t_ = 0, t_step_end_ = 0, step_length_ = 0;
+    double t_ = 0, t_step_end_ = 0, step_length_ = 0, nu_ = 0;
     bool stalled_ = false;
     EngineCounters c_{}; // the engine's own counts (steps, frame, phases); the groups keep the rest
 };
