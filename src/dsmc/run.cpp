@@ -71,6 +71,10 @@ void validate(const RunSpec& spec) {
     }
     require(spec.histogram_bins >= 1 && spec.histogram_max > 0 && std::isfinite(spec.histogram_max),
             "histogram_bins must be >= 1 and histogram_max > 0");
+    if (spec.kernel == CollisionKernel::maxwell)
+        require(std::all_of(spec.pairs.begin(), spec.pairs.end(),
+                            [](const PairRestitution& p) { return std::holds_alternative<ConstantRestitution>(p); }),
+                "the Maxwell kernel needs constant restitution for every pair");
     if (spec.shear) {
         require(std::isfinite(spec.shear->rate) && spec.shear->rate > 0, "shear rate must be > 0");
         require(std::isfinite(spec.shear->time_step) && spec.shear->time_step > 0,
@@ -120,13 +124,20 @@ struct Tally {
     }
 };
 
+// Between two Strang steps of a shear interval (dsmc/shear.hpp strang_steps): the stream the step
+// just done still owes, its length, and what the next step's length is predicted from.
+struct StrangState {
+    double pending = 0, h_prev = 0, nu_ref = 0;
+    PressureTensor P;
+};
+
 // drive()'s state besides the engine's, in a checkpoint: where the replica is in its output schedule
-// (the next pause; between two Strang steps of a shear interval, that interval's step length) and
-// what its next row's rates are measured from.
+// (the next pause; between two Strang steps, the shear interval's state) and what its next row's
+// rates are measured from.
 struct DriveState {
     std::string kernel; // the specialised loop that saved it: a state of another loop is refused
     std::uint64_t next_pause = 0;
-    std::optional<double> strang_h;
+    std::optional<StrangState> strang;
     double t_prev = 0;
     std::int64_t c_prev = 0;
     Tally tally;
@@ -134,8 +145,10 @@ struct DriveState {
     void save(ByteWriter& w) const {
         w.str(kernel);
         w.u64(next_pause);
-        w.put(strang_h.has_value());
-        w.f64(strang_h.value_or(0.0));
+        w.put(strang.has_value());
+        const StrangState s = strang.value_or(StrangState{});
+        for (double x : {s.pending, s.h_prev, s.nu_ref, s.P.xx, s.P.yy, s.P.zz, s.P.xy, s.P.xz, s.P.yz})
+            w.f64(x);
         w.f64(t_prev);
         w.put(c_prev);
         w.f64(tally.dE);
@@ -147,9 +160,11 @@ struct DriveState {
     void load(ByteReader& r) {
         kernel = r.str();
         next_pause = r.u64();
-        const bool mid = r.get<bool>();
-        const double h = r.f64();
-        strang_h = mid ? std::optional(h) : std::nullopt;
+        const bool between = r.get<bool>();
+        StrangState s;
+        for (double* x : {&s.pending, &s.h_prev, &s.nu_ref, &s.P.xx, &s.P.yy, &s.P.zz, &s.P.xy, &s.P.xz, &s.P.yz})
+            *x = r.f64();
+        strang = between ? std::optional(s) : std::nullopt;
         t_prev = r.f64();
         c_prev = r.get<std::int64_t>();
         tally.dE = r.f64();
@@ -341,7 +356,7 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
                                (Mixture ? std::to_string(S) + " species" : "one species") +
                                (Kernel == CollisionKernel::maxwell ? ", Maxwell kernel" : "");
     std::size_t first_pause = 0;
-    std::optional<double> strang_h; // a resumed shear interval's step length
+    std::optional<StrangState> strang; // resumed between two Strang steps of a shear interval
     if (ckpt && !ckpt->resume.empty()) {
         try {
             ByteReader r(ckpt->resume);
@@ -349,12 +364,12 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
             d.load(r);
             if (d.kernel != kernel)
                 throw ResumeError("saved by the loop \"" + d.kernel + "\", this run's is \"" + kernel + "\"");
-            if (d.next_pause > pauses.size() || (d.strang_h && (!spec.shear || d.next_pause == pauses.size())))
+            if (d.next_pause > pauses.size() || (d.strang && (!spec.shear || d.next_pause == pauses.size())))
                 throw ResumeError("the state's place in the output schedule does not fit the case");
             if (d.tally.per_type.size() != tally.per_type.size())
                 throw ResumeError("the state has another number of species pairs");
             first_pause = d.next_pause;
-            strang_h = d.strang_h;
+            strang = d.strang;
             t_prev = d.t_prev;
             c_prev = d.c_prev;
             tally = std::move(d.tally);
@@ -382,16 +397,16 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
         next_checkpoint = target_of(k * ckpt->every);
     };
     schedule_next_checkpoint();
-    // A boundary where the run may stop unchanged: pause p next, `h` the step length when between
-    // two Strang steps of a shear interval.
-    const auto boundary = [&](std::size_t p, std::optional<double> h) {
+    // A point where the run may stop unchanged: pause p next; `between`, when it lies between two
+    // Strang steps of a shear interval.
+    const auto boundary = [&](std::size_t p, const std::optional<StrangState>& between) {
         if (!ckpt)
             return;
         const bool stop = ckpt->stop && ckpt->stop();
         if (!stop && engine.collisions() < next_checkpoint)
             return;
         ByteWriter w;
-        DriveState{kernel, p, h, t_prev, c_prev, tally}.save(w);
+        DriveState{kernel, p, between, t_prev, c_prev, tally}.save(w);
         engine.save_state(w);
         ckpt->save(w.take());
         if (stop)
@@ -406,50 +421,77 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
     };
     report();
 
-    // Uniform shear flow: Strang steps (dsmc/shear.hpp) of h = time_step mean free times, h set from
-    // the temperatures at the start of each interval between pauses; a pause (row or histogram)
-    // comes at the end of the first step at or after its collision count. `resume_h`: continue the
-    // interval of a checkpoint, between two of its steps.
-    const auto advance_shear = [&](std::int64_t target, std::size_t p, std::optional<double> resume_h) {
+    // Uniform shear flow: Strang steps (dsmc/shear.hpp) of h = time_step mean free times each, the
+    // mean free time of the state each step's collisions start from (strang_step_length predicts it
+    // through the stream before them), so that the steps follow the temperature through a transient
+    // (heated by 10^10 in one stream, or cooled by 10^-20 while a tiny shear rate catches up:
+    // tests/stress). A pause (row or histogram) comes at the end of the first step at or after its
+    // collision count, a step shortened to end a few collisions after it. Checkpoints come between
+    // two steps (after a step's collisions, before the merged stream: `resume` goes on from there).
+    const auto advance_shear = [&](std::int64_t target, std::int64_t cap, std::size_t p,
+                                   const std::optional<StrangState>& resume) {
         const double a = spec.shear->rate;
+        // The state the next step is predicted from: its pressure tensor (times the volume) and
+        // collision frequency. At an interval's start, the current state; later, the state after the
+        // last stream (its sums from the stream's pass, its frequency from the engine's step start).
+        PressureTensor P;
+        double nu_ref = 0, h_prev = 0;
+        if (resume) {
+            P = resume->P;
+            nu_ref = resume->nu_ref;
+            h_prev = resume->h_prev;
+        } else {
+            Vec3 Omega{};
+            P = pressure_tensor(engine.store().velocities(), slices, 1.0, Vec3{});
+            nu_ref = collision_frequency(types, blocks, moments_now(Omega), engine.volume());
+        }
         const auto stream = [&](double s) {
-            stream_shear(engine.store(), a, s);
+            P = stream_shear(engine.store(), a, s, slices);
             engine.restart_step(); // the velocities changed: refresh the engine's bounds (exact)
         };
         const auto collide = [&](double h) {
-            engine.run(std::numeric_limits<std::int64_t>::max(), engine.time() + h, tally);
+            const double t0 = engine.time();
+            const StopReason stop = engine.run(cap, t0 + h, tally);
+            nu_ref = engine.collision_frequency(); // its step start: the state after the stream, P's
+            return stop == StopReason::collisions ? engine.time() - t0 : h;
         };
-        double h = resume_h.value_or(0.0);
-        if (!resume_h) {
-            Vec3 Omega{};
-            const double nu_c = collision_frequency(types, blocks, moments_now(Omega), engine.volume());
-            if (!(nu_c > 0) || !std::isfinite(nu_c))
-                throw std::runtime_error("run_replica: no collision can happen: every grain is at rest in "
-                                         "the centre-of-mass frame (translational temperature 0)");
-            h = spec.shear->time_step / nu_c;
-        }
+        const auto step = [&] {
+            // A step expects tau x N/2 collisions; the last one before the pause expects only the
+            // remaining r and a margin of 1 + 3 sqrt(r) (it falls short with probability ~1e-3, and
+            // then one more short step follows), so that one step never spans two output rows.
+            const auto r = static_cast<double>(target - engine.collisions());
+            const double tau = std::min(spec.shear->time_step,
+                                        2.0 * (r + 1.0 + 3.0 * std::sqrt(r)) / static_cast<double>(N));
+            h_prev = strang_step_length(tau, nu_ref, P, a, h_prev);
+            return h_prev;
+        };
         strang_steps(
-            h, stream, collide,
-            [&] {
+            step, stream, collide,
+            [&](double pending) {
                 report();
                 if (engine.collisions() >= target)
                     return true;
-                boundary(p, h);
+                boundary(p, StrangState{pending, h_prev, nu_ref, P});
                 return false;
             },
-            resume_h.has_value());
+            resume ? std::optional(resume->pending) : std::nullopt);
     };
     try {
         for (std::size_t p = first_pause; p < pauses.size(); ++p) {
             const Pause& pause = pauses[p];
             const std::int64_t target = pause.target;
-            if (strang_h) { // resumed between two Strang steps: that interval first
-                advance_shear(target, p, strang_h);
-                strang_h.reset();
-            } else {
+            if (!strang) // resumed between two Strang steps: that interval goes on first
                 boundary(p, std::nullopt);
-                if (spec.shear && engine.collisions() < target)
-                    advance_shear(target, p, std::nullopt);
+            if (spec.shear && (strang || engine.collisions() < target)) {
+                // A step reaching the next pause's count is cut there (rare: the last step aims at
+                // this target), so that no two pauses share one step (an empty interval between two rows).
+                std::int64_t cap = std::numeric_limits<std::int64_t>::max();
+                for (std::size_t q = p + 1; q < pauses.size() && cap == std::numeric_limits<std::int64_t>::max();
+                     ++q)
+                    if (pauses[q].target > target)
+                        cap = pauses[q].target - 1;
+                advance_shear(target, cap, p, strang);
+                strang.reset();
             }
             while (engine.collisions() < target) {
                 const std::int64_t next = std::min(target, engine.collisions() + chunk);
@@ -474,12 +516,23 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
     return ReplicaEnd::finished;
 }
 
+// Constant restitution: the policies the Maxwell kernel (validated: constant only) and the
+// same-type mixture loop are compiled for. Every other mixture runs the per-pair variant policies,
+// whose per-collision dispatch is small beside a table look-up or a contact integration; fewer
+// instantiations of the engine keep the build (and the sanitizer build in CI) short.
+template <class P>
+constexpr bool is_constant_policy = std::is_same_v<P, SmoothConstant> || std::is_same_v<P, RoughConstant>;
+
 // The kernel is a compile-time choice too: one switch per run.
 template <class Policy, bool Mixture>
 ReplicaEnd drive_kernel(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
                         int replica, const ReplicaIo& io) {
-    if (spec.kernel == CollisionKernel::maxwell)
-        return drive<Policy, Mixture, CollisionKernel::maxwell>(spec, blocks, std::move(policies), replica, io);
+    if constexpr (is_constant_policy<Policy>) {
+        if (spec.kernel == CollisionKernel::maxwell)
+            return drive<Policy, Mixture, CollisionKernel::maxwell>(spec, blocks, std::move(policies), replica, io);
+    } else if (spec.kernel == CollisionKernel::maxwell) {
+        throw std::logic_error("run_replica: the Maxwell kernel with a non-constant policy"); // validate()
+    }
     return drive<Policy, Mixture, CollisionKernel::hard_sphere>(spec, blocks, std::move(policies), replica, io);
 }
 
@@ -551,16 +604,21 @@ ReplicaEnd run_replica(const RunSpec& spec, const RestitutionTables& tables, int
     }
     const bool same_type = std::all_of(policies.begin(), policies.end(),
                                        [&](const AnyPolicy& p) { return p.index() == policies[0].index(); });
-    if (same_type) { // one policy type, per-pair values: no variant in the loop
-        return std::visit(
+    if (same_type) { // one constant policy type, per-pair values: no variant in the loop
+        std::optional<ReplicaEnd> done;
+        std::visit(
             [&](const auto& p0) {
                 using P = std::decay_t<decltype(p0)>;
-                std::vector<P> v;
-                for (const AnyPolicy& p : policies)
-                    v.push_back(std::get<P>(p));
-                return drive_kernel<P, true>(spec, blocks, std::move(v), replica, io);
+                if constexpr (is_constant_policy<P>) {
+                    std::vector<P> v;
+                    for (const AnyPolicy& p : policies)
+                        v.push_back(std::get<P>(p));
+                    done = drive_kernel<P, true>(spec, blocks, std::move(v), replica, io);
+                }
             },
             policies[0]);
+        if (done)
+            return *done;
     }
     if (std::none_of(policies.begin(), policies.end(),
                      [](const AnyPolicy& p) { return needs_rotation(p); })) {

@@ -79,6 +79,7 @@
 #include "roughgas/collision/rule.hpp"
 #include "roughgas/collision/sampling.hpp"
 #include "roughgas/core/bytes.hpp"
+#include "roughgas/core/prefetch.hpp"
 #include "roughgas/core/rng.hpp"
 #include "roughgas/dsmc/species.hpp"
 
@@ -334,6 +335,9 @@ class Engine {
         return Store::bytes_per_particle + sizeof(std::uint32_t) + (key_.empty() ? 0 : sizeof(std::uint16_t));
     }
     double step_length() const { return step_length_; }
+    // The Maxwellian collision frequency per grain at the start of the current step (0 before the
+    // first step): what the step length is measured in.
+    double collision_frequency() const { return nu_; }
     // Candidates per unit time, summed over the groups.
     double candidate_rate() const {
         double r = 0;
@@ -352,7 +356,8 @@ class Engine {
 
     // Checkpoints (io/checkpoint_file.hpp). The complete dynamic state: every grain's v and omega,
     // the index array, and per group the blocks, rates, pre-drawn candidates, demotable lists,
-    // stream and clock and counters; the time, the step's end and the engine's counters. An engine
+    // stream and clock and counters; the time, the step's end, length and collision frequency, and
+    // the engine's counters. An engine
     // constructed with the same species, policies and options (threads aside: they never change the
     // results) that loads it continues bit for bit as this one would: the pending candidate, the
     // rings and the demotable lists all shape the trajectory, so nothing is recomputed. Scratch of
@@ -369,7 +374,7 @@ class Engine {
         for (std::uint32_t p : perm_)
             w.put(p);
         w.f64s(thermal_speed_);
-        for (double x : {t_, t_step_end_, step_length_})
+        for (double x : {t_, t_step_end_, step_length_, nu_})
             w.f64(x);
         w.put(stalled_);
         for (std::int64_t x : {c_.collisions, c_.candidates, c_.steps, c_.bound_raises, c_.promotions,
@@ -445,6 +450,7 @@ class Engine {
         t_ = r.f64();
         t_step_end_ = r.f64();
         step_length_ = r.f64();
+        nu_ = r.f64();
         stalled_ = r.get<bool>();
         for (std::int64_t* x : {&c_.collisions, &c_.candidates, &c_.steps, &c_.bound_raises, &c_.promotions,
                                 &c_.range_moves, &c_.retargets, &c_.recentrings, &c_.phases, &c_.overshoots})
@@ -728,10 +734,9 @@ class Engine {
         const Block& X = g.blocks[bp.x];
         const Block& Y = g.blocks[bp.y];
         Candidate c{draw_in(g, X), draw_in(g, Y), X.begin, X.end, Y.begin, Y.end};
-        if (X.size())
-            store_.prefetch(perm_[c.i]);
-        if (Y.size())
-            store_.prefetch(perm_[c.j]);
+        // Stage 1 of 2: the index entries (the grains follow half a ring later, take_candidate).
+        prefetch_line(&perm_[c.i]);
+        prefetch_line(&perm_[c.j]);
         return c;
     }
 
@@ -760,6 +765,13 @@ class Engine {
         const Candidate c = r.c[r.head];
         r.c[r.head] = draw_candidate(g, k);
         r.head = (r.head + 1) % ring_size;
+        // Stage 2 of 2: the grains of the candidate half a ring ahead, whose index entries were
+        // prefetched half a ring ago (a hint only: perm_ may have changed since, which costs a miss).
+        const Candidate& ahead = r.c[(r.head + ring_size / 2) % ring_size];
+        if (ahead.ie > ahead.ib) [[likely]] // else an empty block: i == its begin may be past the end
+            store_.prefetch(perm_[ahead.i]);
+        if (ahead.je > ahead.jb) [[likely]]
+            store_.prefetch(perm_[ahead.j]);
         const BlockPair& bp = g.block_pairs[k];
         const Block& X = g.blocks[bp.x];
         i = retarget(g, c.i, c.ib, c.ie, X);
@@ -1025,12 +1037,14 @@ class Engine {
         const double t0 = t_step_end_;
         if (!(rate > 0) || !(nu > 0)) { // nothing moves: no collision can ever happen
             stalled_ = true;
+            nu_ = 0;
             step_length_ = std::numeric_limits<double>::infinity();
             t_step_end_ = std::numeric_limits<double>::infinity();
             for (Group& g : groups_)
                 g.t_next = std::numeric_limits<double>::infinity();
             return;
         }
+        nu_ = nu;
         step_length_ = opt_.step / nu;
         t_step_end_ = t0 + step_length_;
         for (Group& g : groups_) {
@@ -1064,7 +1078,7 @@ class Engine {
     std::vector<std::uint32_t> count_, ccount_;        // per bucket; per (chunk, bucket)
     std::vector<double> cmax2_, csum2_;                 // per (chunk, bucket); per chunk
     std::vector<Vec3> cps_;                             // per chunk
-    double t_ = 0, t_step_end_ = 0, step_length_ = 0;
+    double t_ = 0, t_step_end_ = 0, step_length_ = 0, nu_ = 0;
     bool stalled_ = false;
     EngineCounters c_{}; // the engine's own counts (steps, frame, phases); the groups keep the rest
 };
