@@ -146,7 +146,8 @@ void remove_stale_temporaries(const fs::path& dir) {
         std::error_code ec;
         for (const auto& e : fs::directory_iterator(d, ec)) {
             const std::string name = e.path().filename().string();
-            const bool ours = name.starts_with("moments.csv.tmp.") || name.starts_with("histograms.csv.tmp.") ||
+            const bool ours = name.starts_with("moments.csv.tmp.") ||
+                              name.starts_with("histograms.csv.tmp.") ||
                               name.starts_with("steady.csv.tmp.") ||
                               (d != dir && name.find(".bin.tmp.") != std::string::npos);
             if (ours && e.is_regular_file())

@@ -46,8 +46,8 @@ class CheckpointWriter {
     void write_manifest_once();
     void rewrite_manifest(); // e.g. a resume with another --checkpoint-every
     // Replica r's file: its rows and histograms so far and its state (empty: finished).
-    void save_replica(std::uint64_t r, std::vector<std::vector<double>> rows, std::vector<HistogramSet> histograms,
-                      std::string state);
+    void save_replica(std::uint64_t r, std::vector<std::vector<double>> rows,
+                      std::vector<HistogramSet> histograms, std::string state);
     const std::filesystem::path& dir() const { return dir_; }
 
   private:

@@ -73,6 +73,12 @@ void check_output_dir(const fs::path& dir, bool force, bool histograms, bool she
         throw InputError(dir.string(), "--out", "--out " + dir.string() + ": exists and is not a directory");
     if (force)
         return;
+    // First, since a stopped run has its CSVs too, and --force would throw its checkpoint away.
+    if (fs::exists(checkpoint_dir(dir)))
+        throw InputError(dir.string(), "--out",
+                         fmt::format("--out {}: {} exists (continue that run with --resume {}, or start "
+                                     "over with --force)",
+                                     dir.string(), checkpoint_dir(dir).string(), dir.string()));
     for (const char* file : {output_file, histograms_file, steady_file}) {
         if ((file == histograms_file && !histograms) || (file == steady_file && !shear))
             continue;
@@ -80,11 +86,6 @@ void check_output_dir(const fs::path& dir, bool force, bool histograms, bool she
             throw InputError(dir.string(), "--out",
                              fmt::format("--out {}: {} exists (use --force to overwrite)", dir.string(), file));
     }
-    if (fs::exists(checkpoint_dir(dir)))
-        throw InputError(dir.string(), "--out",
-                         fmt::format("--out {}: {} exists (continue that run with --resume {}, or use --force "
-                                     "to start over)",
-                                     dir.string(), checkpoint_dir(dir).string(), dir.string()));
 }
 
 // Thrown from a replica's row sink when another replica failed: ends the run early.
@@ -96,7 +97,7 @@ struct RunSetup {
     fs::path dir;
     RunCheckpoint manifest; // the run's identity (also the CSV '#' lines) and checkpoint interval
     bool resuming = false;
-    bool manifest_changed = false; // a resume with another --checkpoint-every
+    bool manifest_changed = false;                      // a resume with another --checkpoint-every
     std::vector<std::optional<ResumedReplica>> resumed; // per replica (resuming)
 };
 
@@ -216,7 +217,8 @@ int run_run(const RunOptions& o, const CLI::App& app) {
     if (setup.resuming) {
         remove_stale_temporaries(dir);
     } else {
-        std::error_code ec; // --force (checked above): an earlier run's checkpoint must not be resumed into this one
+        // --force (checked above): an earlier run's checkpoint must not be resumed into this one.
+        std::error_code ec;
         fs::remove_all(checkpoint_dir(dir), ec);
     }
     CheckpointWriter checkpoints(dir, setup.manifest, setup.resuming && !setup.manifest_changed);
@@ -430,10 +432,11 @@ int run_run(const RunOptions& o, const CLI::App& app) {
     }
     const std::string work =
         kernel.empty() ? std::string("every replica had finished, nothing left to run")
-                       : fmt::format("{:.4g} collisions in {:.3g} s ({:.3g} collisions/s; kernel {})", collisions,
-                                     seconds, seconds > 0 ? collisions / seconds : 0.0, kernel);
-    std::cout << fmt::format("roughgas run: wrote {} ({} rows, {} columns, {} replica{}): {}{}\n", path.string(),
-                             csv.rows(), table.columns().size(), K, K > 1 ? "s" : "", work, steady_note);
+                       : fmt::format("{:.4g} collisions in {:.3g} s ({:.3g} collisions/s; kernel {})",
+                                     collisions, seconds, seconds > 0 ? collisions / seconds : 0.0, kernel);
+    std::cout << fmt::format("roughgas run: wrote {} ({} rows, {} columns, {} replica{}): {}{}\n",
+                             path.string(), csv.rows(), table.columns().size(), K, K > 1 ? "s" : "", work,
+                             steady_note);
     if (hcsv)
         std::cout << fmt::format("roughgas run: wrote {} ({} histogram times x {} bins)\n", hpath.string(),
                                  sets_written, spec.histogram_bins);
@@ -457,11 +460,10 @@ Subcommand add_run_command(CLI::App& parent) {
     CLI::Option* force = app->add_flag(
         "--force", o->force, "overwrite the CSVs and checkpoint of an earlier run in the output directory");
     app->add_option("--checkpoint-every", o->checkpoint_every,
-                    "save each replica's state to DIR/checkpoint every X collisions per particle (with --resume: "
-                    "the new interval)")
+                    "save each replica's state to DIR/checkpoint every X collisions per particle")
         ->check(CLI::PositiveNumber);
     app->add_option("--resume", o->resume,
-                    "continue the run in DIR from its checkpoint (case, seed and overrides are read from there)")
+                    "continue the run in DIR from DIR/checkpoint (its case, seed, --set)")
         ->excludes(case_opt)
         ->excludes(out)
         ->excludes(set)

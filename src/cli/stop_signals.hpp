@@ -25,7 +25,7 @@ class StopSignals {
 
     bool requested() const { return signal_.load(std::memory_order_acquire) != 0; }
     int signal() const { return signal_.load(std::memory_order_acquire); } // 0: none yet
-    std::string name() const;                                             // "SIGINT", "SIGTERM"
+    std::string name() const;                                              // "SIGINT", "SIGTERM"
 
   private:
     void wait();

@@ -162,7 +162,8 @@ struct DriveState {
         next_pause = r.u64();
         const bool between = r.get<bool>();
         StrangState s;
-        for (double* x : {&s.pending, &s.h_prev, &s.nu_ref, &s.P.xx, &s.P.yy, &s.P.zz, &s.P.xy, &s.P.xz, &s.P.yz})
+        for (double* x :
+             {&s.pending, &s.h_prev, &s.nu_ref, &s.P.xx, &s.P.yy, &s.P.zz, &s.P.xy, &s.P.xz, &s.P.yz})
             *x = r.f64();
         strang = between ? std::optional(s) : std::nullopt;
         t_prev = r.f64();
@@ -176,8 +177,9 @@ struct DriveState {
 };
 
 template <class Engine>
-void fill_summary(ReplicaSummary* summary, const Engine& engine, const std::string& kernel, std::int64_t clamped,
-                  std::int64_t resumed_at, std::chrono::steady_clock::time_point wall0) {
+void fill_summary(ReplicaSummary* summary, const Engine& engine, const std::string& kernel,
+                  std::int64_t clamped, std::int64_t resumed_at,
+                  std::chrono::steady_clock::time_point wall0) {
     if (!summary)
         return;
     const EngineCounters& k = engine.counters();
@@ -391,7 +393,8 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
     const auto schedule_next_checkpoint = [&] {
         if (!ckpt || !(ckpt->every > 0))
             return;
-        double k = std::floor(2.0 * static_cast<double>(engine.collisions()) / static_cast<double>(N) / ckpt->every);
+        double k =
+            std::floor(2.0 * static_cast<double>(engine.collisions()) / static_cast<double>(N) / ckpt->every);
         while (target_of(k * ckpt->every) <= engine.collisions())
             k += 1;
         next_checkpoint = target_of(k * ckpt->every);
@@ -486,8 +489,8 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
                 // A step reaching the next pause's count is cut there (rare: the last step aims at
                 // this target), so that no two pauses share one step (an empty interval between two rows).
                 std::int64_t cap = std::numeric_limits<std::int64_t>::max();
-                for (std::size_t q = p + 1; q < pauses.size() && cap == std::numeric_limits<std::int64_t>::max();
-                     ++q)
+                for (std::size_t q = p + 1;
+                     q < pauses.size() && cap == std::numeric_limits<std::int64_t>::max(); ++q)
                     if (pauses[q].target > target)
                         cap = pauses[q].target - 1;
                 advance_shear(target, cap, p, strang);
@@ -525,15 +528,17 @@ constexpr bool is_constant_policy = std::is_same_v<P, SmoothConstant> || std::is
 
 // The kernel is a compile-time choice too: one switch per run.
 template <class Policy, bool Mixture>
-ReplicaEnd drive_kernel(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
-                        int replica, const ReplicaIo& io) {
+ReplicaEnd drive_kernel(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks,
+                        std::vector<Policy> policies, int replica, const ReplicaIo& io) {
     if constexpr (is_constant_policy<Policy>) {
         if (spec.kernel == CollisionKernel::maxwell)
-            return drive<Policy, Mixture, CollisionKernel::maxwell>(spec, blocks, std::move(policies), replica, io);
+            return drive<Policy, Mixture, CollisionKernel::maxwell>(spec, blocks, std::move(policies),
+                                                                    replica, io);
     } else if (spec.kernel == CollisionKernel::maxwell) {
         throw std::logic_error("run_replica: the Maxwell kernel with a non-constant policy"); // validate()
     }
-    return drive<Policy, Mixture, CollisionKernel::hard_sphere>(spec, blocks, std::move(policies), replica, io);
+    return drive<Policy, Mixture, CollisionKernel::hard_sphere>(spec, blocks, std::move(policies), replica,
+                                                                io);
 }
 
 } // namespace

@@ -73,7 +73,8 @@ ByteReader open(std::string_view bytes, Kind kind) {
 }
 
 // A file of `kind`: the header, the run's identity, what `payload(w)` writes, the checksum.
-template <class Payload> std::string encode(Kind kind, const CheckpointRun& run, std::size_t reserve, Payload&& payload) {
+template <class Payload>
+std::string encode(Kind kind, const CheckpointRun& run, std::size_t reserve, Payload&& payload) {
     ByteWriter w;
     w.reserve(reserve + 4096);
     w.raw(std::string_view(magic, sizeof magic));
@@ -166,7 +167,8 @@ std::string encode_checkpoint(const ReplicaCheckpoint& c) {
 }
 
 RunCheckpoint decode_run_checkpoint(std::string_view bytes) {
-    return decode<RunCheckpoint>(bytes, Kind::run, [](ByteReader& r, RunCheckpoint& c) { c.checkpoint_every = r.f64(); });
+    return decode<RunCheckpoint>(bytes, Kind::run,
+                                 [](ByteReader& r, RunCheckpoint& c) { c.checkpoint_every = r.f64(); });
 }
 
 ReplicaCheckpoint decode_replica_checkpoint(std::string_view bytes) {

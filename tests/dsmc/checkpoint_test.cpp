@@ -39,7 +39,8 @@ template <class E> std::string state_of(const E& e) {
 // Every particle's v and omega, bitwise.
 template <class E> bool same_particles(const E& a, const E& b) {
     for (std::size_t i = 0; i < a.particles(); ++i)
-        for (const auto& [x, y] : {std::pair{a.store().v(i), b.store().v(i)}, {a.store().w(i), b.store().w(i)}})
+        for (const auto& [x, y] :
+             {std::pair{a.store().v(i), b.store().v(i)}, {a.store().w(i), b.store().w(i)}})
             if (std::memcmp(&x, &y, sizeof x) != 0)
                 return false;
     return true;
@@ -109,7 +110,8 @@ TEST(EngineState, RefusesTheStateOfAnotherEngine) {
     e.run_collisions(1000);
     const std::string saved = state_of(e);
     const auto load_into = [&](std::int64_t N, int groups, std::string_view bytes) {
-        auto f = make_engine<RoughAoS, false>({grain()}, N, policy, EngineOptions{1.0, 1.0, 5, 0, 2, groups, 1}, 5);
+        auto f = make_engine<RoughAoS, false>({grain()}, N, policy,
+                                              EngineOptions{1.0, 1.0, 5, 0, 2, groups, 1}, 5);
         ByteReader r(bytes);
         f.load_state(r);
     };
@@ -137,7 +139,8 @@ struct Saved {
 
 // Bitwise (NaN, as coll_rate at t = 0, equals itself).
 bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
-    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+    return a.size() == b.size() &&
+           (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
 }
 bool same_bits(const Rows& a, const Rows& b) {
     if (a.size() != b.size())
@@ -151,7 +154,8 @@ bool same_bits(const std::vector<HistogramSet>& a, const std::vector<HistogramSe
     if (a.size() != b.size())
         return false;
     for (std::size_t k = 0; k < a.size(); ++k) {
-        if (!same_bits(std::vector{a[k].t, a[k].coll_per_particle}, std::vector{b[k].t, b[k].coll_per_particle}) ||
+        if (!same_bits(std::vector{a[k].t, a[k].coll_per_particle},
+                       std::vector{b[k].t, b[k].coll_per_particle}) ||
             a[k].species.size() != b[k].species.size())
             return false;
         for (std::size_t s = 0; s < a[k].species.size(); ++s) {
@@ -170,8 +174,8 @@ Outcome run(const RunSpec& spec, ReplicaCheckpoints* ck = nullptr, std::vector<S
     if (ck && saved)
         ck->save = [&](std::string state) { saved->push_back({std::move(state), o}); };
     o.end = run_replica(
-        spec, *tables, 1, [&](std::span<const double> r) { o.rows.emplace_back(r.begin(), r.end()); }, {}, nullptr,
-        [&](const HistogramSet& h) { o.histograms.push_back(h); }, ck);
+        spec, *tables, 1, [&](std::span<const double> r) { o.rows.emplace_back(r.begin(), r.end()); }, {},
+        nullptr, [&](const HistogramSet& h) { o.histograms.push_back(h); }, ck);
     return o;
 }
 
@@ -208,7 +212,8 @@ void expect_resumes_to(const RunSpec& spec, const Saved& c, const Outcome& whole
     joined.histograms.insert(joined.histograms.end(), rest.histograms.begin(), rest.histograms.end());
     EXPECT_EQ(rest.end, ReplicaEnd::finished);
     EXPECT_TRUE(same_bits(joined.rows, whole.rows)) << "resumed after row " << c.before.rows.size();
-    EXPECT_TRUE(same_bits(joined.histograms, whole.histograms)) << "resumed after row " << c.before.rows.size();
+    EXPECT_TRUE(same_bits(joined.histograms, whole.histograms))
+        << "resumed after row " << c.before.rows.size();
 }
 
 void expect_checkpoints_are_exact(const RunSpec& spec, double every, std::size_t min_states) {

@@ -98,7 +98,9 @@ bool wait_until(ChildProcess& child, Ready&& ready, std::chrono::seconds limit =
             return true;
         if (!child.running())
             return ready();
-        struct timespec ms {0, 1000000};
+        struct timespec ms {
+            0, 1000000
+        };
         nanosleep(&ms, nullptr);
     }
     return false;

@@ -37,13 +37,15 @@ std::string rough_cooling(int particles, double end) {
 }
 
 std::string shear() {
-    return "[run]\nkind = \"shear\"\nparticles = 10000\nend = 30.0\noutput_every = 1.0\nreplicas = 2\nseed = 5\n\n"
+    return "[run]\nkind = \"shear\"\nparticles = 10000\nend = 30.0\noutput_every = 1.0\nreplicas = 2\nseed = "
+           "5\n\n"
            "[[species]]\nname = \"grain\"\nmass = 1.0\nradius = 0.5\n\n[collision]\nmodel = \"constant\"\n"
            "alpha = 0.9\nbeta = 0.0\n\n[shear]\nrate = 1.0\n";
 }
 
 std::string rough_mixture() {
-    return "[run]\nparticles = 10000\nend = 30.0\noutput_every = 0.5\noutput_spacing = \"log\"\nreplicas = 2\n"
+    return "[run]\nparticles = 10000\nend = 30.0\noutput_every = 0.5\noutput_spacing = \"log\"\nreplicas = "
+           "2\n"
            "seed = 2\nhistogram_every = 10.0\nhistogram_bins = 16\n\n"
            "[[species]]\nname = \"small\"\nmass = 1.0\nradius = 0.5\nfraction = 0.5\n\n"
            "[[species]]\nname = \"large\"\nmass = 8.0\nradius = 1.0\nfraction = 0.5\n\n"
@@ -79,13 +81,16 @@ bool any_replica_file(const fs::path& out) {
 }
 
 void sleep_ms(int ms) {
-    struct timespec t {ms / 1000, (ms % 1000) * 1000000L};
+    struct timespec t {
+        ms / 1000, (ms % 1000) * 1000000L
+    };
     nanosleep(&t, nullptr);
 }
 
 // A SIGKILL at a moment that depends on `when`: 0 as soon as the run exists (run.bin: before any
 // replica state, or about then), else `when` ms after the first replica state. Returns the status.
-int start_and_kill(const std::vector<std::string>& args, const fs::path& out, int when, const test::ScratchDir& dir) {
+int start_and_kill(const std::vector<std::string>& args, const fs::path& out, int when,
+                   const test::ScratchDir& dir) {
     test::ChildProcess child(args, dir / "child_out.txt", dir / "child_err.txt");
     const bool started = test::wait_until(child, [&] {
         return when == 0 ? fs::exists(out / "checkpoint" / "run.bin") : any_replica_file(out);
@@ -112,10 +117,10 @@ TEST_P(KillAndResume, ResumedRunIsByteIdenticalToTheUninterruptedOne) {
     for (int k = 0; k < 4; ++k) {
         const fs::path out = dir / ("kill" + std::to_string(k));
         const int when = k == 0 ? 0 : delay(rng);
-        const std::string context = "kill " + std::to_string(k) + " at " + std::to_string(when) + " ms (seed " +
-                                    std::to_string(seed) + ")";
-        const int status = start_and_kill({"run", f.string(), "--out", out.string(), "--quiet", "--threads", "2",
-                                           "--checkpoint-every", s.checkpoint_every},
+        const std::string context = "kill " + std::to_string(k) + " at " + std::to_string(when) +
+                                    " ms (seed " + std::to_string(seed) + ")";
+        const int status = start_and_kill({"run", f.string(), "--out", out.string(), "--quiet", "--threads",
+                                           "2", "--checkpoint-every", s.checkpoint_every},
                                           out, when, dir);
         // Killed, or (on a fast machine) finished just before the kill.
         EXPECT_TRUE((WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) ||
@@ -133,11 +138,11 @@ TEST_P(KillAndResume, ResumedRunIsByteIdenticalToTheUninterruptedOne) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(E2e, KillAndResume,
-                         ::testing::Values(Scenario{"RoughCooling3Replicas", rough_cooling(20000, 40.0), "1.5"},
-                                           Scenario{"Shear", shear(), "1"},
-                                           Scenario{"RoughMixture", rough_mixture(), "2"}),
-                         [](const ::testing::TestParamInfo<Scenario>& info) { return info.param.name; });
+INSTANTIATE_TEST_SUITE_P(
+    E2e, KillAndResume,
+    ::testing::Values(Scenario{"RoughCooling3Replicas", rough_cooling(20000, 40.0), "1.5"},
+                      Scenario{"Shear", shear(), "1"}, Scenario{"RoughMixture", rough_mixture(), "2"}),
+    [](const ::testing::TestParamInfo<Scenario>& info) { return info.param.name; });
 
 // Every line after the '#' lines has as many cells as the header: a CSV that a reader takes as is.
 std::size_t valid_rows(const fs::path& csv) {
@@ -165,14 +170,15 @@ struct Stopped {
     std::string err;
 };
 template <class Ready>
-Stopped start_and_stop(const std::vector<std::string>& args, int sig, Ready&& ready, const test::ScratchDir& dir,
-                       bool twice = false) {
+Stopped start_and_stop(const std::vector<std::string>& args, int sig, Ready&& ready,
+                       const test::ScratchDir& dir, bool twice = false) {
     test::ChildProcess child(args, dir / "child_out.txt", dir / "child_err.txt");
     EXPECT_TRUE(test::wait_until(child, ready)) << test::read_file(dir / "child_err.txt");
     child.signal(sig);
     if (twice) { // once the first is taken (the message is out), a second one ends it at once
         test::wait_until(child, [&] {
-            return test::read_file(dir / "child_err.txt").find("stopping at the next step") != std::string::npos;
+            return test::read_file(dir / "child_err.txt").find("stopping at the next step") !=
+                   std::string::npos;
         });
         child.signal(sig);
     }
@@ -196,11 +202,13 @@ TEST(Signals, SigtermAndSigintCheckpointWriteTheCsvSoFarAndExitNonZero) {
 
     { // SIGTERM with --checkpoint-every: replicas 0 and 1 run, replica 2 waits for a thread
         const fs::path out = dir / "sigterm";
-        const Stopped s = start_and_stop(run_args(out, true), SIGTERM, [&] { return any_replica_file(out); }, dir);
+        const Stopped s = start_and_stop(
+            run_args(out, true), SIGTERM, [&] { return any_replica_file(out); }, dir);
         ASSERT_TRUE(WIFEXITED(s.status)) << s.err;
         EXPECT_EQ(WEXITSTATUS(s.status), 143) << s.err;
         EXPECT_NE(s.err.find("stopped by SIGTERM"), std::string::npos) << s.err;
-        EXPECT_NE(s.err.find("continue with: roughgas run --resume " + out.string()), std::string::npos) << s.err;
+        EXPECT_NE(s.err.find("continue with: roughgas run --resume " + out.string()), std::string::npos)
+            << s.err;
         EXPECT_EQ(valid_rows(out / "moments.csv"), 0u); // no row is complete without replica 2
         for (const char* file : {"run.bin", "replica_0.bin", "replica_1.bin"})
             EXPECT_TRUE(fs::exists(out / "checkpoint" / file)) << file;
@@ -218,7 +226,7 @@ TEST(Signals, SigtermAndSigintCheckpointWriteTheCsvSoFarAndExitNonZero) {
         EXPECT_TRUE(fs::exists(out / "checkpoint" / "run.bin"));
         EXPECT_TRUE(any_replica_file(out));
         const std::size_t rows = valid_rows(out / "moments.csv");
-        EXPECT_GE(rows, 1u);  // t = 0 at least: the signal came once the file existed
+        EXPECT_GE(rows, 1u);   // t = 0 at least: the signal came once the file existed
         EXPECT_LT(rows, 151u); // not all: the run stopped
         run_to_end("run --resume '" + out.string() + "' --threads 2", dir);
         expect_same_outputs(reference, out, "SIGINT");

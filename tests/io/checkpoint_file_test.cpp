@@ -15,7 +15,8 @@ namespace roughgas {
 namespace {
 
 CheckpointRun a_run() {
-    return {"0.1.0", "cases/hcs_rough.toml", {"run.particles=2000", "run.seed=3"}, "[run]\nseed = 3\n", 3, 4, 2000};
+    return {"0.1.0", "cases/hcs_rough.toml", {"run.particles=2000", "run.seed=3"}, "[run]\nseed = 3\n", 3, 4,
+            2000};
 }
 
 ReplicaCheckpoint a_replica() {
@@ -90,9 +91,11 @@ TEST(CheckpointFile, AnyFlippedByteIsRefused) {
 TEST(CheckpointFile, OtherVersionOrKindIsNamed) {
     std::string bytes = encode_checkpoint(a_replica());
     bytes[8] = 7; // the format version (after the 8-byte magic), before the checksum is looked at
-    EXPECT_NE(reason(bytes).find("checkpoint format version 7; this roughgas reads version 1"), std::string::npos)
+    EXPECT_NE(reason(bytes).find("checkpoint format version 7; this roughgas reads version 1"),
+              std::string::npos)
         << reason(bytes);
-    EXPECT_NE(reason("RGTCACHE and more bytes than a header").find("not a roughgas checkpoint"), std::string::npos);
+    EXPECT_NE(reason("RGTCACHE and more bytes than a header").find("not a roughgas checkpoint"),
+              std::string::npos);
     const std::string run = encode_checkpoint(RunCheckpoint{a_run(), 1.0});
     EXPECT_NE(reason(run).find("not a replica's checkpoint"), std::string::npos) << reason(run);
     EXPECT_THROW(decode_run_checkpoint(encode_checkpoint(a_replica())), CheckpointError);
@@ -121,7 +124,8 @@ TEST(CheckpointFile, DifferenceNamesWhatDiffers) {
     EXPECT_NE(d.find("seed 4, expected 3"), std::string::npos) << d;
     EXPECT_NE(d.find("1000 particles, expected 2000"), std::string::npos) << d;
     EXPECT_NE(d.find("written by roughgas 0.2.0, expected 0.1.0"), std::string::npos) << d;
-    EXPECT_NE(d.find("line 2 of the resolved case is `seed = 4`, expected `seed = 3`"), std::string::npos) << d;
+    EXPECT_NE(d.find("line 2 of the resolved case is `seed = 4`, expected `seed = 3`"), std::string::npos)
+        << d;
 }
 
 TEST(CheckpointFile, Paths) {

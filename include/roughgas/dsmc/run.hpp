@@ -51,7 +51,7 @@ struct ReplicaSummary {
     std::size_t memory_per_particle = 0;  // the store, the engine's index array and its step-start scratch
     int groups = 1;                 // random groups per step (dsmc/engine.hpp), run in parallel
     std::int64_t collisions = 0;
-    std::int64_t resumed_at = 0;    // collisions before the checkpoint it resumed from (done by an earlier run)
+    std::int64_t resumed_at = 0;    // collisions before the checkpoint it resumed from (an earlier run's)
     std::int64_t candidates = 0;    // candidate pairs drawn (collisions/candidates: the majorant's acceptance)
     std::int64_t steps = 0;
     std::int64_t bound_raises = 0;  // collisions that raised the majorant within a step

@@ -49,9 +49,9 @@ struct RunCheckpoint {
 struct ReplicaCheckpoint {
     CheckpointRun run;
     std::uint64_t replica = 0;
-    std::vector<std::vector<double>> rows;  // run_replica's rows so far (t = 0 first)
-    std::vector<HistogramSet> histograms;   // its histogram sets so far
-    std::string state;                      // ReplicaCheckpoints state; empty: the replica had finished
+    std::vector<std::vector<double>> rows; // run_replica's rows so far (t = 0 first)
+    std::vector<HistogramSet> histograms;  // its histogram sets so far
+    std::string state;                     // ReplicaCheckpoints state; empty: the replica had finished
 };
 
 // A file that cannot be used: the message says why (the caller names the file).
