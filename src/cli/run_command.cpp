@@ -8,13 +8,21 @@
 // depend on the thread count). The file is rewritten atomically as rows complete (at every output
 // time, batched only when rewriting would take more than a tenth of the time, and at the end), so a
 // crash or a kill keeps what was computed.
-// `roughgas run --resume DIR` and `--checkpoint-every` are accepted but not implemented yet (exit 1).
+//
+// Checkpoints (issue 6; README "Checkpoints and restart"): with --checkpoint-every X each replica
+// saves its state to DIR/checkpoint/replica_R.bin every X collisions per particle (run_checkpoints.hpp,
+// io/checkpoint_file.hpp), and `roughgas run --resume DIR` continues from those files: the CSVs come
+// out byte for byte as from the run without a stop. SIGINT/SIGTERM (stop_signals.hpp) stop every
+// replica at its next boundary with a checkpoint, write the CSV so far and exit 128 + the signal.
 #include "commands.hpp"
 #include "progress.hpp"
 #include "quasistatic_warning.hpp"
+#include "run_checkpoints.hpp"
+#include "stop_signals.hpp"
 
 #include "roughgas/dsmc/run.hpp"
 #include "roughgas/io/case_file.hpp"
+#include "roughgas/io/checkpoint_file.hpp"
 #include "roughgas/io/csv_writer.hpp"
 #include "roughgas/io/histograms_csv.hpp"
 #include "roughgas/io/moments_csv.hpp"
@@ -44,6 +52,7 @@ namespace fs = std::filesystem;
 
 constexpr const char* output_file = "moments.csv";
 constexpr const char* histograms_file = "histograms.csv";
+constexpr const char* steady_file = "steady.csv";
 
 struct RunOptions {
     std::string case_file;
@@ -58,13 +67,22 @@ struct RunOptions {
 };
 
 // Never overwrite earlier results by accident: that is an input error, reported before any work.
-void check_output_dir(const fs::path& dir, bool force, bool histograms) {
+// A checkpoint of an earlier run counts too: it is continued with --resume, or replaced with --force.
+void check_output_dir(const fs::path& dir, bool force, bool histograms, bool shear) {
     if (fs::exists(dir) && !fs::is_directory(dir))
         throw InputError(dir.string(), "--out", "--out " + dir.string() + ": exists and is not a directory");
-    for (const char* file : {output_file, histograms_file}) {
-        if (file == histograms_file && !histograms)
+    if (force)
+        return;
+    // First, since a stopped run has its CSVs too, and --force would throw its checkpoint away.
+    if (fs::exists(checkpoint_dir(dir)))
+        throw InputError(dir.string(), "--out",
+                         fmt::format("--out {}: {} exists (continue that run with --resume {}, or start "
+                                     "over with --force)",
+                                     dir.string(), checkpoint_dir(dir).string(), dir.string()));
+    for (const char* file : {output_file, histograms_file, steady_file}) {
+        if ((file == histograms_file && !histograms) || (file == steady_file && !shear))
             continue;
-        if (!force && fs::exists(dir / file))
+        if (fs::exists(dir / file))
             throw InputError(dir.string(), "--out",
                              fmt::format("--out {}: {} exists (use --force to overwrite)", dir.string(), file));
     }
@@ -73,23 +91,59 @@ void check_output_dir(const fs::path& dir, bool force, bool histograms) {
 // Thrown from a replica's row sink when another replica failed: ends the run early.
 struct Cancelled {};
 
-int run_run(const RunOptions& o, const CLI::App& app) {
-    if (!o.resume.empty()) {
-        std::cerr << "roughgas run --resume: not implemented yet (checkpoints are planned)\n";
-        return exit_failure;
-    }
+// The run to do: a new one from CASE.toml, or the one stored in DIR/checkpoint (--resume).
+struct RunSetup {
+    CaseConfig cfg;
+    fs::path dir;
+    RunCheckpoint manifest; // the run's identity (also the CSV '#' lines) and checkpoint interval
+    bool resuming = false;
+    bool manifest_changed = false;                      // a resume with another --checkpoint-every
+    std::vector<std::optional<ResumedReplica>> resumed; // per replica (resuming)
+};
+
+RunSetup new_run(const RunOptions& o, const CLI::App& app) {
     if (o.case_file.empty() || o.out.empty())
         throw InputError("", "", "roughgas run: give CASE.toml and --out DIR, or --resume DIR");
     std::vector<std::string> sets = o.sets;
     if (app.count("--seed") > 0)
-        sets.push_back("run.seed=" + std::to_string(o.seed));          // --seed is --set run.seed=S
-    const CaseConfig cfg = load_case(o.case_file, sets, CaseUse::run); // invalid input: exit 2
-    if (app.count("--checkpoint-every") > 0) {
-        std::cerr << "roughgas run --checkpoint-every: not implemented yet (checkpoints are planned)\n";
-        return exit_failure;
+        sets.push_back("run.seed=" + std::to_string(o.seed)); // --seed is --set run.seed=S
+    RunSetup s;
+    s.cfg = load_case(o.case_file, sets, CaseUse::run); // invalid input: exit 2
+    s.dir = o.out;
+    check_output_dir(s.dir, o.force, s.cfg.run.histogram_every > 0, s.cfg.run.kind == RunKind::shear);
+    s.manifest.run = {roughgas_version(),
+                      o.case_file,
+                      sets,
+                      emit_case(s.cfg),
+                      s.cfg.run.seed,
+                      static_cast<std::uint64_t>(s.cfg.run.replicas),
+                      static_cast<std::uint64_t>(s.cfg.run.particles)};
+    s.manifest.checkpoint_every = o.checkpoint_every;
+    return s;
+}
+
+RunSetup resume_run(const RunOptions& o, const CLI::App& app) {
+    ResumedRun r = read_resumable_run(o.resume); // refusals: exit 2, nothing written
+    RunSetup s;
+    s.cfg = std::move(r.cfg);
+    s.dir = o.resume;
+    s.manifest = std::move(r.manifest);
+    s.resuming = true;
+    s.resumed = std::move(r.replicas);
+    if (app.count("--checkpoint-every") > 0 && o.checkpoint_every != s.manifest.checkpoint_every) {
+        s.manifest.checkpoint_every = o.checkpoint_every;
+        s.manifest_changed = true;
     }
-    const fs::path dir(o.out);
-    check_output_dir(dir, o.force, cfg.run.histogram_every > 0);
+    return s;
+}
+
+int run_run(const RunOptions& o, const CLI::App& app) {
+    // First: the signals are blocked in every thread started from here on (the OpenMP pool too).
+    const StopSignals signals;
+    RunSetup setup = o.resume.empty() ? new_run(o, app) : resume_run(o, app);
+    const CaseConfig& cfg = setup.cfg;
+    const fs::path& dir = setup.dir;
+    const double checkpoint_every = setup.manifest.checkpoint_every;
 
     RunSpec spec;
     try {
@@ -115,11 +169,13 @@ int run_run(const RunOptions& o, const CLI::App& app) {
     const int K = spec.replicas;
 
     MomentsTable table(spec);
+    // Nothing here may differ between a run and its resumption (the CSVs must be byte-identical):
+    // the case file and overrides are those the run was started with, kept in the checkpoint.
     CsvProvenance prov;
-    prov.case_file = o.case_file;
-    prov.overrides = sets;
+    prov.case_file = setup.manifest.run.case_file;
+    prov.overrides = setup.manifest.run.overrides;
     prov.seed = cfg.run.seed;
-    prov.resolved_case = emit_case(cfg);
+    prov.resolved_case = setup.manifest.run.resolved_case;
     prov.notes = {
         "t in the case's time unit; coll_per_particle = 2 x collisions / N; T in energy units (k_B = 1)",
         fmt::format("replicas: {}{}", K,
@@ -158,6 +214,16 @@ int run_run(const RunOptions& o, const CLI::App& app) {
                                                   : fmt::format("built in {:.2f} s", i.seconds));
     }
     fs::create_directories(dir);
+    if (setup.resuming) {
+        remove_stale_temporaries(dir);
+    } else {
+        // --force (checked above): an earlier run's checkpoint must not be resumed into this one.
+        std::error_code ec;
+        fs::remove_all(checkpoint_dir(dir), ec);
+    }
+    CheckpointWriter checkpoints(dir, setup.manifest, setup.resuming && !setup.manifest_changed);
+    if (checkpoint_every > 0) // a kill before the first replica checkpoint still leaves a resumable run
+        checkpoints.write_manifest_once();
     const fs::path path = dir / output_file;
     const fs::path hpath = dir / histograms_file;
     // sets[r][k]: replica r's histograms at histogram time k; written (atomically) as they complete.
@@ -181,6 +247,16 @@ int run_run(const RunOptions& o, const CLI::App& app) {
 
     // rows[r][k]: replica r's row at output k. A row goes to the file once every replica has it.
     std::vector<std::vector<std::vector<double>>> rows(static_cast<std::size_t>(K));
+    // A resumed run starts from the rows and histograms in the checkpoints.
+    // One byte per replica (not vector<bool>, whose bits share words): each replica's thread writes its own.
+    std::vector<char> finished(static_cast<std::size_t>(K), 0);
+    for (std::size_t r = 0; r < setup.resumed.size(); ++r) {
+        if (!setup.resumed[r])
+            continue;
+        rows[r] = std::move(setup.resumed[r]->rows);
+        hsets[r] = std::move(setup.resumed[r]->histograms);
+        finished[r] = setup.resumed[r]->finished;
+    }
     std::mutex mutex;
     std::size_t combined = 0, on_disk = 0;
     std::vector<std::vector<double>> table_rows; // the combined rows, for the steady-state summary
@@ -209,9 +285,27 @@ int run_run(const RunOptions& o, const CLI::App& app) {
             write_cost = last_write - t;
         }
     };
+    // Replica r's checkpoint: its rows and histograms so far with its state (empty: finished).
+    const auto save_replica = [&](int r, std::string state) {
+        std::vector<std::vector<double>> r_rows;
+        std::vector<HistogramSet> r_sets;
+        {
+            std::lock_guard lock(mutex);
+            r_rows = rows[static_cast<std::size_t>(r)];
+            r_sets = hsets[static_cast<std::size_t>(r)];
+        }
+        checkpoints.save_replica(static_cast<std::uint64_t>(r), std::move(r_rows), std::move(r_sets),
+                                 std::move(state));
+    };
 
     ProgressLine progress(o.quiet ? nullptr : &std::cerr, K, ::isatty(STDERR_FILENO) == 1);
     std::vector<ReplicaSummary> summaries(static_cast<std::size_t>(K));
+    std::vector<char> final_saved(static_cast<std::size_t>(K), 0);
+    for (int r = 0; r < K; ++r)
+        if (finished[static_cast<std::size_t>(r)]) {
+            final_saved[static_cast<std::size_t>(r)] = 1; // its file says so already
+            progress.update(r, cfg.run.end, cfg.run.end, 0);
+        }
     std::atomic<bool> cancel{false};
     std::exception_ptr error;
     // --threads T is shared: min(T, K) replicas at a time, each with T/min(T, K) threads over the
@@ -222,9 +316,12 @@ int run_run(const RunOptions& o, const CLI::App& app) {
         omp_set_max_active_levels(2);
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int r = 0; r < K; ++r) {
+        const auto k = static_cast<std::size_t>(r);
         try {
             if (cancel)
                 throw Cancelled{};
+            if (finished[k] || signals.requested()) // done in an earlier run; or stopped before it started
+                continue;
             const RowSink sink = [&, r](std::span<const double> row) {
                 if (cancel)
                     throw Cancelled{};
@@ -246,7 +343,27 @@ int run_run(const RunOptions& o, const CLI::App& app) {
                     flush_histograms();
                 };
             }
-            run_replica(spec, *tables, r, sink, report, &summaries[static_cast<std::size_t>(r)], hsink);
+            ReplicaCheckpoints ck;
+            ck.every = checkpoint_every;
+            ck.save = [&, r](std::string state) { save_replica(r, std::move(state)); };
+            ck.stop = [&] { return signals.requested(); };
+            if (setup.resuming && setup.resumed[k]) // checked before the run; read again now (memory)
+                ck.resume = read_replica_state(dir, k, setup.manifest.run);
+            ReplicaEnd end;
+            try {
+                end = run_replica(spec, *tables, r, sink, report, &summaries[k], hsink, &ck);
+            } catch (const ResumeError& e) {
+                const fs::path file = replica_checkpoint_path(dir, k);
+                throw InputError(file.string(), "--resume",
+                                 std::string("cannot resume: its state does not fit the case: ") + e.what());
+            }
+            if (end == ReplicaEnd::finished) {
+                finished[k] = 1;
+                if (checkpoint_every > 0) { // a resume will not run it again
+                    save_replica(r, {});
+                    final_saved[k] = 1;
+                }
+            }
         } catch (const Cancelled&) {
         } catch (...) {
             std::lock_guard lock(mutex);
@@ -259,6 +376,8 @@ int run_run(const RunOptions& o, const CLI::App& app) {
     {
         std::lock_guard lock(mutex);
         flush(true);
+        if (htable)
+            flush_histograms(); // a resumed run whose replicas had all finished: from the checkpoints
     }
     if (error) {
         try {
@@ -267,6 +386,21 @@ int run_run(const RunOptions& o, const CLI::App& app) {
             throw std::runtime_error(
                 fmt::format("{}; the {} rows before it are in {}", e.what(), on_disk, path.string()));
         }
+    }
+    if (std::find(finished.begin(), finished.end(), 0) != finished.end()) {
+        // Stopped by a signal: the running replicas saved their states; the finished ones save their
+        // rows now, so that a resume runs neither again (not-started ones start afresh).
+        checkpoints.write_manifest_once();
+        if (on_disk == 0)
+            csv.write(path); // the header, even when no row is complete yet: the run's file exists
+        for (int r = 0; r < K; ++r)
+            if (finished[static_cast<std::size_t>(r)] && !final_saved[static_cast<std::size_t>(r)])
+                save_replica(r, {});
+        std::cerr << fmt::format("roughgas run: stopped by {}: {} complete rows in {}; checkpoint in {}; "
+                                 "continue with: roughgas run --resume {}\n",
+                                 signals.name(), csv.rows(), path.string(), checkpoint_dir(dir).string(),
+                                 dir.string());
+        return 128 + signals.signal();
     }
 
     std::string steady_note;
@@ -279,25 +413,30 @@ int run_run(const RunOptions& o, const CLI::App& app) {
                            "(observables/steady_state.hpp); X_err = batch-means standard error");
         CsvWriter steady(steady_csv_columns(st), sp);
         steady.add_row(steady_csv_row(st, names, table_rows));
-        steady.write(dir / "steady.csv");
+        steady.write(dir / steady_file);
         const auto cpp = std::find(names.begin(), names.end(), "coll_per_particle") - names.begin();
         steady_note = st.reached
                           ? fmt::format("; steady from {:.4g} collisions per particle ({} rows averaged): {}",
                                         table_rows[st.first_row][static_cast<std::size_t>(cpp)], st.rows,
-                                        (dir / "steady.csv").string())
+                                        (dir / steady_file).string())
                           : fmt::format("; steady state NOT reached (drift of T or P*_ij resolved); {} holds "
                                         "the second half's averages",
-                                        (dir / "steady.csv").string());
+                                        (dir / steady_file).string());
     }
-
     double collisions = 0, seconds = progress.seconds();
-    for (const ReplicaSummary& s : summaries)
-        collisions += static_cast<double>(s.collisions);
-    std::cout << fmt::format(
-        "roughgas run: wrote {} ({} rows, {} columns, {} replica{}): {:.4g} collisions in "
-        "{:.3g} s ({:.3g} collisions/s; kernel {}){}\n",
-        path.string(), csv.rows(), table.columns().size(), K, K > 1 ? "s" : "", collisions, seconds,
-        seconds > 0 ? collisions / seconds : 0.0, summaries[0].kernel, steady_note);
+    std::string kernel; // of a replica that ran in this process (a resumed one may have none left)
+    for (const ReplicaSummary& s : summaries) {
+        collisions += static_cast<double>(s.collisions - s.resumed_at);
+        if (!s.kernel.empty())
+            kernel = s.kernel;
+    }
+    const std::string work =
+        kernel.empty() ? std::string("every replica had finished, nothing left to run")
+                       : fmt::format("{:.4g} collisions in {:.3g} s ({:.3g} collisions/s; kernel {})",
+                                     collisions, seconds, seconds > 0 ? collisions / seconds : 0.0, kernel);
+    std::cout << fmt::format("roughgas run: wrote {} ({} rows, {} columns, {} replica{}): {}{}\n",
+                             path.string(), csv.rows(), table.columns().size(), K, K > 1 ? "s" : "", work,
+                             steady_note);
     if (hcsv)
         std::cout << fmt::format("roughgas run: wrote {} ({} histogram times x {} bins)\n", hpath.string(),
                                  sets_written, spec.histogram_bins);
@@ -311,19 +450,25 @@ Subcommand add_run_command(CLI::App& parent) {
     CLI::App* app = parent.add_subcommand("run", "run a DSMC simulation of the homogeneous cooling state or of "
                                                  "uniform shear flow, writing DIR/moments.csv");
     CLI::Option* case_opt = app->add_option("CASE", o->case_file, "case file (TOML)");
-    app->add_option("--out", o->out, "output directory (moments.csv)");
-    add_set_option(*app, o->sets);
-    app->add_option("--seed", o->seed, "random seed (overrides run.seed)");
+    CLI::Option* out = app->add_option("--out", o->out, "output directory (moments.csv)");
+    CLI::Option* set = add_set_option(*app, o->sets);
+    CLI::Option* seed = app->add_option("--seed", o->seed, "random seed (overrides run.seed)");
     app->add_option("--threads", o->threads,
                     "threads for the replicas and within each replica (default: all; results do not depend on it)")
         ->check(CLI::PositiveNumber);
     app->add_flag("--quiet", o->quiet, "no progress output");
-    app->add_flag("--force", o->force, "overwrite moments.csv in an existing output directory");
+    CLI::Option* force = app->add_flag(
+        "--force", o->force, "overwrite the CSVs and checkpoint of an earlier run in the output directory");
     app->add_option("--checkpoint-every", o->checkpoint_every,
-                    "checkpoint interval in collisions per particle (not implemented yet)")
+                    "save each replica's state to DIR/checkpoint every X collisions per particle")
         ->check(CLI::PositiveNumber);
-    app->add_option("--resume", o->resume, "continue the checkpointed run in DIR (not implemented yet)")
-        ->excludes(case_opt);
+    app->add_option("--resume", o->resume,
+                    "continue the run in DIR from DIR/checkpoint (its case, seed, --set)")
+        ->excludes(case_opt)
+        ->excludes(out)
+        ->excludes(set)
+        ->excludes(seed)
+        ->excludes(force);
     return {app, [o, app] { return run_run(*o, *app); }};
 }
 

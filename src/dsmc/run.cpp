@@ -1,7 +1,9 @@
 // One replica of a homogeneous cooling run: the kernel is chosen once (std::visit over the pairs'
-// restitution models, style.md §2.3) and the loop below only pauses it at the output times.
+// restitution models, style.md §2.3) and the loop below only pauses it at the output times (and
+// saves or restores its state for checkpoints, between chunks of the loop).
 #include "roughgas/dsmc/run.hpp"
 
+#include "roughgas/core/bytes.hpp"
 #include "roughgas/dsmc/engine.hpp"
 #include "roughgas/dsmc/init.hpp"
 #include "roughgas/dsmc/particles.hpp"
@@ -15,6 +17,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -68,6 +71,10 @@ void validate(const RunSpec& spec) {
     }
     require(spec.histogram_bins >= 1 && spec.histogram_max > 0 && std::isfinite(spec.histogram_max),
             "histogram_bins must be >= 1 and histogram_max > 0");
+    if (spec.kernel == CollisionKernel::maxwell)
+        require(std::all_of(spec.pairs.begin(), spec.pairs.end(),
+                            [](const PairRestitution& p) { return std::holds_alternative<ConstantRestitution>(p); }),
+                "the Maxwell kernel needs constant restitution for every pair");
     if (spec.shear) {
         require(std::isfinite(spec.shear->rate) && spec.shear->rate > 0, "shear rate must be > 0");
         require(std::isfinite(spec.shear->time_step) && spec.shear->time_step > 0,
@@ -117,11 +124,101 @@ struct Tally {
     }
 };
 
+// Between two Strang steps of a shear interval (dsmc/shear.hpp strang_steps): the stream the step
+// just done still owes, its length, and what the next step's length is predicted from.
+struct StrangState {
+    double pending = 0, h_prev = 0, nu_ref = 0;
+    PressureTensor P;
+};
+
+// drive()'s state besides the engine's, in a checkpoint: where the replica is in its output schedule
+// (the next pause; between two Strang steps, the shear interval's state) and what its next row's
+// rates are measured from.
+struct DriveState {
+    std::string kernel; // the specialised loop that saved it: a state of another loop is refused
+    std::uint64_t next_pause = 0;
+    std::optional<StrangState> strang;
+    double t_prev = 0;
+    std::int64_t c_prev = 0;
+    Tally tally;
+
+    void save(ByteWriter& w) const {
+        w.str(kernel);
+        w.u64(next_pause);
+        w.put(strang.has_value());
+        const StrangState s = strang.value_or(StrangState{});
+        for (double x : {s.pending, s.h_prev, s.nu_ref, s.P.xx, s.P.yy, s.P.zz, s.P.xy, s.P.xz, s.P.yz})
+            w.f64(x);
+        w.f64(t_prev);
+        w.put(c_prev);
+        w.f64(tally.dE);
+        w.u64(tally.per_type.size());
+        for (std::int64_t x : tally.per_type)
+            w.put(x);
+        w.put(tally.clamped);
+    }
+    void load(ByteReader& r) {
+        kernel = r.str();
+        next_pause = r.u64();
+        const bool between = r.get<bool>();
+        StrangState s;
+        for (double* x :
+             {&s.pending, &s.h_prev, &s.nu_ref, &s.P.xx, &s.P.yy, &s.P.zz, &s.P.xy, &s.P.xz, &s.P.yz})
+            *x = r.f64();
+        strang = between ? std::optional(s) : std::nullopt;
+        t_prev = r.f64();
+        c_prev = r.get<std::int64_t>();
+        tally.dE = r.f64();
+        tally.per_type.resize(r.count(sizeof(std::int64_t)));
+        for (std::int64_t& x : tally.per_type)
+            x = r.get<std::int64_t>();
+        tally.clamped = r.get<std::int64_t>();
+    }
+};
+
+template <class Engine>
+void fill_summary(ReplicaSummary* summary, const Engine& engine, const std::string& kernel,
+                  std::int64_t clamped, std::int64_t resumed_at,
+                  std::chrono::steady_clock::time_point wall0) {
+    if (!summary)
+        return;
+    const EngineCounters& k = engine.counters();
+    summary->kernel = kernel;
+    summary->groups = static_cast<int>(engine.groups());
+    summary->bytes_per_particle = std::remove_cvref_t<decltype(engine.store())>::bytes_per_particle;
+    summary->memory_per_particle = engine.bytes_per_particle();
+    summary->collisions = k.collisions;
+    summary->resumed_at = resumed_at;
+    summary->candidates = k.candidates;
+    summary->steps = k.steps;
+    summary->bound_raises = k.bound_raises;
+    summary->promotions = k.promotions;
+    summary->beta_clamped = clamped;
+    summary->max_mean_drift = k.max_mean_drift;
+    summary->recentrings = k.recentrings;
+    summary->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+}
+
+// What a replica reports to and is steered by: run_replica's arguments after the replica index.
+struct ReplicaIo {
+    const RowSink& sink;
+    const ProgressSink& progress;
+    ReplicaSummary* summary;
+    const HistogramSink& histograms;
+    const ReplicaCheckpoints* checkpoints;
+};
+
+// Thrown inside drive() once a stop was asked for and the state saved: unwinds the loops.
+struct Stopped {};
+
 template <class Policy, bool Mixture, CollisionKernel Kernel>
-void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
-           int replica, const RowSink& sink, const ProgressSink& progress, ReplicaSummary* summary,
-           const HistogramSink& histograms) {
+ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
+                 int replica, const ReplicaIo& io) {
     using Store = std::conditional_t<Policy::needs_rotation, RoughAoS, SmoothAoS>;
+    const RowSink& sink = io.sink;
+    const ProgressSink& progress = io.progress;
+    const HistogramSink& histograms = io.histograms;
+    const ReplicaCheckpoints* const ckpt = io.checkpoints;
     const auto wall0 = std::chrono::steady_clock::now();
     const std::size_t N = static_cast<std::size_t>(spec.particles);
     const auto rep = static_cast<std::uint64_t>(replica);
@@ -233,7 +330,6 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
         histograms(h);
     };
 
-    emit();
     std::vector<double> outputs = spec.output_times;
     if (outputs.empty())
         outputs.push_back(spec.end);
@@ -256,84 +352,193 @@ void drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::ve
     std::stable_sort(pauses.begin(), pauses.end(),
                      [](const Pause& a, const Pause& b) { return a.target < b.target; });
     const std::int64_t chunk = std::max<std::int64_t>(std::int64_t{1} << 16, spec.particles / 2);
-    // Uniform shear flow: Strang steps (dsmc/shear.hpp) of h = time_step mean free times, h set from
-    // the temperatures at the start of each interval between pauses; a pause (row or histogram)
-    // comes at the end of the first step at or after its collision count.
-    const auto advance_shear = [&](std::int64_t target) {
+
+    // Checkpoints (run.hpp ReplicaCheckpoints): a DriveState, then the engine's state.
+    const std::string kernel = std::string(Store::name) + ", " + std::string(Policy::name) + ", " +
+                               (Mixture ? std::to_string(S) + " species" : "one species") +
+                               (Kernel == CollisionKernel::maxwell ? ", Maxwell kernel" : "");
+    std::size_t first_pause = 0;
+    std::optional<StrangState> strang; // resumed between two Strang steps of a shear interval
+    if (ckpt && !ckpt->resume.empty()) {
+        try {
+            ByteReader r(ckpt->resume);
+            DriveState d;
+            d.load(r);
+            if (d.kernel != kernel)
+                throw ResumeError("saved by the loop \"" + d.kernel + "\", this run's is \"" + kernel + "\"");
+            if (d.next_pause > pauses.size() || (d.strang && (!spec.shear || d.next_pause == pauses.size())))
+                throw ResumeError("the state's place in the output schedule does not fit the case");
+            if (d.tally.per_type.size() != tally.per_type.size())
+                throw ResumeError("the state has another number of species pairs");
+            first_pause = d.next_pause;
+            strang = d.strang;
+            t_prev = d.t_prev;
+            c_prev = d.c_prev;
+            tally = std::move(d.tally);
+            engine.load_state(r);
+            if (r.remaining() != 0)
+                throw ResumeError("trailing bytes after the engine state");
+        } catch (const ResumeError&) {
+            throw;
+        } catch (const std::exception& e) { // ByteReader, Engine::load_state
+            throw ResumeError(e.what());
+        }
+    } else {
+        emit();
+    }
+    const std::int64_t resumed_at = engine.collisions();
+    // The k-th checkpoint is due at target_of(k every); the next one is the first after the
+    // current count, so a resumed run keeps the schedule.
+    std::int64_t next_checkpoint = std::numeric_limits<std::int64_t>::max();
+    const auto schedule_next_checkpoint = [&] {
+        if (!ckpt || !(ckpt->every > 0))
+            return;
+        double k =
+            std::floor(2.0 * static_cast<double>(engine.collisions()) / static_cast<double>(N) / ckpt->every);
+        while (target_of(k * ckpt->every) <= engine.collisions())
+            k += 1;
+        next_checkpoint = target_of(k * ckpt->every);
+    };
+    schedule_next_checkpoint();
+    // A point where the run may stop unchanged: pause p next; `between`, when it lies between two
+    // Strang steps of a shear interval.
+    const auto boundary = [&](std::size_t p, const std::optional<StrangState>& between) {
+        if (!ckpt)
+            return;
+        const bool stop = ckpt->stop && ckpt->stop();
+        if (!stop && engine.collisions() < next_checkpoint)
+            return;
+        ByteWriter w;
+        DriveState{kernel, p, between, t_prev, c_prev, tally}.save(w);
+        engine.save_state(w);
+        ckpt->save(w.take());
+        if (stop)
+            throw Stopped{};
+        schedule_next_checkpoint();
+    };
+    const auto report = [&] {
+        if (progress) {
+            const auto c = static_cast<double>(engine.collisions());
+            progress(2.0 * c / static_cast<double>(N), end, c);
+        }
+    };
+    report();
+
+    // Uniform shear flow: Strang steps (dsmc/shear.hpp) of h = time_step mean free times each, the
+    // mean free time of the state each step's collisions start from (strang_step_length predicts it
+    // through the stream before them), so that the steps follow the temperature through a transient
+    // (heated by 10^10 in one stream, or cooled by 10^-20 while a tiny shear rate catches up:
+    // tests/stress). A pause (row or histogram) comes at the end of the first step at or after its
+    // collision count, a step shortened to end a few collisions after it. Checkpoints come between
+    // two steps (after a step's collisions, before the merged stream: `resume` goes on from there).
+    const auto advance_shear = [&](std::int64_t target, std::int64_t cap, std::size_t p,
+                                   const std::optional<StrangState>& resume) {
         const double a = spec.shear->rate;
+        // The state the next step is predicted from: its pressure tensor (times the volume) and
+        // collision frequency. At an interval's start, the current state; later, the state after the
+        // last stream (its sums from the stream's pass, its frequency from the engine's step start).
+        PressureTensor P;
+        double nu_ref = 0, h_prev = 0;
+        if (resume) {
+            P = resume->P;
+            nu_ref = resume->nu_ref;
+            h_prev = resume->h_prev;
+        } else {
+            Vec3 Omega{};
+            P = pressure_tensor(engine.store().velocities(), slices, 1.0, Vec3{});
+            nu_ref = collision_frequency(types, blocks, moments_now(Omega), engine.volume());
+        }
         const auto stream = [&](double s) {
-            stream_shear(engine.store(), a, s);
+            P = stream_shear(engine.store(), a, s, slices);
             engine.restart_step(); // the velocities changed: refresh the engine's bounds (exact)
         };
         const auto collide = [&](double h) {
-            engine.run(std::numeric_limits<std::int64_t>::max(), engine.time() + h, tally);
+            const double t0 = engine.time();
+            const StopReason stop = engine.run(cap, t0 + h, tally);
+            nu_ref = engine.collision_frequency(); // its step start: the state after the stream, P's
+            return stop == StopReason::collisions ? engine.time() - t0 : h;
         };
-        Vec3 Omega{};
-        const double nu_c = collision_frequency(types, blocks, moments_now(Omega), engine.volume());
-        if (!(nu_c > 0) || !std::isfinite(nu_c))
-            throw std::runtime_error("run_replica: no collision can happen: every grain is at rest in "
-                                     "the centre-of-mass frame (translational temperature 0)");
-        strang_steps(spec.shear->time_step / nu_c, stream, collide, [&] {
-            if (progress) {
-                const auto c = static_cast<double>(engine.collisions());
-                progress(2.0 * c / static_cast<double>(N), end, c);
-            }
-            return engine.collisions() >= target;
-        });
+        const auto step = [&] {
+            // A step expects tau x N/2 collisions; the last one before the pause expects only the
+            // remaining r and a margin of 1 + 3 sqrt(r) (it falls short with probability ~1e-3, and
+            // then one more short step follows), so that one step never spans two output rows.
+            const auto r = static_cast<double>(target - engine.collisions());
+            const double tau = std::min(spec.shear->time_step,
+                                        2.0 * (r + 1.0 + 3.0 * std::sqrt(r)) / static_cast<double>(N));
+            h_prev = strang_step_length(tau, nu_ref, P, a, h_prev);
+            return h_prev;
+        };
+        strang_steps(
+            step, stream, collide,
+            [&](double pending) {
+                report();
+                if (engine.collisions() >= target)
+                    return true;
+                boundary(p, StrangState{pending, h_prev, nu_ref, P});
+                return false;
+            },
+            resume ? std::optional(resume->pending) : std::nullopt);
     };
-    for (const Pause& pause : pauses) {
-        const std::int64_t target = pause.target;
-        if (spec.shear && engine.collisions() < target)
-            advance_shear(target);
-        while (engine.collisions() < target) {
-            const std::int64_t next = std::min(target, engine.collisions() + chunk);
-            if (engine.run(next, std::numeric_limits<double>::infinity(), tally) == StopReason::stalled) {
-                throw std::runtime_error(
-                    "run_replica: no collision can happen: every grain is at rest in the "
-                    "centre-of-mass frame (translational temperature 0)");
+    try {
+        for (std::size_t p = first_pause; p < pauses.size(); ++p) {
+            const Pause& pause = pauses[p];
+            const std::int64_t target = pause.target;
+            if (!strang) // resumed between two Strang steps: that interval goes on first
+                boundary(p, std::nullopt);
+            if (spec.shear && (strang || engine.collisions() < target)) {
+                // A step reaching the next pause's count is cut there (rare: the last step aims at
+                // this target), so that no two pauses share one step (an empty interval between two rows).
+                std::int64_t cap = std::numeric_limits<std::int64_t>::max();
+                for (std::size_t q = p + 1;
+                     q < pauses.size() && cap == std::numeric_limits<std::int64_t>::max(); ++q)
+                    if (pauses[q].target > target)
+                        cap = pauses[q].target - 1;
+                advance_shear(target, cap, p, strang);
+                strang.reset();
             }
-            if (progress) {
-                const auto c = static_cast<double>(engine.collisions());
-                progress(2.0 * c / static_cast<double>(N), end, c);
+            while (engine.collisions() < target) {
+                const std::int64_t next = std::min(target, engine.collisions() + chunk);
+                if (engine.run(next, std::numeric_limits<double>::infinity(), tally) == StopReason::stalled) {
+                    throw std::runtime_error(
+                        "run_replica: no collision can happen: every grain is at rest in the "
+                        "centre-of-mass frame (translational temperature 0)");
+                }
+                report();
+                boundary(p, std::nullopt);
             }
+            if (pause.row)
+                emit();
+            if (pause.histogram)
+                emit_histograms();
         }
-        if (pause.row)
-            emit();
-        if (pause.histogram)
-            emit_histograms();
+    } catch (const Stopped&) {
+        fill_summary(io.summary, engine, kernel, tally.clamped, resumed_at, wall0);
+        return ReplicaEnd::stopped;
     }
-
-    if (summary) {
-        const EngineCounters& k = engine.counters();
-        summary->kernel = std::string(Store::name) + ", " + std::string(Policy::name) + ", " +
-                          (Mixture ? std::to_string(S) + " species" : "one species") +
-                          (Kernel == CollisionKernel::maxwell ? ", Maxwell kernel" : "");
-        summary->groups = static_cast<int>(engine.groups());
-        summary->bytes_per_particle = Store::bytes_per_particle;
-        summary->memory_per_particle = engine.bytes_per_particle();
-        summary->collisions = k.collisions;
-        summary->candidates = k.candidates;
-        summary->steps = k.steps;
-        summary->bound_raises = k.bound_raises;
-        summary->promotions = k.promotions;
-        summary->beta_clamped = tally.clamped;
-        summary->max_mean_drift = k.max_mean_drift;
-        summary->recentrings = k.recentrings;
-        summary->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-    }
+    fill_summary(io.summary, engine, kernel, tally.clamped, resumed_at, wall0);
+    return ReplicaEnd::finished;
 }
+
+// Constant restitution: the policies the Maxwell kernel (validated: constant only) and the
+// same-type mixture loop are compiled for. Every other mixture runs the per-pair variant policies,
+// whose per-collision dispatch is small beside a table look-up or a contact integration; fewer
+// instantiations of the engine keep the build (and the sanitizer build in CI) short.
+template <class P>
+constexpr bool is_constant_policy = std::is_same_v<P, SmoothConstant> || std::is_same_v<P, RoughConstant>;
 
 // The kernel is a compile-time choice too: one switch per run.
 template <class Policy, bool Mixture>
-void drive_kernel(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
-                  int replica, const RowSink& sink, const ProgressSink& progress, ReplicaSummary* summary,
-                  const HistogramSink& histograms) {
-    if (spec.kernel == CollisionKernel::maxwell)
-        drive<Policy, Mixture, CollisionKernel::maxwell>(spec, blocks, std::move(policies), replica, sink, progress,
-                                                         summary, histograms);
-    else
-        drive<Policy, Mixture, CollisionKernel::hard_sphere>(spec, blocks, std::move(policies), replica, sink,
-                                                             progress, summary, histograms);
+ReplicaEnd drive_kernel(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks,
+                        std::vector<Policy> policies, int replica, const ReplicaIo& io) {
+    if constexpr (is_constant_policy<Policy>) {
+        if (spec.kernel == CollisionKernel::maxwell)
+            return drive<Policy, Mixture, CollisionKernel::maxwell>(spec, blocks, std::move(policies),
+                                                                    replica, io);
+    } else if (spec.kernel == CollisionKernel::maxwell) {
+        throw std::logic_error("run_replica: the Maxwell kernel with a non-constant policy"); // validate()
+    }
+    return drive<Policy, Mixture, CollisionKernel::hard_sphere>(spec, blocks, std::move(policies), replica,
+                                                                io);
 }
 
 } // namespace
@@ -377,9 +582,11 @@ std::vector<Column> dsmc_columns(const RunSpec& spec) {
     return c;
 }
 
-void run_replica(const RunSpec& spec, const RestitutionTables& tables, int replica, const RowSink& sink,
-                 const ProgressSink& progress, ReplicaSummary* summary, const HistogramSink& histograms) {
+ReplicaEnd run_replica(const RunSpec& spec, const RestitutionTables& tables, int replica, const RowSink& sink,
+                       const ProgressSink& progress, ReplicaSummary* summary, const HistogramSink& histograms,
+                       const ReplicaCheckpoints* checkpoints) {
     validate(spec);
+    const ReplicaIo io{sink, progress, summary, histograms, checkpoints};
     require(replica >= 0, "negative replica index");
     const std::vector<SpeciesBlock> blocks = make_species_blocks(spec.species, spec.particles);
     const std::vector<PairType> types = make_pair_types(blocks);
@@ -393,41 +600,42 @@ void run_replica(const RunSpec& spec, const RestitutionTables& tables, int repli
             p = as_rough(p);
 
     if (blocks.size() == 1) { // one species, one model: a fully specialised loop
-        std::visit(
+        return std::visit(
             [&](const auto& p) {
                 using P = std::decay_t<decltype(p)>;
-                drive_kernel<P, false>(spec, blocks, {p}, replica, sink, progress, summary, histograms);
+                return drive_kernel<P, false>(spec, blocks, {p}, replica, io);
             },
             policies[0]);
-        return;
     }
     const bool same_type = std::all_of(policies.begin(), policies.end(),
                                        [&](const AnyPolicy& p) { return p.index() == policies[0].index(); });
-    if (same_type) { // one policy type, per-pair values: no variant in the loop
+    if (same_type) { // one constant policy type, per-pair values: no variant in the loop
+        std::optional<ReplicaEnd> done;
         std::visit(
             [&](const auto& p0) {
                 using P = std::decay_t<decltype(p0)>;
-                std::vector<P> v;
-                for (const AnyPolicy& p : policies)
-                    v.push_back(std::get<P>(p));
-                drive_kernel<P, true>(spec, blocks, std::move(v), replica, sink, progress, summary, histograms);
+                if constexpr (is_constant_policy<P>) {
+                    std::vector<P> v;
+                    for (const AnyPolicy& p : policies)
+                        v.push_back(std::get<P>(p));
+                    done = drive_kernel<P, true>(spec, blocks, std::move(v), replica, io);
+                }
             },
             policies[0]);
-        return;
+        if (done)
+            return *done;
     }
     if (std::none_of(policies.begin(), policies.end(),
                      [](const AnyPolicy& p) { return needs_rotation(p); })) {
         std::vector<AnySmoothPolicy> v;
         for (const AnyPolicy& p : policies)
             v.push_back(to_any_smooth(p));
-        drive_kernel<AnySmoothPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary,
-                                            histograms);
-        return;
+        return drive_kernel<AnySmoothPolicy, true>(spec, blocks, std::move(v), replica, io);
     }
     std::vector<AnyRoughPolicy> v;
     for (const AnyPolicy& p : policies)
         v.push_back(to_any_rough(p));
-    drive_kernel<AnyRoughPolicy, true>(spec, blocks, std::move(v), replica, sink, progress, summary, histograms);
+    return drive_kernel<AnyRoughPolicy, true>(spec, blocks, std::move(v), replica, io);
 }
 
 } // namespace roughgas

@@ -730,12 +730,32 @@ class Builder {
         if (c.run.kind == RunKind::shear) {
             require(c.shear.has_value(), "shear.rate", "run.kind = \"shear\"", "shear");
         }
+        if (c.run.kernel == CollisionKernel::maxwell)
+            check_maxwell_kernel(c);
         if (c.run.histogram_every > c.run.end) {
             add("run.histogram_every",
                 fmt::format("run.histogram_every = {}: after the end of the run (must be <= run.end = {})",
                             c.run.histogram_every, c.run.end));
         }
         check_grid(c.restitution);
+    }
+
+    // The Maxwell kernel is the reference model with a known answer for constant alpha, beta
+    // (README "The Maxwell kernel"); it is compiled for constant restitution only.
+    void check_maxwell_kernel(const CaseConfig& c) {
+        for (std::size_t a = 0; a < c.species.size(); ++a) {
+            for (std::size_t b = a; b < c.species.size(); ++b) {
+                const CollisionModel m = collision_for(c, a, b).model;
+                if (m == CollisionModel::constant)
+                    continue;
+                add("run.kernel",
+                    fmt::format("run.kernel = \"maxwell\": needs model = \"constant\" for every pair, but "
+                                "species \"{}\" and \"{}\" collide with model = \"{}\" (the Maxwell kernel is "
+                                "the reference model of constant restitution; must be \"hard_sphere\" here)",
+                                c.species[a].name, c.species[b].name, name(m)));
+                return; // one message
+            }
+        }
     }
 
     void check_species(const CaseConfig& c) {

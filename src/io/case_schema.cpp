@@ -142,7 +142,8 @@ std::vector<Key> keys() {
             .one_of(kernel_names)
             .doc("collision kernel: hard_sphere (rate pi sigma^2 |g|, n weighted by |g.n|); maxwell (each pair at "
                  "the hard-sphere rate of the initial Maxwellian, independent of the velocities, n uniform on the "
-                 "approaching hemisphere: T_tr, T_rot follow closed linear ODEs, the theory columns)"),
+                 "approaching hemisphere: T_tr, T_rot follow closed linear ODEs, the theory columns; constant "
+                 "restitution only)"),
         Key("run.seed", T::integer).fallback(std::int64_t{1}).ge(0).doc("random seed (same seed, same run)"),
         Key("run.end", T::real).unit("collisions per particle").required().gt(0).doc("length of the run"),
         Key("run.output_every", T::real)
@@ -286,8 +287,8 @@ std::vector<Key> keys() {
             .fallback(0.2)
             .gt(0)
             .le(1)
-            .doc("Strang splitting step h (stream h/2, collide h, stream h/2), in mean free times at the "
-                 "start of each output interval; the error of the steady P*_xy is O(h^2) (README)"),
+            .doc("Strang splitting step h (stream h/2, collide h, stream h/2), in mean free times of the "
+                 "state each step's collisions start from; the error of the steady P*_xy is O(h^2) (README)"),
         // [restitution]
         Key("restitution.g_n_min", T::real)
             .unit("m/s")

@@ -10,22 +10,9 @@ PressureTensor pressure_tensor(Vec3Column v, std::span<const SpeciesSlice> speci
     PressureTensor P;
     for (const SpeciesSlice& sp : species) {
         PressureTensor s;
-        for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i) {
-            const Vec3 c = v[i] - u;
-            s.xx += c.x * c.x;
-            s.yy += c.y * c.y;
-            s.zz += c.z * c.z;
-            s.xy += c.x * c.y;
-            s.xz += c.x * c.z;
-            s.yz += c.y * c.z;
-        }
-        const double f = sp.mass / volume;
-        P.xx += f * s.xx;
-        P.yy += f * s.yy;
-        P.zz += f * s.zz;
-        P.xy += f * s.xy;
-        P.xz += f * s.xz;
-        P.yz += f * s.yz;
+        for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i)
+            s.add_dyad(v[i] - u);
+        P.add_scaled(sp.mass / volume, s);
     }
     return P;
 }

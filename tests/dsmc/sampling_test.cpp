@@ -91,6 +91,10 @@ TEST(Streams, AreKeyedAndReproducible) {
     EXPECT_EQ(x, y);
     for (int k = 0; k < 10; ++k)
         EXPECT_EQ(x(), y());
+    Rng z; // the raw words, as the engine's binary state holds them (dsmc/engine.hpp save_state)
+    z.set_state(x.state());
+    EXPECT_EQ(z, x);
+    EXPECT_EQ(z(), x());
     // Uniform doubles stay in their intervals at the extremes.
     EXPECT_GT(uniform01_open0(x), 0.0);
     EXPECT_LT(uniform01(x), 1.0);

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 namespace roughgas {
@@ -45,15 +46,17 @@ TEST(ShearStream, ExactWithCollisionsOff) {
     const double a = 0.7, h = 0.013;
     int collide_calls = 0;
     double collide_time = 0;
+    PressureTensor sums; // what the last stream gathered: the pressure tensor times V after it
     for (int n : {1, 2, 37}) {
         store = start;
         collide_calls = 0;
         collide_time = 0;
         const std::int64_t steps = strang_steps(
-            h, [&](double s) { stream_shear(store, a, s); },
+            [&] { return h; }, [&](double s) { sums = stream_shear(store, a, s, slices); },
             [&](double dt) {
                 ++collide_calls;
                 collide_time += dt;
+                return dt;
             },
             [&] { return collide_calls >= n; });
         EXPECT_EQ(steps, n);
@@ -78,7 +81,77 @@ TEST(ShearStream, ExactWithCollisionsOff) {
         EXPECT_NEAR(P.zz, P0.zz, tol);
         EXPECT_NEAR(P.xz, P0.xz - a * t * P0.yz, tol);
         EXPECT_NEAR(P.yz, P0.yz, tol);
+        for (auto [gathered, direct] : {std::pair{sums.xx, P.xx}, {sums.yy, P.yy}, {sums.zz, P.zz},
+                                         {sums.xy, P.xy}, {sums.xz, P.xz}, {sums.yz, P.yz}})
+            EXPECT_NEAR(gathered / V, direct, tol);
     }
+}
+
+// The step length is what it claims: after the stream of (h_prev + h)/2 that precedes the step, the
+// collision frequency nu_ref sqrt(T'/T) times h is tau (checked by streaming a copy: T' measured,
+// not predicted), from a* = a/nu_ref = 1e-6 (h = tau/nu_ref) to 1e6 (the stream heats the gas by
+// ~1e9 first).
+TEST(ShearStream, StepLengthIsTauMeanFreeTimesAfterItsStream) {
+    const std::vector<SpeciesSpec> species = {SpeciesSpec{}};
+    const auto blocks = make_species_blocks(species, 4000);
+    const auto slices = slices_of(blocks);
+    RoughAoS start(4000);
+    init_maxwellian(start, blocks, 11, 0);
+    for (std::size_t i = 0; i < start.size(); ++i) // a sheared state: P_xy < 0
+        start.v(i).x -= 0.4 * start.v(i).y;
+    const PressureTensor P = pressure_tensor(start.velocities(), slices, 1.0, Vec3{});
+    const double nu_ref = 2.0, tau = 0.2;
+    for (double a_star : {1e-6, 0.5, 3.0, 1e3, 1e6})
+        for (double h_prev : {0.0, 0.07}) {
+            const double a = a_star * nu_ref;
+            const double h = strang_step_length(tau, nu_ref, P, a, h_prev);
+            RoughAoS store = start;
+            const PressureTensor Q = stream_shear(store, a, 0.5 * (h_prev + h), slices);
+            const double ratio = (Q.xx + Q.yy + Q.zz) / (P.xx + P.yy + P.zz);
+            EXPECT_NEAR(h * nu_ref * std::sqrt(ratio), tau, 1e-9 * tau) << "a* = " << a_star << ", h_prev = " << h_prev;
+            if (a_star == 1e-6 && h_prev == 0) {
+                EXPECT_NEAR(h, tau / nu_ref, 1e-6 * tau / nu_ref);
+            }
+        }
+    EXPECT_THROW(strang_step_length(tau, 0.0, P, 1.0, 0.0), std::runtime_error);
+    EXPECT_THROW(strang_step_length(tau, nu_ref, PressureTensor{}, 1.0, 0.0), std::runtime_error);
+}
+
+// Steps of varying length: every collide(h_k) sits between half of the previous and half of its
+// own step's stream (stream (h_{k-1} + h_k)/2 between them), so each step is a symmetric Strang step.
+TEST(ShearStream, VaryingStepsStaySymmetric) {
+    const std::vector<double> h = {0.5, 0.25, 0.125, 1.0, 0.75};
+    std::size_t asked = 0;
+    std::vector<double> streams, collides;
+    const std::int64_t steps = strang_steps(
+        [&] { return h.at(asked++); }, [&](double s) { streams.push_back(s); },
+        [&](double dt) {
+            collides.push_back(dt);
+            return dt;
+        },
+        [&] { return collides.size() == h.size(); });
+    EXPECT_EQ(steps, static_cast<std::int64_t>(h.size()));
+    EXPECT_EQ(asked, h.size()); // one step() per step, none after the last
+    EXPECT_EQ(collides, h);
+    ASSERT_EQ(streams.size(), h.size() + 1);
+    EXPECT_EQ(streams.front(), 0.5 * h.front());
+    for (std::size_t k = 1; k < h.size(); ++k)
+        EXPECT_EQ(streams[k], 0.5 * (h[k - 1] + h[k]));
+    EXPECT_EQ(streams.back(), 0.5 * h.back());
+}
+
+// A step cut short (collide advanced h' < h) ends with a stream of h' - h/2: streams and
+// collisions still cover the same time.
+TEST(ShearStream, CutStepStreamsWhatItCollided) {
+    std::vector<double> streams;
+    int calls = 0;
+    strang_steps([] { return 1.0; }, [&](double s) { streams.push_back(s); },
+                 [&](double h) { return ++calls == 2 ? 0.25 * h : h; }, [&] { return calls == 3; });
+    EXPECT_EQ(streams, (std::vector<double>{0.5, 1.0, 0.25 - 0.5 + 0.5, 0.5}));
+    double total = 0;
+    for (double x : streams)
+        total += x;
+    EXPECT_EQ(total, 1.0 + 0.25 + 1.0);
 }
 
 // Streaming by -s undoes streaming by s (the group property the merged half-steps rely on).
@@ -88,9 +161,10 @@ TEST(ShearStream, NegativeTimeInverts) {
     store.v(1) = {-0.5, 0.25, 1.0};
     store.v(2) = {0.0, -4.0, 0.0};
     const RoughAoS start = store;
-    stream_shear(store, 2.0, 0.125);
+    const SpeciesSlice one[] = {{0, 3, 1.0, 0.1}};
+    stream_shear(store, 2.0, 0.125, one);
     EXPECT_EQ(store.v(0).x, 1.0 - 0.5);
-    stream_shear(store, 2.0, -0.125);
+    stream_shear(store, 2.0, -0.125, one);
     for (std::size_t i = 0; i < 3; ++i)
         EXPECT_EQ(store.v(i), start.v(i));
 }

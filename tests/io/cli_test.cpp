@@ -160,16 +160,16 @@ TEST(Cli, MalformedCommandLineIsInvalidInput) {
     EXPECT_EQ(run_roughgas("--help", dir).status, 0);
 }
 
-TEST(Cli, ResumeIsNotImplementedYetAndBadSweepsFailFirst) {
+TEST(Cli, ResumeWithoutACheckpointAndBadSweepsFailFirst) {
     const test::ScratchDir dir;
     const fs::path f = dir.write("ok.toml", small_case());
     const std::string out = (dir / "out").string();
-    test::CommandResult r = run_roughgas("run --resume '" + out + "'", dir);
-    EXPECT_EQ(r.status, 1);
-    EXPECT_NE(r.err.find("not implemented yet"), std::string::npos) << r.err;
-    r = run_roughgas("run '" + f.string() + "' --out '" + out + "' --checkpoint-every 5", dir);
-    EXPECT_EQ(r.status, 1);
-    EXPECT_NE(r.err.find("not implemented yet"), std::string::npos) << r.err;
+    test::CommandResult r = run_roughgas("run --resume '" + out + "'", dir); // tests/io/resume_cli_test.cpp
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("cannot resume: no such directory"), std::string::npos) << r.err;
+    r = run_roughgas("run '" + f.string() + "' --out '" + out + "' --checkpoint-every 0", dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--checkpoint-every"), std::string::npos) << r.err;
     EXPECT_EQ(run_roughgas("run '" + f.string() + "' --out '" + out + "' --set run.end=-1", dir).status, 2);
     EXPECT_EQ(
         run_roughgas("sweep '" + f.string() + "' --param run.end=-1:100:5 --out '" + out + "'", dir).status,

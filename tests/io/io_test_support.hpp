@@ -23,10 +23,10 @@ class ScratchDir {
             if (!std::isalnum(static_cast<unsigned char>(c)))
                 c = '_';
         }
-        path_ = fs::path(::testing::TempDir()) / ("roughgas_io_" + name + "_" + std::to_string(::getpid()));
-        fs::remove_all(path_);
-        fs::create_directories(path_);
+        make(name);
     }
+    // Named by the caller: for fixtures shared by a test suite (SetUpTestSuite has no current test).
+    explicit ScratchDir(std::string name) { make(name); }
     ~ScratchDir() {
         std::error_code ec;
         fs::remove_all(path_, ec);
@@ -45,6 +45,11 @@ class ScratchDir {
     }
 
   private:
+    void make(const std::string& name) {
+        path_ = fs::path(::testing::TempDir()) / ("roughgas_io_" + name + "_" + std::to_string(::getpid()));
+        fs::remove_all(path_);
+        fs::create_directories(path_);
+    }
     fs::path path_;
 };
 

@@ -340,6 +340,8 @@ std::vector<BadRun> bad_runs() {
         {"HistogramsAfterTheEnd", c, "--set run.histogram_every=5.0", "run.histogram_every",
          "must be <= run.end = 4"},
         {"NegativeHistogramTime", c, "--set run.histogram_every=-1.0", "run.histogram_every", "must be >= 0"},
+        {"MaxwellKernelWithCoulomb", c + "\n", "--set run.kernel=maxwell --set collision.model=coulomb --set collision.friction=0.1 --set collision.beta0=0.5",
+         "run.kernel", "needs model = \"constant\" for every pair"},
     };
 }
 

@@ -10,6 +10,7 @@
 #include "roughgas/dsmc/run.hpp"
 #include "roughgas/dsmc/tables.hpp"
 #include "roughgas/io/moments_csv.hpp"
+#include "roughgas/observables/steady_state.hpp"
 #include "roughgas/observables/theory.hpp"
 #include "roughgas/restitution/normal_table.hpp"
 
@@ -20,6 +21,7 @@
 #include <cstdio>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace roughgas {
@@ -279,6 +281,77 @@ TEST(Stress, ViscoelasticCoolingFortyDecadesApproachesTheElasticTheta) {
     for (const auto& r : rows)
         theta_max = std::max(theta_max, r[column(s, "theta")]);
     EXPECT_GT(theta_max / elastic, 2.0);
+}
+
+TEST(Stress, ShearRatesOverEighteenDecadesReachOneSteadyState) {
+    // Uniform shear flow of rough spheres (alpha = 0.9, beta = 0, constant: no scale of its own)
+    // started at T = 1 with shear rates a from 1e-12 to 1e6 (a* = a/nu from 2e-13 to 2e5): the
+    // gas cools by ~1e-26 before a tiny rate heats it, or heats by ~5e10 under a huge one. Every
+    // row finite and admissible; no Strang step holds more than 1 collision per grain (the step
+    // follows the temperature through the stream before it: without that the first step at
+    // a = 1e6 held ~1e4); and every rate ends in the same steady state, whose reduced shear rate
+    // a* and viscosity eta* do not depend on a: the batch means over the last 100 collisions per
+    // grain agree with those of a = 1 within 4 combined batch-means errors (2000 grains, 20 rows
+    // per batch: ~10 relaxation times of the stresses per batch).
+    const auto shear = [](double a) {
+        RunSpec s;
+        s.species = {SpeciesSpec{}};
+        s.species[0].temperature = s.species[0].rotational_temperature = 1;
+        s.pairs = {ConstantRestitution{0.9, 0.0}};
+        s.particles = 2000;
+        s.shear = ShearSpec{a, 0.2};
+        for (int k = 1; k <= 90; ++k)
+            s.output_times.push_back(5.0 * k);
+        s.seed = 13;
+        return s;
+    };
+    struct Steady {
+        SteadyValue a_star, eta_star;
+    };
+    const auto run_rate = [&](double a) {
+        SCOPED_TRACE("shear rate " + std::to_string(a));
+        const RunSpec s = shear(a);
+        const Rows rows = run(s);
+        expect_admissible(s, rows);
+        const std::size_t cpp = column(s, "coll_per_particle");
+        for (std::size_t k = 1; k < rows.size(); ++k)
+            EXPECT_LT(rows[k][cpp], s.output_times[k - 1] + 1.0) << "row " << k;
+        std::vector<double> a_star, eta_star;
+        for (const auto& r : rows)
+            if (r[cpp] > 350) {
+                a_star.push_back(r[column(s, "a_star")]);
+                eta_star.push_back(r[column(s, "eta_star")]);
+            }
+        return Steady{batch_mean(a_star, 5), batch_mean(eta_star, 5)};
+    };
+    const Steady ref = run_rate(1.0);
+    for (double a : {1e-12, 1e-6, 1e3, 1e6}) {
+        const Steady st = run_rate(a);
+        for (auto [x, y] : {std::pair{st.a_star, ref.a_star}, {st.eta_star, ref.eta_star}})
+            EXPECT_NEAR(x.mean, y.mean, 4 * std::hypot(x.err, y.err)) << x.name << " at a = " << a;
+    }
+}
+
+TEST(Stress, ShearRowsDenserThanTheStrangSteps) {
+    // Rows every 0.01 collisions per grain, a twentieth of a Strang step (time_step = 0.2): each
+    // row ends a step shortened to its collision count (plus a few collisions), so no two rows share
+    // a step (which would leave an empty interval: coll_rate 0/0) and every row is finite.
+    RunSpec s;
+    s.species = {SpeciesSpec{}};
+    s.pairs = {ConstantRestitution{0.9, 0.0}};
+    s.particles = 4000;
+    s.shear = ShearSpec{1.0, 0.2};
+    for (int k = 1; k <= 200; ++k)
+        s.output_times.push_back(0.01 * k);
+    s.seed = 17;
+    const Rows rows = run(s);
+    ASSERT_EQ(rows.size(), s.output_times.size() + 1);
+    expect_admissible(s, rows);
+    const std::size_t cpp = column(s, "coll_per_particle");
+    for (std::size_t k = 1; k < rows.size(); ++k) {
+        EXPECT_GE(rows[k][cpp], s.output_times[k - 1] - 1e-12);
+        EXPECT_LT(rows[k][cpp], s.output_times[k - 1] + 0.01) << "row " << k; // < 20 collisions past
+    }
 }
 
 TEST(Stress, ExtremeMixtures) {

@@ -7,7 +7,9 @@
 // unrelated streams; the same key gives the same stream on any machine and any thread count.
 // The engine is a UniformRandomBitGenerator (usable with Boost.Random and <random> distributions)
 // and streams its state with << and >> (what a bit-identical checkpoint needs).
+#include <array>
 #include <bit>
+#include <cstddef>
 #include <cstdint>
 #include <istream>
 #include <ostream>
@@ -56,6 +58,13 @@ class Xoshiro256pp {
         s_[2] ^= t;
         s_[3] = std::rotl(s_[3], 45);
         return result;
+    }
+
+    // The four state words as they are, for a checkpoint's binary encoding (dsmc/engine.hpp).
+    std::array<std::uint64_t, 4> state() const { return {s_[0], s_[1], s_[2], s_[3]}; }
+    void set_state(const std::array<std::uint64_t, 4>& s) {
+        for (int k = 0; k < 4; ++k)
+            s_[k] = s[static_cast<std::size_t>(k)];
     }
 
     friend bool operator==(const Xoshiro256pp&, const Xoshiro256pp&) = default;

@@ -78,6 +78,8 @@
 // callers that change velocities between run() calls (uniform shear flow).
 #include "roughgas/collision/rule.hpp"
 #include "roughgas/collision/sampling.hpp"
+#include "roughgas/core/bytes.hpp"
+#include "roughgas/core/prefetch.hpp"
 #include "roughgas/core/rng.hpp"
 #include "roughgas/dsmc/species.hpp"
 
@@ -93,6 +95,7 @@
 #include <new>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -332,6 +335,9 @@ class Engine {
         return Store::bytes_per_particle + sizeof(std::uint32_t) + (key_.empty() ? 0 : sizeof(std::uint16_t));
     }
     double step_length() const { return step_length_; }
+    // The Maxwellian collision frequency per grain at the start of the current step (0 before the
+    // first step): what the step length is measured in.
+    double collision_frequency() const { return nu_; }
     // Candidates per unit time, summed over the groups.
     double candidate_rate() const {
         double r = 0;
@@ -346,6 +352,159 @@ class Engine {
         for (const Group& g : groups_)
             b = std::max(b, g.blocks[s * K_ + K_ - 1].bound);
         return b;
+    }
+
+    // Checkpoints (io/checkpoint_file.hpp). The complete dynamic state: every grain's v and omega,
+    // the index array, and per group the blocks, rates, pre-drawn candidates, demotable lists,
+    // stream and clock and counters; the time, the step's end, length and collision frequency, and
+    // the engine's counters. An engine
+    // constructed with the same species, policies and options (threads aside: they never change the
+    // results) that loads it continues bit for bit as this one would: the pending candidate, the
+    // rings and the demotable lists all shape the trajectory, so nothing is recomputed. Scratch of
+    // begin_step (bucket keys, per-chunk sums) is rewritten before it is read and is left out.
+    void save_state(ByteWriter& w) const {
+        const std::size_t n = store_.size();
+        w.reserve(n * (6 * sizeof(double) + sizeof(std::uint32_t)) + 4096);
+        for (const std::size_t v : {n, species_.size(), K_, G_})
+            w.u64(v);
+        for (std::size_t i = 0; i < n; ++i)
+            for (const Vec3& x : {store_.v(i), store_.w(i)})
+                for (double c : {x.x, x.y, x.z})
+                    w.f64(c);
+        for (std::uint32_t p : perm_)
+            w.put(p);
+        w.f64s(thermal_speed_);
+        for (double x : {t_, t_step_end_, step_length_, nu_})
+            w.f64(x);
+        w.put(stalled_);
+        for (std::int64_t x : {c_.collisions, c_.candidates, c_.steps, c_.bound_raises, c_.promotions,
+                               c_.range_moves, c_.retargets, c_.recentrings, c_.phases, c_.overshoots})
+            w.put(x);
+        w.f64(c_.max_mean_drift);
+        for (const Group& g : groups_) {
+            for (const Block& b : g.blocks) {
+                for (std::uint32_t x : {b.begin, b.end, b.species})
+                    w.put(x);
+                for (double x : {b.ceiling2, b.bound, b.bound2})
+                    w.f64(x);
+            }
+            for (const BlockPair& bp : g.block_pairs) {
+                for (std::uint32_t x : {bp.x, bp.y, bp.species_pair})
+                    w.put(x);
+                for (double x : {bp.gmax, bp.rate, bp.pairs})
+                    w.f64(x);
+            }
+            for (double x : g.cumulative)
+                w.f64(x);
+            for (const Ring& r : g.rings) {
+                for (const Candidate& c : r.c)
+                    for (std::uint32_t x : {c.i, c.j, c.ib, c.ie, c.jb, c.je})
+                        w.put(x);
+                w.put(r.head);
+            }
+            for (const auto& d : g.demotable) {
+                w.u64(d.size());
+                for (std::uint32_t x : d)
+                    w.put(x);
+            }
+            for (std::uint64_t x : g.rng.state())
+                w.u64(x);
+            for (double x : {g.rate, g.inv_rate, g.t, g.t_next})
+                w.f64(x);
+            for (std::int64_t x : {g.c.collisions, g.c.candidates, g.c.bound_raises, g.c.promotions,
+                                   g.c.range_moves, g.c.retargets})
+                w.put(x);
+        }
+    }
+
+    // Loads what save_state wrote. Throws std::runtime_error when the state does not fit this engine
+    // (other particle count, species, speed classes or groups) or is malformed.
+    void load_state(ByteReader& r) {
+        const std::size_t n = store_.size();
+        const auto expect = [](std::uint64_t got, std::size_t want, const char* what) {
+            if (got != want)
+                throw std::runtime_error("engine state: " + std::to_string(got) + " " + what + ", expected " +
+                                         std::to_string(want));
+        };
+        expect(r.u64(), n, "particles");
+        expect(r.u64(), species_.size(), "species");
+        expect(r.u64(), K_, "speed classes");
+        expect(r.u64(), G_, "groups");
+        const auto index = [&](std::uint32_t x, std::size_t limit) {
+            if (x > limit)
+                throw std::runtime_error("engine state: index out of range");
+            return x;
+        };
+        r.need(n * 6 * sizeof(double));
+        for (std::size_t i = 0; i < n; ++i)
+            for (Vec3* x : {&store_.v(i), &store_.w(i)}) {
+                x->x = r.f64();
+                x->y = r.f64();
+                x->z = r.f64();
+            }
+        for (std::uint32_t& p : perm_)
+            p = index(r.get<std::uint32_t>(), n - 1);
+        std::vector<double> thermal = r.f64s();
+        expect(thermal.size(), thermal_speed_.size(), "species speeds");
+        thermal_speed_ = std::move(thermal);
+        t_ = r.f64();
+        t_step_end_ = r.f64();
+        step_length_ = r.f64();
+        nu_ = r.f64();
+        stalled_ = r.get<bool>();
+        for (std::int64_t* x : {&c_.collisions, &c_.candidates, &c_.steps, &c_.bound_raises, &c_.promotions,
+                                &c_.range_moves, &c_.retargets, &c_.recentrings, &c_.phases, &c_.overshoots})
+            *x = r.get<std::int64_t>();
+        c_.max_mean_drift = r.f64();
+        for (Group& g : groups_) {
+            for (Block& b : g.blocks) {
+                b.begin = index(r.get<std::uint32_t>(), n);
+                b.end = index(r.get<std::uint32_t>(), n);
+                b.species = index(r.get<std::uint32_t>(), species_.size() - 1);
+                b.ceiling2 = r.f64();
+                b.bound = r.f64();
+                b.bound2 = r.f64();
+                if (b.end < b.begin)
+                    throw std::runtime_error("engine state: block range reversed");
+            }
+            for (BlockPair& bp : g.block_pairs) {
+                bp.x = index(r.get<std::uint32_t>(), g.blocks.size() - 1);
+                bp.y = index(r.get<std::uint32_t>(), g.blocks.size() - 1);
+                bp.species_pair = index(r.get<std::uint32_t>(), types_.size() - 1);
+                bp.gmax = r.f64();
+                bp.rate = r.f64();
+                bp.pairs = r.f64();
+            }
+            for (double& x : g.cumulative)
+                x = r.f64();
+            for (Ring& ring : g.rings) {
+                for (Candidate& c : ring.c)
+                    for (std::uint32_t* x : {&c.i, &c.j, &c.ib, &c.ie, &c.jb, &c.je})
+                        *x = index(r.get<std::uint32_t>(), n);
+                ring.head = index(r.get<unsigned>(), ring_size - 1);
+            }
+            for (auto& d : g.demotable) {
+                // The lists never grow past the capacity reserved at construction (settle()), and
+                // clear() + push_back keeps it: the same lists fill up at the same collision.
+                const std::size_t size = r.count(sizeof(std::uint32_t));
+                if (size > d.capacity())
+                    throw std::runtime_error("engine state: demotable list too long");
+                d.clear();
+                for (std::size_t k = 0; k < size; ++k)
+                    d.push_back(index(r.get<std::uint32_t>(), n - 1));
+            }
+            std::array<std::uint64_t, 4> s;
+            for (std::uint64_t& x : s)
+                x = r.u64();
+            g.rng.set_state(s);
+            g.rate = r.f64();
+            g.inv_rate = r.f64();
+            g.t = r.f64();
+            g.t_next = r.f64();
+            for (std::int64_t* x : {&g.c.collisions, &g.c.candidates, &g.c.bound_raises, &g.c.promotions,
+                                    &g.c.range_moves, &g.c.retargets})
+                *x = r.get<std::int64_t>();
+        }
     }
 
   private:
@@ -575,10 +734,9 @@ class Engine {
         const Block& X = g.blocks[bp.x];
         const Block& Y = g.blocks[bp.y];
         Candidate c{draw_in(g, X), draw_in(g, Y), X.begin, X.end, Y.begin, Y.end};
-        if (X.size())
-            store_.prefetch(perm_[c.i]);
-        if (Y.size())
-            store_.prefetch(perm_[c.j]);
+        // Stage 1 of 2: the index entries (the grains follow half a ring later, take_candidate).
+        prefetch_line(&perm_[c.i]);
+        prefetch_line(&perm_[c.j]);
         return c;
     }
 
@@ -607,6 +765,13 @@ class Engine {
         const Candidate c = r.c[r.head];
         r.c[r.head] = draw_candidate(g, k);
         r.head = (r.head + 1) % ring_size;
+        // Stage 2 of 2: the grains of the candidate half a ring ahead, whose index entries were
+        // prefetched half a ring ago (a hint only: perm_ may have changed since, which costs a miss).
+        const Candidate& ahead = r.c[(r.head + ring_size / 2) % ring_size];
+        if (ahead.ie > ahead.ib) [[likely]] // else an empty block: i == its begin may be past the end
+            store_.prefetch(perm_[ahead.i]);
+        if (ahead.je > ahead.jb) [[likely]]
+            store_.prefetch(perm_[ahead.j]);
         const BlockPair& bp = g.block_pairs[k];
         const Block& X = g.blocks[bp.x];
         i = retarget(g, c.i, c.ib, c.ie, X);
@@ -872,12 +1037,14 @@ class Engine {
         const double t0 = t_step_end_;
         if (!(rate > 0) || !(nu > 0)) { // nothing moves: no collision can ever happen
             stalled_ = true;
+            nu_ = 0;
             step_length_ = std::numeric_limits<double>::infinity();
             t_step_end_ = std::numeric_limits<double>::infinity();
             for (Group& g : groups_)
                 g.t_next = std::numeric_limits<double>::infinity();
             return;
         }
+        nu_ = nu;
         step_length_ = opt_.step / nu;
         t_step_end_ = t0 + step_length_;
         for (Group& g : groups_) {
@@ -911,7 +1078,7 @@ class Engine {
     std::vector<std::uint32_t> count_, ccount_;        // per bucket; per (chunk, bucket)
     std::vector<double> cmax2_, csum2_;                 // per (chunk, bucket); per chunk
     std::vector<Vec3> cps_;                             // per chunk
-    double t_ = 0, t_step_end_ = 0, step_length_ = 0;
+    double t_ = 0, t_step_end_ = 0, step_length_ = 0, nu_ = 0;
     bool stalled_ = false;
     EngineCounters c_{}; // the engine's own counts (steps, frame, phases); the groups keep the rest
 };

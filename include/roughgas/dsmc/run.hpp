@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,7 @@ struct ReplicaSummary {
     std::size_t memory_per_particle = 0;  // the store, the engine's index array and its step-start scratch
     int groups = 1;                 // random groups per step (dsmc/engine.hpp), run in parallel
     std::int64_t collisions = 0;
+    std::int64_t resumed_at = 0;    // collisions before the checkpoint it resumed from (an earlier run's)
     std::int64_t candidates = 0;    // candidate pairs drawn (collisions/candidates: the majorant's acceptance)
     std::int64_t steps = 0;
     std::int64_t bound_raises = 0;  // collisions that raised the majorant within a step
@@ -61,11 +63,41 @@ struct ReplicaSummary {
     double seconds = 0;             // wall time of the collision loop and the moments
 };
 
+// Checkpoints of one replica: its complete resumable state as opaque bytes (the caller stores them,
+// cli/run_command.cpp and io/checkpoint_file.hpp). States are taken at boundaries where the run can
+// stop without changing its trajectory: cooling runs after every chunk of the collision loop
+// (max(65536, N/2) collisions, and at every row and histogram time), shear runs after every Strang
+// step (the end of its collision part, before the merged stream: dsmc/shear.hpp). No pause is
+// added for them: the sequence of engine calls, and so every bit of the output, is the same with
+// checkpoints, without them and after a resume.
+struct ReplicaCheckpoints {
+    // A state at the first boundary at or after every multiple of `every` collisions per particle
+    // (0: none but the one of a stop).
+    double every = 0;
+    // Receives the state, on the replica's thread, after every row and histogram set before it has
+    // gone to the sinks (so the caller stores the rows with it).
+    std::function<void(std::string state)> save;
+    // Polled at every boundary: once it returns true, the replica saves its state and returns
+    // ReplicaEnd::stopped.
+    std::function<bool()> stop;
+    // Non-empty: continue from this state, saved by `save` for the same spec and replica. The rows
+    // and histograms before it are not sent again.
+    std::string resume;
+};
+
+enum class ReplicaEnd { finished, stopped };
+
+// A resume state that does not fit the spec (another kernel, particle count, schedule) or is malformed.
+struct ResumeError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
 // The same with tables built by the caller (RestitutionTables::build, or build_run_tables for the
 // cache file): in the physics library. `summary` (optional) receives what the run did; `histograms`
-// (optional) is called at every spec.histogram_times entry.
-void run_replica(const RunSpec& spec, const RestitutionTables& tables, int replica, const RowSink& sink,
-                 const ProgressSink& progress = {}, ReplicaSummary* summary = nullptr,
-                 const HistogramSink& histograms = {});
+// (optional) is called at every spec.histogram_times entry; `checkpoints` (optional) saves and
+// resumes states.
+ReplicaEnd run_replica(const RunSpec& spec, const RestitutionTables& tables, int replica, const RowSink& sink,
+                       const ProgressSink& progress = {}, ReplicaSummary* summary = nullptr,
+                       const HistogramSink& histograms = {}, const ReplicaCheckpoints* checkpoints = nullptr);
 
 } // namespace roughgas

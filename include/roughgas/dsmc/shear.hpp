@@ -18,38 +18,82 @@
 // The streaming keeps sum m V = 0 when sum m V_y = 0, which collisions and the engine's recentring
 // (dsmc/engine.hpp, a Galilean shift of V) preserve: the mean peculiar velocity stays 0.
 #include "roughgas/core/vec.hpp"
+#include "roughgas/observables/moments.hpp"
+#include "roughgas/observables/pressure.hpp"
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <span>
+#include <type_traits>
 
 namespace roughgas {
 
 // The exact free streaming of the peculiar velocities over a time s (s may be negative): every
-// grain's V_x -= a s V_y.
-template <class Store> void stream_shear(Store& store, double a, double s) {
+// grain's V_x -= a s V_y. Returns sum m V_i V_j over the grains of `species` after the stream (the
+// pressure tensor times the volume), gathered in the same pass: what the next step's length is
+// predicted from (strang_step_length).
+template <class Store>
+PressureTensor stream_shear(Store& store, double a, double s, std::span<const SpeciesSlice> species) {
     const double k = a * s;
-    const std::size_t n = store.size();
-    for (std::size_t i = 0; i < n; ++i) {
-        Vec3& v = store.v(i);
-        v.x -= k * v.y;
+    PressureTensor sums;
+    for (const SpeciesSlice& sp : species) {
+        PressureTensor p;
+        for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i) {
+            Vec3& v = store.v(i);
+            v.x -= k * v.y;
+            p.add_dyad(v);
+        }
+        sums.add_scaled(sp.mass, p);
     }
+    return sums;
 }
 
-// Runs Strang steps of length h until done() holds after a step (at least one step), with the
-// merged half-streams described above: stream(s) streams by s, collide(h) advances the collisions
-// by h. Returns the number of steps. The state is synchronised on return.
-template <class Stream, class Collide, class Done>
-std::int64_t strang_steps(double h, Stream&& stream, Collide&& collide, Done&& done) {
+// The length h of the next Strang step, in time: h nu = tau with nu the Maxwellian hard-sphere
+// collision frequency of the state the step's collisions start from, i.e. after the stream of
+// s = (h_prev + h)/2 that precedes them (s = h/2 for the first step: h_prev = 0). Predicted from a
+// state with pressure tensor P (any normalisation) and collision frequency nu_ref: the stream is
+// exact on P, P_xx -> P_xx - 2 a s P_xy + a^2 s^2 P_yy, and nu scales as sqrt(T), T ~ tr P.
+// Without the prediction a step set from the state before its stream can be off by orders of
+// magnitude when a/nu is large: a gas at a/nu = 1e6 heats by ~1e10 in its first half-stream, and a
+// step of tau/nu(before) would then hold ~1e4 collisions per grain (tests/stress).
+// Throws std::runtime_error when nu_ref or tr P is not positive (no collision can happen).
+double strang_step_length(double tau, double nu_ref, const PressureTensor& P, double a, double h_prev);
+
+// Runs Strang steps until done() holds after a step (at least one step), with the merged
+// half-streams described above: step() gives the length h_k of the next step (called once before
+// each step, so steps may follow the state), stream(s) streams by s, collide(h) advances the
+// collisions by h and returns the time it advanced: h, or less when it stopped early at a collision
+// cap. Consecutive full steps h_k, h_{k+1} share one stream of (h_k + h_{k+1})/2. A step cut to
+// h' < h ends with a stream of h' - h/2 instead of h/2 (possibly negative: streams are a group), so
+// that streams and collisions always cover the same time; such a step is asymmetric (first order
+// locally), which the caller keeps rare. Returns the number of steps. The state is synchronised on
+// return.
+// Checkpoints (dsmc/run.cpp): done may take the stream still owed by the step just finished,
+// done(pending) (h/2 for a full step); a caller that saves the state at a done() returning false
+// passes that `pending` as `resume` to a later call, which goes on from there bit for bit as the
+// first would have (the step after it and its merged stream, pending + h/2, not a new half-stream).
+template <class Step, class Stream, class Collide, class Done>
+std::int64_t strang_steps(Step&& step, Stream&& stream, Collide&& collide, Done&& done,
+                          std::optional<double> resume = std::nullopt) {
     std::int64_t steps = 0;
-    stream(0.5 * h);
+    double h = step();
+    stream(resume ? *resume + 0.5 * h : 0.5 * h);
     for (;;) {
-        collide(h);
+        const double pending = collide(h) - 0.5 * h; // h/2 for a full step
         ++steps;
-        if (done())
+        bool finished;
+        if constexpr (std::is_invocable_v<Done&, double>)
+            finished = done(pending);
+        else
+            finished = done();
+        if (finished) {
+            stream(pending);
             break;
-        stream(h);
+        }
+        h = step();
+        stream(pending + 0.5 * h);
     }
-    stream(0.5 * h);
     return steps;
 }
 

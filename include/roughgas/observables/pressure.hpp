@@ -24,6 +24,24 @@ namespace roughgas {
 
 struct PressureTensor {
     double xx = 0, yy = 0, zz = 0, xy = 0, xz = 0, yz = 0;
+    // += c c^T (one grain's peculiar velocity c)
+    void add_dyad(const Vec3& c) {
+        xx += c.x * c.x;
+        yy += c.y * c.y;
+        zz += c.z * c.z;
+        xy += c.x * c.y;
+        xz += c.x * c.z;
+        yz += c.y * c.z;
+    }
+    // += f o
+    void add_scaled(double f, const PressureTensor& o) {
+        xx += f * o.xx;
+        yy += f * o.yy;
+        zz += f * o.zz;
+        xy += f * o.xy;
+        xz += f * o.xz;
+        yz += f * o.yz;
+    }
 };
 
 // P_ij over all grains about the velocity u (their mass-weighted mean: Moments::mean_velocity),
