@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Reference data with their own error bars (issue 5 item 4), and the check of the solver against them.
 
-    scripts/python3 scripts/make_reference.py hcs [--build build] [--threads 1]   # ~5 min CPU
-    scripts/python3 scripts/make_reference.py usf [--build build] [--threads 1]   # ~5 min CPU
+    scripts/python3 scripts/make_reference.py hcs [--build build] [--threads 1]   # ~2 min CPU
+    scripts/python3 scripts/make_reference.py usf [--build build] [--threads 1]   # ~12 min CPU
     scripts/python3 scripts/make_reference.py check [--build build] [--set KEY=VALUE]... [--expect-fail]
 
 hcs   Runs tests/data/hcs_rough_reference.toml (rough hard spheres, constant alpha = 0.8, beta = 0.4,
@@ -58,7 +58,9 @@ QUANTITIES = ("t", "T_tr", "T_rot", "theta")
 # (measured: 1% moves T_tr at 20-32 collisions per particle by ~30 combined errors).
 K = 4.0
 
-USF_STEPS = (1.0, 0.7, 0.5, 0.35, 0.25, 0.125)
+# Strang steps up to half the output interval (run.output_every = 1 collision per particle): longer
+# ones are cut at the rows (dsmc/shear.hpp), so their h is not the one asked for.
+USF_STEPS = (0.5, 0.35, 0.25, 0.177, 0.125, 0.0625)
 # Collisions per particle left out before the steady averages. The runs start at the steady
 # temperatures but with a Maxwellian (P_xy = 0): until the shear stress builds up the gas cools, then
 # heats back. Measured (N = 1e6, 4 replicas, h = 0.25): P*_xy above its steady value by 1.7% over the
