@@ -54,8 +54,8 @@ QUANTITIES = ("t", "T_tr", "T_rot", "theta")
 # replicas, so z follows a t distribution with 39 degrees of freedom, P(|z| > 4) = 2.7e-4, and a
 # correct solver fails with probability < 32 x 2.7e-4 < 1% (union bound; the comparisons are
 # correlated, which only lowers it). The reference's errors are 1/10 of the test's (100x the
-# statistics): they widen the tolerance by 0.5%. The check detects a change of alpha by 0.2%
-# (measured: 1% moves T_tr at 20-32 collisions per particle by ~30 combined errors).
+# statistics): they widen the tolerance by 0.5%. Measured power (same seed): alpha 0.125% off gives
+# |z| = 4.8, 0.25% off 13, 1% off 38 (hcs_reference_power); beta 1% off 7.2.
 K = 4.0
 
 # Strang steps up to half the output interval (run.output_every = 1 collision per particle): longer
@@ -63,9 +63,10 @@ K = 4.0
 USF_STEPS = (0.5, 0.35, 0.25, 0.177, 0.125, 0.0625)
 # Collisions per particle left out before the steady averages. The runs start at the steady
 # temperatures but with a Maxwellian (P_xy = 0): until the shear stress builds up the gas cools, then
-# heats back. Measured (N = 1e6, 4 replicas, h = 0.25): P*_xy above its steady value by 1.7% over the
-# first 5 collisions per particle, 0.7% over 5-10, 0.13% over 10-15, 0.07% over 15-25, and within the
-# errors (2-3e-4) from 25 on; leaving out 10 made 40-row averages 3-5e-4 too large.
+# heats back. Measured (N = 1e6, 4 replicas, h = 0.25, the step rule before commit d0d1bd3): P*_xy
+# above its steady value by 1.7% over the first 5 collisions per particle, 0.7% over 5-10, 0.13%
+# over 10-15, 0.07% over 15-25, and within the errors (2-3e-4) from 25 on; leaving out 10 made
+# 40-row averages 3-5e-4 too large.
 STEADY_FROM = 30.0
 BATCHES = 10
 
