@@ -53,6 +53,24 @@ TEST(ImpactNormal, HasDensityProportionalToCosineOnTheApproachingHemisphere) {
     // the first mu^2 bin instead of 1/20: a chi-square of order 1e5.
 }
 
+TEST(ImpactNormal, NormalPartIsThatOfTheSameDrawnNormal) {
+    // sample_impact_normal_part must return (g . n) n for the n that sample_impact_normal draws from
+    // the same random numbers (whose law the test above checks): two copies of one stream.
+    Rng rng = make_stream(23, Stream::test, 0, 0);
+    for (const Vec3 g : {Vec3{0.3, -1.7, 0.8}, Vec3{1e-9, 0, 0}, Vec3{-4e5, 2e5, 1e5}}) {
+        const double g_abs = norm(g);
+        for (int k = 0; k < 10000; ++k) {
+            Rng a = rng, b = rng;
+            const Vec3 n = sample_impact_normal(a, g, g_abs);
+            const Vec3 g_N = sample_impact_normal_part(b, g, g_abs);
+            ASSERT_EQ(a, b) << "both must consume the same numbers";
+            const Vec3 want = dot(g, n) * n;
+            ASSERT_LE(norm(g_N - want), 1e-14 * g_abs) << "k = " << k;
+            rng = a;
+        }
+    }
+}
+
 TEST(UniformIndex, IsUniformForSmallAndAwkwardRanges) {
     Rng rng = make_stream(22, Stream::test, 0, 0);
     for (std::uint64_t m : {std::uint64_t{10}, std::uint64_t{3}}) {

@@ -22,7 +22,7 @@ namespace roughgas {
 
 // Rough grains: reads and updates v and omega of both. The policy decides alpha and beta.
 template <class Policy>
-inline CollisionRecord collide(const PairConstants& pc, const Policy& policy, Vec3& v_i, Vec3& w_i, Vec3& v_j,
+[[gnu::always_inline]] inline CollisionRecord collide(const PairConstants& pc, const Policy& policy, Vec3& v_i, Vec3& w_i, Vec3& v_j,
                                Vec3& w_j, const Vec3& n) {
     static_assert(Policy::needs_rotation, "smooth policies use the overload without omega");
     const Vec3 g_c = v_i - v_j;
@@ -57,28 +57,36 @@ inline CollisionRecord collide(const PairConstants& pc, const Policy& policy, Ve
     return r;
 }
 
-// Smooth grains (beta = -1): only the normal impulse P = -m_eff (1 + alpha) g^N acts, omega is neither
-// read nor written, and g_t is not evaluated (NaN in the record).
+// Smooth grains (beta = -1), given the normal part g^N = (g . n) n of the relative velocity: only the
+// normal impulse P = -m_eff (1 + alpha) g^N acts (physics.md §3), so n itself is never needed (the
+// hard-sphere kernel draws g^N directly, sampling.hpp). g_n = |g^N|; omega is neither read nor
+// written, and g_t is not evaluated (NaN in the record).
 template <class Policy>
-inline CollisionRecord collide(const PairConstants& pc, const Policy& policy, Vec3& v_i, Vec3& v_j,
-                               const Vec3& n) {
+[[gnu::always_inline]] inline CollisionRecord collide_normal_part(const PairConstants& pc, const Policy& policy, Vec3& v_i, Vec3& v_j,
+                                           const Vec3& g_N) {
     static_assert(!Policy::needs_rotation, "rough policies need omega");
-    const Vec3 g_c = v_i - v_j;
-    const double g_dot_n = dot(g_c, n);
-    const double g_n = std::abs(g_dot_n);
+    const double g_n2 = norm2(g_N);
+    const double g_n = sqrt_nonneg(g_n2); // dropped by the compiler where neither policy nor observer reads it
     const Coefficients c = policy(g_n, std::numeric_limits<double>::quiet_NaN());
-    const double a = -(1.0 + c.alpha) * g_dot_n;
-    v_i += (pc.m_eff_over_m_i * a) * n;
-    v_j -= (pc.m_eff_over_m_j * a) * n;
+    const double a = 1.0 + c.alpha;
+    v_i -= (pc.m_eff_over_m_i * a) * g_N;
+    v_j += (pc.m_eff_over_m_j * a) * g_N;
 
     CollisionRecord r;
-    r.dE_tr = 0.5 * pc.m_eff * (c.alpha * c.alpha - 1.0) * g_n * g_n;
+    r.dE_tr = 0.5 * pc.m_eff * (c.alpha * c.alpha - 1.0) * g_n2;
     r.dE_rot = 0;
     r.g_n = g_n;
     r.g_t = std::numeric_limits<double>::quiet_NaN();
     r.alpha = c.alpha;
     r.beta = -1.0;
     return r;
+}
+
+// Smooth grains given the unit normal n (from j to i).
+template <class Policy>
+inline CollisionRecord collide(const PairConstants& pc, const Policy& policy, Vec3& v_i, Vec3& v_j,
+                               const Vec3& n) {
+    return collide_normal_part(pc, policy, v_i, v_j, dot(v_i - v_j, n) * n);
 }
 
 } // namespace roughgas

@@ -121,18 +121,23 @@ inline double uniform_pm1(Rng& r) {
     return (static_cast<double>(r() >> 12) + 0.5) * 0x1p-51 - 1.0;
 }
 
+namespace detail {
+// The rare branch of uniform_index (probability < n / 2^64), kept out of line.
+[[gnu::noinline, gnu::cold]] inline std::uint64_t uniform_index_reject(Rng& r, std::uint64_t n, __uint128_t m) {
+    const std::uint64_t threshold = (0 - n) % n;
+    while (static_cast<std::uint64_t>(m) < threshold)
+        m = static_cast<__uint128_t>(r()) * n;
+    return static_cast<std::uint64_t>(m >> 64);
+}
+} // namespace detail
+
 // Uniform integer in [0, n), n >= 1, exactly (Lemire 2019: multiply-shift with rejection of the
-// 2^64 mod n low values that would make some results more likely).
-inline std::uint64_t uniform_index(Rng& r, std::uint64_t n) {
-    __uint128_t m = static_cast<__uint128_t>(r()) * n;
-    std::uint64_t low = static_cast<std::uint64_t>(m);
-    if (low < n) [[unlikely]] {
-        const std::uint64_t threshold = (0 - n) % n;
-        while (low < threshold) {
-            m = static_cast<__uint128_t>(r()) * n;
-            low = static_cast<std::uint64_t>(m);
-        }
-    }
+// 2^64 mod n low values that would make some results more likely). Always inlined: the collision
+// loop draws two per candidate, and a call there spills the loop's registers.
+[[gnu::always_inline]] inline std::uint64_t uniform_index(Rng& r, std::uint64_t n) {
+    const __uint128_t m = static_cast<__uint128_t>(r()) * n;
+    if (static_cast<std::uint64_t>(m) < n) [[unlikely]]
+        return detail::uniform_index_reject(r, n, m);
     return static_cast<std::uint64_t>(m >> 64);
 }
 

@@ -79,6 +79,7 @@
 #include "roughgas/collision/rule.hpp"
 #include "roughgas/collision/sampling.hpp"
 #include "roughgas/core/bytes.hpp"
+#include "roughgas/core/huge_page_buffer.hpp"
 #include "roughgas/core/prefetch.hpp"
 #include "roughgas/core/rng.hpp"
 #include "roughgas/dsmc/species.hpp"
@@ -231,8 +232,8 @@ class Engine {
             for (auto& d : g.demotable)
                 d.reserve(G_ > 1 ? demotable_cap / 8 : demotable_cap);
         }
-        key_.assign(K_ * G_ > 1 ? n : 0, 0);
-        perm_.assign(n, 0);
+        key_ = HugePageBuffer<std::uint16_t>(K_ * G_ > 1 ? n : 0);
+        perm_ = HugePageBuffer<std::uint32_t>(n);
         for (std::size_t i = 0; i < n; ++i)
             perm_[i] = static_cast<std::uint32_t>(i);
         mv2_.assign(S, 0.0);
@@ -332,7 +333,7 @@ class Engine {
     std::size_t groups() const { return G_; }
     // Memory per grain: the store, the index array and the step start's bucket keys.
     std::size_t bytes_per_particle() const {
-        return Store::bytes_per_particle + sizeof(std::uint32_t) + (key_.empty() ? 0 : sizeof(std::uint16_t));
+        return Store::bytes_per_particle + sizeof(std::uint32_t) + (key_.size() ? sizeof(std::uint16_t) : 0);
     }
     double step_length() const { return step_length_; }
     // The Maxwellian collision frequency per grain at the start of the current step (0 before the
@@ -569,27 +570,31 @@ class Engine {
             const Vec3 g_c = v_i - v_j;
             const double g2 = norm2(g_c);
             bool accepted;
-            Vec3 n;
             if constexpr (Kernel == CollisionKernel::maxwell) {
                 accepted = true; // the rate is exact: no thinning
-                n = uniform_direction(g.rng);
-                if (dot(n, g_c) > 0) // onto the approaching hemisphere: uniform there
-                    n = -1.0 * n;
             } else {
                 const double x = uniform01(g.rng) * bp.gmax;
                 accepted = x * x < g2; // with probability |g_c|/g_max
-                if (accepted)
-                    n = sample_impact_normal(g.rng, g_c, sqrt_nonneg(g2));
             }
             if (accepted) {
                 const std::size_t sp = Mixture ? bp.species_pair : 0;
                 const PairConstants& pc = types_[sp].pc;
                 const Policy& policy = policies_[sp];
                 CollisionRecord rec;
-                if constexpr (Policy::needs_rotation) {
+                if constexpr (Kernel == CollisionKernel::maxwell) {
+                    Vec3 n = uniform_direction(g.rng);
+                    if (dot(n, g_c) > 0) // onto the approaching hemisphere: uniform there
+                        n = -1.0 * n;
+                    if constexpr (Policy::needs_rotation)
+                        rec = collide(pc, policy, v_i, store_.w(gi), v_j, store_.w(gj), n);
+                    else
+                        rec = collide(pc, policy, v_i, v_j, n);
+                } else if constexpr (Policy::needs_rotation) {
+                    const Vec3 n = sample_impact_normal(g.rng, g_c, sqrt_nonneg(g2));
                     rec = collide(pc, policy, v_i, store_.w(gi), v_j, store_.w(gj), n);
-                } else {
-                    rec = collide(pc, policy, v_i, v_j, n);
+                } else { // smooth hard spheres: g^N is drawn directly, n is never formed
+                    rec = collide_normal_part(pc, policy, v_i, v_j,
+                                              sample_impact_normal_part(g.rng, g_c, sqrt_nonneg(g2)));
                 }
                 ++g.c.collisions;
                 ++done;
@@ -1071,9 +1076,10 @@ class Engine {
     std::vector<double> maxwell_speed_; // per species pair: u_ab of the Maxwell kernel
     std::vector<Group> groups_;
     // perm_[p]: the grain at position p. Blocks are ranges of positions; the grains stay where they are.
-    std::vector<std::uint32_t> perm_;
+    // On huge pages: stage 1 of the prefetch (take_candidate) reads random entries of it.
+    HugePageBuffer<std::uint32_t> perm_;
     // Scratch of begin_step: each grain's bucket (2 bytes per grain, K G > 1 only), per-species sums.
-    std::vector<std::uint16_t> key_;
+    HugePageBuffer<std::uint16_t> key_;
     std::vector<double> mv2_, T_over_m_, cut2_, max2_;
     std::vector<std::uint32_t> count_, ccount_;        // per bucket; per (chunk, bucket)
     std::vector<double> cmax2_, csum2_;                 // per (chunk, bucket); per chunk

@@ -12,83 +12,21 @@
 // Measured in tests/bench/dsmc_bench.cpp (BM_Layout_*), N = 1e6, one core, rough constant: see the
 // table in the report of issue 3 / the README; the defaults above are the winners.
 //
-// Storage comes from HugePageBuffer: 2 MiB-aligned and madvise(MADV_HUGEPAGE) on Linux, so a
-// random grain access costs no page walk (with 4 KiB pages, 64 MB of grains span 16384 pages,
-// eight times what the second-level TLB holds).
+// Storage comes from HugePageBuffer (core/huge_page_buffer.hpp): on huge pages, so that a random
+// grain access costs no page walk.
 //
 // Particles of species s occupy the index range [offset_s, offset_s + count_s) (dsmc/species.hpp):
 // no species field is stored. The grains never move: the engine sorts 4-byte indices into speed
 // classes and groups (dsmc/engine.hpp), so a run needs bytes_per_particle + 4 (+ 2 of scratch
 // at a step start) bytes per grain.
+#include "roughgas/core/huge_page_buffer.hpp"
 #include "roughgas/core/prefetch.hpp"
 #include "roughgas/core/vec.hpp"
 
 #include <cstddef>
-#include <cstdlib>
-#include <cstring>
-#include <new>
 #include <string_view>
-#include <utility>
-
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 
 namespace roughgas {
-
-// A fixed-size buffer of trivially copyable T, value-initialised, on (transparent) huge pages.
-template <class T> class HugePageBuffer {
-  public:
-    HugePageBuffer() = default;
-    explicit HugePageBuffer(std::size_t n) : size_(n) {
-        if (n == 0)
-            return;
-        constexpr std::size_t huge = std::size_t{2} << 20;
-        const std::size_t bytes = (n * sizeof(T) + huge - 1) / huge * huge;
-        void* p = std::aligned_alloc(huge, bytes);
-        if (!p)
-            throw std::bad_alloc();
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-        madvise(p, bytes, MADV_HUGEPAGE); // a hint: without it the store still works, on 4 KiB pages
-#endif
-        std::memset(p, 0, bytes);
-        data_ = static_cast<T*>(p);
-    }
-    HugePageBuffer(const HugePageBuffer& o) : HugePageBuffer(o.size_) {
-        if (size_)
-            std::memcpy(data_, o.data_, size_ * sizeof(T));
-    }
-    HugePageBuffer(HugePageBuffer&& o) noexcept
-        : data_(std::exchange(o.data_, nullptr)), size_(std::exchange(o.size_, 0)) {}
-    HugePageBuffer& operator=(HugePageBuffer o) noexcept {
-        std::swap(data_, o.data_);
-        std::swap(size_, o.size_);
-        return *this;
-    }
-    ~HugePageBuffer() {
-        std::free(data_);
-    }
-
-    T* data() {
-        return data_;
-    }
-    const T* data() const {
-        return data_;
-    }
-    std::size_t size() const {
-        return size_;
-    }
-    T& operator[](std::size_t i) {
-        return data_[i];
-    }
-    const T& operator[](std::size_t i) const {
-        return data_[i];
-    }
-
-  private:
-    T* data_ = nullptr;
-    std::size_t size_ = 0;
-};
 
 // ---- rough stores: v and omega are hot ----
 
