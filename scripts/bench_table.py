@@ -9,7 +9,9 @@ Runs (Release build with benchmarks, ROUGHGAS_BUILD_BENCHMARKS=ON):
      kernels for N = 1e4 .. 1e7 on 1 and 2 threads (groups as `roughgas run` chooses them);
   2. dsmc_bench BM_Skip_* / BM_Threads_* / BM_Layout_*: what each compile-time skip and the groups are worth;
   3. tests/bench/restitution_bench BM_*TableBuild: building the restitution tables;
-  4. `roughgas run` of a constant rough case for each N under /usr/bin/time: peak memory (max RSS).
+  4. `roughgas run` of a constant rough case for each N under /usr/bin/time: peak memory (max RSS);
+  5. the ceiling of two threads: two one-thread benchmark processes at once (nothing shared but the
+     machine), against one alone, interleaved; and the issue's targets computed from the tables.
 Repetitions are randomly interleaved (Google Benchmark --benchmark_enable_random_interleaving), the
 median is reported, and every number comes with the load average (/proc/loadavg, 1 min) read
 before and after its benchmark: numbers taken on a loaded machine say so. Writes markdown to
@@ -60,6 +62,30 @@ def run_bench(binary, flt, reps, out_json):
     for name, s in samples.items():
         result[name] = (statistics.median(x[0] for x in s), statistics.median(x[1] for x in s), s[-1][2])
     return result, before, after
+
+
+def concurrent_pair(binary, flt, reps, out_prefix):
+    """Two processes of the same one-thread benchmark at once, `reps` times, alternating with one alone
+    (so that a drift of the machine hits both). Returns the medians of (one alone, the pair's sum)
+    in items/s, and the load before and after."""
+    before = loadavg()
+    cmd = [binary, f"--benchmark_filter={flt}", "--benchmark_format=json"]
+    alone, pair = [], []
+
+    def rate(text):
+        return [b["items_per_second"] for b in json.loads(text)["benchmarks"] if b.get("run_type") == "iteration"][0]
+
+    for k in range(reps):
+        alone.append(rate(subprocess.run(cmd, check=True, capture_output=True, text=True, env=BENCH_ENV).stdout))
+        procs = [subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True, env=BENCH_ENV)
+                 for _ in range(2)]
+        outs = [p.communicate()[0] for p in procs]
+        if any(p.returncode for p in procs):
+            raise RuntimeError(f"{' '.join(cmd)} failed")
+        pair.append(sum(rate(o) for o in outs))
+        with open(f"{out_prefix}_{k}.json", "w") as f:
+            json.dump({"alone": alone[-1], "pair": outs}, f)
+    return statistics.median(alone), statistics.median(pair), before, loadavg()
 
 
 def fmt_rate(x):
@@ -129,6 +155,34 @@ def main():
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()
         w.writerows(rows)
+
+    # The issue's targets, from the table above (N = 1e6, or the largest N of a --quick run).
+    n_t = 1000000 if 1000000 in sizes else sizes[-1]
+    rate = {(r["kernel"], r["N"]): r for r in rows}
+    r1 = lambda k: rate[(k, n_t)]["coll_per_s_1T"]  # noqa: E731
+    r2 = lambda k: rate[(k, n_t)]["coll_per_s_2T"]  # noqa: E731
+    elastic_100k = rate[("SmoothElastic", 100000)]["coll_per_s_1T"]
+    print(f"\nTargets of issue 5, from the table (N = {n_t:.0e}):\n")
+    print("| target | measured |")
+    print("|--------|----------|")
+    print(f"| rough constant, one thread >= 3e6/s | {fmt_rate(r1('RoughConstant'))}e6/s |")
+    print(f"| elastic smooth >= 5x SPARTA (0.75e6 at 1e5, 0.5e6 at 1e6 per CPU-second) | "
+          f"{elastic_100k / 0.75e6:.1f}x at 1e5, {r1('SmoothElastic') / 0.5e6:.1f}x at {n_t:.0e} |")
+    print(f"| smooth >= 1.3x rough | {r1('SmoothConstant') / r1('RoughConstant'):.2f}x (one thread), "
+          f"{r2('SmoothConstant') / r2('RoughConstant'):.2f}x (two) |")
+    print(f"| brilliantov (cached) >= 0.7x constant | {r1('Brilliantov') / r1('RoughConstant'):.2f}x (one thread), "
+          f"{r2('Brilliantov') / r2('RoughConstant'):.2f}x (two) |")
+    print(f"| two threads >= 1.8x one | rough {r2('RoughConstant') / r1('RoughConstant'):.2f}x, "
+          f"smooth {r2('SmoothConstant') / r1('SmoothConstant'):.2f}x |")
+
+    print(f"\nThe ceiling of two threads on this machine: two one-thread processes at once, N = {n_t:.0e} "
+          "(nothing shared but the cores' caches and memory; alone and pair interleaved):\n")
+    print("| kernel | one process alone | two at once, summed | ratio | load before, after |")
+    print("|--------|-------------------|---------------------|-------|--------------------|")
+    for key in ("RoughConstant", "SmoothConstant"):
+        one, two, l0, l1 = concurrent_pair(dsmc, f"^BM_Case_{key}/{n_t}/1/", reps,
+                                           os.path.join(a.out, f"pair_{key}"))
+        print(f"| {key} | {fmt_rate(one)} | {fmt_rate(two)} | {two / one:.2f} | {l0:.2f}, {l1:.2f} |")
 
     n_skip = "100000" if a.quick else "1000000"
     res, l0, l1 = run_bench(dsmc, f"^BM_(Skip|Layout)_.*/{n_skip}", reps, os.path.join(a.out, "skips.json"))
