@@ -214,7 +214,7 @@ struct Stopped {};
 template <class Policy, bool Mixture, CollisionKernel Kernel>
 ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
                  int replica, const ReplicaIo& io) {
-    using Store = std::conditional_t<Policy::needs_rotation, RoughAoS, SmoothAoS>;
+    using Store = StoreFor<Policy>;
     const RowSink& sink = io.sink;
     const ProgressSink& progress = io.progress;
     const HistogramSink& histograms = io.histograms;

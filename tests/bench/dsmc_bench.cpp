@@ -126,7 +126,7 @@ int threads_of(const benchmark::State& s) {
     return static_cast<int>(s.range(1));
 }
 void BM_Case_RoughConstant(benchmark::State& s) {
-    run_bench<RoughAoS>(s, unit_grain(), make_rough_constant(0.9, 0.5), 2, 0, threads_of(s));
+    run_bench<RoughPacked>(s, unit_grain(), make_rough_constant(0.9, 0.5), 2, 0, threads_of(s));
 }
 void BM_Case_SmoothConstant(benchmark::State& s) {
     run_bench<SmoothAoS>(s, unit_grain(), make_smooth_constant(0.9), 2, 0, threads_of(s));
@@ -135,7 +135,7 @@ void BM_Case_SmoothElastic(benchmark::State& s) {
     run_bench<SmoothAoS>(s, unit_grain(), make_smooth_constant(1.0), 2, 0, threads_of(s));
 }
 void BM_Case_Coulomb(benchmark::State& s) {
-    run_bench<RoughAoS>(s, unit_grain(),
+    run_bench<RoughPacked>(s, unit_grain(),
                         make_coulomb(0.9, 0.5, 0.2, make_pair_constants({1, 0.5, 0.4}, {1, 0.5, 0.4}).kappa), 2, 0,
                         threads_of(s));
 }
@@ -144,23 +144,23 @@ void BM_Case_ViscoelasticSmooth(benchmark::State& s) {
                          threads_of(s));
 }
 void BM_Case_Viscoelastic(benchmark::State& s) {
-    run_bench<RoughAoS>(s, ice_grain(), make_viscoelastic(normal_table(), ice_pair(), 0.5), 2, 0, threads_of(s));
+    run_bench<RoughPacked>(s, ice_grain(), make_viscoelastic(normal_table(), ice_pair(), 0.5), 2, 0, threads_of(s));
 }
 void BM_Case_Brilliantov(benchmark::State& s) {
-    run_bench<RoughAoS>(s, ice_grain(), make_brilliantov(normal_table(), tangential_table(), ice_pair()), 2, 0,
+    run_bench<RoughPacked>(s, ice_grain(), make_brilliantov(normal_table(), tangential_table(), ice_pair()), 2, 0,
                         threads_of(s));
 }
 
 // Speed classes of the majorant (engine.hpp): 1 = the plain vmax_a + vmax_b bound.
 void BM_Classes_RoughConstant(benchmark::State& s) {
-    run_bench<RoughAoS>(s, unit_grain(), make_rough_constant(0.9, 0.5), static_cast<int>(s.range(1)));
+    run_bench<RoughPacked>(s, unit_grain(), make_rough_constant(0.9, 0.5), static_cast<int>(s.range(1)));
 }
 void BM_Classes_SmoothConstant(benchmark::State& s) {
     run_bench<SmoothAoS>(s, unit_grain(), make_smooth_constant(0.9), static_cast<int>(s.range(1)));
 }
 
-void BM_Layout_RoughPacked48(benchmark::State& s) {
-    run_bench<RoughPacked>(s, unit_grain(), make_rough_constant(0.9, 0.5));
+void BM_Layout_RoughAoS64(benchmark::State& s) {
+    run_bench<RoughAoS>(s, unit_grain(), make_rough_constant(0.9, 0.5));
 }
 void BM_Layout_RoughSoA(benchmark::State& s) {
     run_bench<RoughSoA>(s, unit_grain(), make_rough_constant(0.9, 0.5));
@@ -170,19 +170,19 @@ void BM_Layout_SmoothPacked24(benchmark::State& s) {
 }
 
 void BM_Skip_RoughKernelAtBetaMinusOne(benchmark::State& s) {
-    run_bench<RoughAoS>(s, unit_grain(), make_rough_constant(0.9, -1.0));
+    run_bench<RoughPacked>(s, unit_grain(), make_rough_constant(0.9, -1.0));
 }
 void BM_Skip_MixtureKernelOneSpecies(benchmark::State& s) {
-    run_bench<RoughAoS, RoughConstant, true>(s, unit_grain(), make_rough_constant(0.9, 0.5));
+    run_bench<RoughPacked, RoughConstant, true>(s, unit_grain(), make_rough_constant(0.9, 0.5));
 }
 void BM_Skip_VariantPerCollision(benchmark::State& s) {
-    run_bench<RoughAoS, AnyRoughPolicy, true>(s, unit_grain(), AnyRoughPolicy{make_rough_constant(0.9, 0.5)});
+    run_bench<RoughPacked, AnyRoughPolicy, true>(s, unit_grain(), AnyRoughPolicy{make_rough_constant(0.9, 0.5)});
 }
 
 // Groups and threads (engine.hpp, "Groups"): /N/G/T, wall-clock time (UseRealTime), so that
 // items_per_second is collisions per second of the run on T threads.
 void BM_Threads_RoughConstant(benchmark::State& s) {
-    run_bench<RoughAoS>(s, unit_grain(), make_rough_constant(0.9, 0.5), 2, static_cast<int>(s.range(1)),
+    run_bench<RoughPacked>(s, unit_grain(), make_rough_constant(0.9, 0.5), 2, static_cast<int>(s.range(1)),
                         static_cast<int>(s.range(2)));
 }
 void BM_Threads_SmoothConstant(benchmark::State& s) {
@@ -222,7 +222,7 @@ BENCHMARK(BM_Threads_SmoothConstant)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(2.0);
-BENCHMARK(BM_Layout_RoughPacked48) ROUGHGAS_SIZES;
+BENCHMARK(BM_Layout_RoughAoS64) ROUGHGAS_SIZES;
 BENCHMARK(BM_Layout_RoughSoA) ROUGHGAS_SIZES;
 BENCHMARK(BM_Layout_SmoothPacked24) ROUGHGAS_SIZES;
 BENCHMARK(BM_Skip_RoughKernelAtBetaMinusOne) ROUGHGAS_SIZES;

@@ -110,7 +110,7 @@ TEST(Run, RowsAtZeroAndEveryOutputTime) {
         }
     }
     EXPECT_EQ(summary.collisions, 4000);
-    EXPECT_EQ(summary.kernel, "RoughAoS, constant, one species");
+    EXPECT_EQ(summary.kernel, "RoughPacked, constant, one species");
     EXPECT_LE(summary.bytes_per_particle, 64u);
     EXPECT_LT(summary.max_mean_drift, 1e-14); // 4 steps of round-off
 }
@@ -200,7 +200,7 @@ TEST(Run, MixtureReportsSpeciesAndRatios) {
     const RunSpec s = binary_mixture();
     ReplicaSummary summary;
     const Rows rows = run(s, 0, &summary);
-    EXPECT_EQ(summary.kernel, "RoughAoS, constant, 2 species"); // one policy type: no variant in the loop
+    EXPECT_EQ(summary.kernel, "RoughPacked, constant, 2 species"); // one policy type: no variant in the loop
     const std::size_t Ta = column(s, "T_tr.light"), Tb = column(s, "T_tr.heavy"),
                       r = column(s, "T_tr.light/T_tr.heavy");
     EXPECT_NEAR(rows[0][Tb] / rows[0][Ta], 2.0, 0.2); // initial temperatures 1 and 2 (N = 1000 and 3000)
@@ -220,7 +220,7 @@ TEST(Run, MixtureOfModelsRunsThePerPairKernel) {
                ConstantRestitution{0.7, -1.0}};
     ReplicaSummary summary;
     const Rows rows = run(s, 0, &summary);
-    EXPECT_EQ(summary.kernel, "RoughAoS, per-pair policies, 2 species");
+    EXPECT_EQ(summary.kernel, "RoughPacked, per-pair policies, 2 species");
     EXPECT_LT(rows.back()[2], rows.front()[2]);
     s.pairs = {ConstantRestitution{0.9, -1.0}, CoulombRestitution{0.8, 0.4, 0.0},
                ConstantRestitution{0.7, -1.0}};
@@ -233,7 +233,7 @@ TEST(Run, SmoothCasesUseTheSmoothStore) {
     run(one_species(ConstantRestitution{0.9, -1.0}), 0, &summary);
     EXPECT_EQ(summary.kernel, "SmoothAoS, constant (smooth), one species");
     run(one_species(CoulombRestitution{0.9, 0.5, 0.3}), 0, &summary);
-    EXPECT_EQ(summary.kernel, "RoughAoS, coulomb, one species");
+    EXPECT_EQ(summary.kernel, "RoughPacked, coulomb, one species");
 }
 
 // Ice grains in SI units (seed 000): R = 1 cm, 1000 kg/m^3, Y = 10 GPa, nu = 0.3, A = 1e-5 s,

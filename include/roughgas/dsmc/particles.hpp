@@ -2,15 +2,18 @@
 // Particle stores for the collision step. The hot loop picks two random grains per candidate pair,
 // so a store is laid out for one random access per grain (issue 5 item 2; style.md §2.11):
 //
-//   RoughAoS     64 bytes per grain, {v, omega} in one aligned cache line   (rough policies: default)
+//   RoughPacked  48 bytes per grain, {v, omega} unpadded: half the grains straddle two lines
+//                (rough policies: default)
 //   SmoothAoS    32 bytes per grain, {v, pad}: two grains per cache line, never straddling; omega in a
 //                separate cold array that the collision step never touches (smooth policies: default)
+//   RoughAoS     64 bytes per grain, {v, omega} in one aligned cache line   (measured, not used)
 //   RoughSoA     v and omega in two arrays: two cache lines per grain        (measured, not used)
-//   RoughPacked  48 bytes per grain, {v, omega} unpadded: half the grains straddle two lines (measured)
-//   SmoothPacked 24 bytes per grain (measured)
+//   SmoothPacked 24 bytes per grain (measured, not used)
 //
-// Measured in tests/bench/dsmc_bench.cpp (BM_Layout_*), N = 1e6, one core, rough constant: see the
-// table in the report of issue 3 / the README; the defaults above are the winners.
+// Measured in tests/bench/dsmc_bench.cpp (BM_Layout_* against BM_Case_*), N = 1e6, one core,
+// interleaved: RoughPacked 10-18 % faster than RoughAoS in three runs (a quarter less memory to
+// stream; the second line of a straddling grain is the adjacent one, fetched with it), SmoothPacked
+// 3-15 % faster in two runs and 21 % slower in a third: the defaults are StoreFor below.
 //
 // Storage comes from HugePageBuffer (core/huge_page_buffer.hpp): on huge pages, so that a random
 // grain access costs no page walk.
@@ -25,6 +28,7 @@
 
 #include <cstddef>
 #include <string_view>
+#include <type_traits>
 
 namespace roughgas {
 
@@ -145,5 +149,9 @@ class SmoothPacked {
   private:
     HugePageBuffer<Vec3> v_, w_;
 };
+
+// The store a run uses for a restitution policy (see the table at the top): omega only where the
+// policy reads it.
+template <class Policy> using StoreFor = std::conditional_t<Policy::needs_rotation, RoughPacked, SmoothAoS>;
 
 } // namespace roughgas
