@@ -22,8 +22,9 @@ namespace roughgas {
 
 // Rough grains: reads and updates v and omega of both. The policy decides alpha and beta.
 template <class Policy>
-[[gnu::always_inline]] inline CollisionRecord collide(const PairConstants& pc, const Policy& policy, Vec3& v_i, Vec3& w_i, Vec3& v_j,
-                               Vec3& w_j, const Vec3& n) {
+[[gnu::always_inline]] inline CollisionRecord collide(const PairConstants& pc, const Policy& policy,
+                                                      Vec3& v_i, Vec3& w_i, Vec3& v_j, Vec3& w_j,
+                                                      const Vec3& n) {
     static_assert(Policy::needs_rotation, "smooth policies use the overload without omega");
     const Vec3 g_c = v_i - v_j;
     const Vec3 g = g_c - cross(pc.R_i * w_i + pc.R_j * w_j, n);
@@ -62,11 +63,12 @@ template <class Policy>
 // hard-sphere kernel draws g^N directly, sampling.hpp). g_n = |g^N|; omega is neither read nor
 // written, and g_t is not evaluated (NaN in the record).
 template <class Policy>
-[[gnu::always_inline]] inline CollisionRecord collide_normal_part(const PairConstants& pc, const Policy& policy, Vec3& v_i, Vec3& v_j,
-                                           const Vec3& g_N) {
+[[gnu::always_inline]] inline CollisionRecord
+collide_normal_part(const PairConstants& pc, const Policy& policy, Vec3& v_i, Vec3& v_j, const Vec3& g_N) {
     static_assert(!Policy::needs_rotation, "rough policies need omega");
     const double g_n2 = norm2(g_N);
-    const double g_n = sqrt_nonneg(g_n2); // dropped by the compiler where neither policy nor observer reads it
+    // Dropped by the compiler where neither the policy nor the observer reads it.
+    const double g_n = sqrt_nonneg(g_n2);
     const Coefficients c = policy(g_n, std::numeric_limits<double>::quiet_NaN());
     const double a = 1.0 + c.alpha;
     v_i -= (pc.m_eff_over_m_i * a) * g_N;

@@ -123,7 +123,8 @@ inline double uniform_pm1(Rng& r) {
 
 namespace detail {
 // The rare branch of uniform_index (probability < n / 2^64), kept out of line.
-[[gnu::noinline, gnu::cold]] inline std::uint64_t uniform_index_reject(Rng& r, std::uint64_t n, __uint128_t m) {
+[[gnu::noinline, gnu::cold]] inline std::uint64_t uniform_index_reject(Rng& r, std::uint64_t n,
+                                                                       __uint128_t m) {
     const std::uint64_t threshold = (0 - n) % n;
     while (static_cast<std::uint64_t>(m) < threshold)
         m = static_cast<__uint128_t>(r()) * n;
