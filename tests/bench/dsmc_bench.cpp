@@ -121,34 +121,32 @@ const TangentialTable& tangential_table() {
     return t;
 }
 
-// /N/T: N particles, T threads (groups: auto_groups(N), as roughgas run), wall-clock time.
-int threads_of(const benchmark::State& s) {
-    return static_cast<int>(s.range(1));
+// /N/T: N particles, T threads; the store (StoreFor), the groups (auto_groups(N)) and the speed
+// classes (2) that roughgas run uses; wall-clock time.
+template <class Policy> void run_case(benchmark::State& s, const SpeciesSpec& species, const Policy& policy) {
+    run_bench<StoreFor<Policy>>(s, species, policy, 2, 0, static_cast<int>(s.range(1)));
 }
 void BM_Case_RoughConstant(benchmark::State& s) {
-    run_bench<RoughPacked>(s, unit_grain(), make_rough_constant(0.9, 0.5), 2, 0, threads_of(s));
+    run_case(s, unit_grain(), make_rough_constant(0.9, 0.5));
 }
 void BM_Case_SmoothConstant(benchmark::State& s) {
-    run_bench<SmoothAoS>(s, unit_grain(), make_smooth_constant(0.9), 2, 0, threads_of(s));
+    run_case(s, unit_grain(), make_smooth_constant(0.9));
 }
 void BM_Case_SmoothElastic(benchmark::State& s) {
-    run_bench<SmoothAoS>(s, unit_grain(), make_smooth_constant(1.0), 2, 0, threads_of(s));
+    run_case(s, unit_grain(), make_smooth_constant(1.0));
 }
 void BM_Case_Coulomb(benchmark::State& s) {
-    run_bench<RoughPacked>(s, unit_grain(),
-                        make_coulomb(0.9, 0.5, 0.2, make_pair_constants({1, 0.5, 0.4}, {1, 0.5, 0.4}).kappa), 2, 0,
-                        threads_of(s));
+    run_case(s, unit_grain(),
+             make_coulomb(0.9, 0.5, 0.2, make_pair_constants({1, 0.5, 0.4}, {1, 0.5, 0.4}).kappa));
 }
 void BM_Case_ViscoelasticSmooth(benchmark::State& s) {
-    run_bench<SmoothAoS>(s, ice_grain(), make_viscoelastic_smooth(normal_table(), ice_pair()), 2, 0,
-                         threads_of(s));
+    run_case(s, ice_grain(), make_viscoelastic_smooth(normal_table(), ice_pair()));
 }
 void BM_Case_Viscoelastic(benchmark::State& s) {
-    run_bench<RoughPacked>(s, ice_grain(), make_viscoelastic(normal_table(), ice_pair(), 0.5), 2, 0, threads_of(s));
+    run_case(s, ice_grain(), make_viscoelastic(normal_table(), ice_pair(), 0.5));
 }
 void BM_Case_Brilliantov(benchmark::State& s) {
-    run_bench<RoughPacked>(s, ice_grain(), make_brilliantov(normal_table(), tangential_table(), ice_pair()), 2, 0,
-                        threads_of(s));
+    run_case(s, ice_grain(), make_brilliantov(normal_table(), tangential_table(), ice_pair()));
 }
 
 // Speed classes of the majorant (engine.hpp): 1 = the plain vmax_a + vmax_b bound.
@@ -176,14 +174,15 @@ void BM_Skip_MixtureKernelOneSpecies(benchmark::State& s) {
     run_bench<RoughPacked, RoughConstant, true>(s, unit_grain(), make_rough_constant(0.9, 0.5));
 }
 void BM_Skip_VariantPerCollision(benchmark::State& s) {
-    run_bench<RoughPacked, AnyRoughPolicy, true>(s, unit_grain(), AnyRoughPolicy{make_rough_constant(0.9, 0.5)});
+    run_bench<RoughPacked, AnyRoughPolicy, true>(s, unit_grain(),
+                                                 AnyRoughPolicy{make_rough_constant(0.9, 0.5)});
 }
 
 // Groups and threads (engine.hpp, "Groups"): /N/G/T, wall-clock time (UseRealTime), so that
 // items_per_second is collisions per second of the run on T threads.
 void BM_Threads_RoughConstant(benchmark::State& s) {
     run_bench<RoughPacked>(s, unit_grain(), make_rough_constant(0.9, 0.5), 2, static_cast<int>(s.range(1)),
-                        static_cast<int>(s.range(2)));
+                           static_cast<int>(s.range(2)));
 }
 void BM_Threads_SmoothConstant(benchmark::State& s) {
     run_bench<SmoothAoS>(s, unit_grain(), make_smooth_constant(0.9), 2, static_cast<int>(s.range(1)),
