@@ -130,6 +130,7 @@ void NormalTable::finish_layout() {
     // Bits of w_min >> shift: biased exponent and the top mantissa bits, i.e. the index of interval 0.
     index_base_ = static_cast<std::uint64_t>(opt_.e_min + 1023) << opt_.mantissa_bits;
     t_scale_ = std::ldexp(1.0, -shift); // low mantissa bits -> local coordinate t in [0, 1)
+    w_min_ = std::ldexp(1.0, opt_.e_min);
     w_max_ = std::ldexp(1.0, opt_.e_max);
 }
 

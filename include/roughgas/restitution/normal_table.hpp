@@ -51,8 +51,7 @@ public:
     static NormalTable build(ContactModel model, NormalTableOptions opt = {});
 
     double eps_n(double w) const {
-        const double w_lo = w_min();
-        if (!(w >= w_lo)) return below(w); // also w <= 0 and NaN go to the series branch
+        if (!(w >= w_min_)) return below(w); // also w <= 0 and NaN go to the series branch
         if (w >= w_max_) return above(w);
         const std::uint64_t bits = std::bit_cast<std::uint64_t>(w);
         const int shift = 52 - opt_.mantissa_bits;
@@ -62,7 +61,7 @@ public:
         return c[0] + t * (c[1] + t * (c[2] + t * c[3]));
     }
 
-    double w_min() const { return std::ldexp(1.0, opt_.e_min); }
+    double w_min() const { return w_min_; }
     double w_max() const { return w_max_; }
     const ContactModel& model() const { return model_; }
     const NormalTableOptions& options() const { return opt_; }
@@ -88,6 +87,7 @@ private:
     NormalTableOptions opt_{};
     std::vector<std::array<double, 4>> coef_; // cubic in local t in [0, 1) per interval
     std::array<double, 5> series_{};
+    double w_min_ = 0; // 2^e_min, kept: std::ldexp is a library call, and eps_n runs once per collision
     double w_max_ = 0, eps_max_ = 0, slope_max_ = 0; // power-law tail: eps_max (w/w_max)^slope_max
     std::uint64_t index_base_ = 0;
     double t_scale_ = 0;

@@ -61,9 +61,14 @@ public:
     double lookup(double g_n, double g_t) const {
         const double x = pseudo_log2(g_n);
         const double c = critical_(x);
+        // Read before the branch on c (which the predictor often misses): its loads then overlap the
+        // critical look-up's instead of following them. The empty asm keeps the compiler from sinking
+        // it back into the branch.
+        double unbroken = unbroken_(x);
+        asm("" : "+x"(unbroken));
         if (std::isnan(c)) return c;
         const double g_cr = c * g_n;
-        if (g_t < g_cr * (1.0 - opt_.onset_band)) return unbroken_(x);
+        if (g_t < g_cr * (1.0 - opt_.onset_band)) return unbroken;
         if (g_t <= g_cr * (1.0 + opt_.onset_band)) return std::numeric_limits<double>::quiet_NaN();
         return breaking_(x, g_cr / g_t);
     }

@@ -1,0 +1,116 @@
+#!/usr/bin/env python3
+"""The speed targets of issue 5, each with a confidence interval.
+
+    scripts/python3 scripts/bench_targets.py [--build build] [--out out/targets] [--repetitions 12]
+
+bench_table.py measures every kernel in a call of its own, minutes apart, and reports medians of
+3 repetitions: on a machine whose speed drifts by up to 30 % within minutes (a VM sharing its host),
+a ratio of two such medians is not established by one table. This script measures only the
+benchmarks the targets name, all in ONE Google Benchmark call whose repetitions are randomly
+interleaved, so that a drift of the machine hits numerator and denominator alike, and it reports
+every ratio with a 90 % bootstrap interval (the repetitions of each benchmark resampled
+independently, 4000 times; the ratio of the medians). A target is
+  met        when the interval lies above it,
+  not met    when the interval lies below it,
+  undecided  otherwise (more repetitions, or a quieter machine, would decide it).
+The benchmarks (tests/bench/dsmc_bench.cpp, BM_Case_*/N/T, wall-clock collisions per second):
+constant rough, constant smooth and cached brilliantov at N = 1e6 on 1 and 2 threads, and elastic
+smooth at N = 1e5 and 1e6 on one thread (against SPARTA's figures on this machine, from the issue).
+Writes markdown to stdout and the raw JSON to --out.
+"""
+import argparse
+import datetime
+import json
+import os
+import re
+import subprocess
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bench_common import BENCH_ENV, commit, loadavg, machine  # noqa: E402
+
+FILTER = ("^BM_Case_(RoughConstant|SmoothConstant|Brilliantov)/1000000/[12]/|"
+          "^BM_Case_SmoothElastic/(100000|1000000)/1/")
+
+
+def samples(out_json):
+    with open(out_json) as f:
+        data = json.load(f)
+    s = {}
+    for b in data["benchmarks"]:
+        if b.get("run_type") == "iteration":
+            name = re.sub(r"^BM_Case_|/min_time:[^/]*|/real_time", "", b["run_name"])
+            s.setdefault(name, []).append(b["items_per_second"])
+    return {k: np.array(v) for k, v in s.items()}
+
+
+def interval(num, den, rng, boots=4000):
+    """Median ratio of num/den (den may be a constant) and its 90 % bootstrap interval."""
+    num = np.asarray(num, dtype=float)
+    den_arr = np.atleast_1d(np.asarray(den, dtype=float))
+    est = np.median(num) / np.median(den_arr)
+    bn = np.median(rng.choice(num, size=(boots, num.size)), axis=1)
+    bd = np.median(rng.choice(den_arr, size=(boots, den_arr.size)), axis=1)
+    lo, hi = np.percentile(bn / bd, [5, 95])
+    return est, lo, hi
+
+
+def verdict(lo, hi, target):
+    return "met" if lo >= target else ("not met" if hi < target else "undecided")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--build", default="build")
+    ap.add_argument("--out", default="out/targets")
+    ap.add_argument("--repetitions", type=int, default=12)
+    a = ap.parse_args()
+    dsmc = os.path.join(a.build, "tests", "bench", "dsmc_bench")
+    if not os.path.exists(dsmc):
+        sys.exit(f"bench_targets.py: {dsmc} missing: build with -DCMAKE_BUILD_TYPE=Release (benchmarks on)")
+    if a.repetitions < 3:
+        sys.exit("bench_targets.py: --repetitions must be at least 3")
+    os.makedirs(a.out, exist_ok=True)
+    out_json = os.path.join(a.out, "targets.json")
+    l0 = loadavg()
+    start = datetime.datetime.now(datetime.timezone.utc)
+    subprocess.run([dsmc, f"--benchmark_filter={FILTER}", f"--benchmark_repetitions={a.repetitions}",
+                    "--benchmark_enable_random_interleaving=true", "--benchmark_format=json",
+                    f"--benchmark_out={out_json}", "--benchmark_out_format=json"],
+                   check=True, stdout=subprocess.DEVNULL, env=BENCH_ENV)
+    minutes = (datetime.datetime.now(datetime.timezone.utc) - start).total_seconds() / 60
+    s = samples(out_json)
+    rng = np.random.default_rng(1)
+
+    print(f"Measured {start:%Y-%m-%d %H:%M} UTC ({minutes:.0f} min) on {machine()}; commit {commit()[:12]}; "
+          f"{a.repetitions} randomly interleaved repetitions of each benchmark in one call; load (1 min) "
+          f"{l0:.2f} before, {loadavg():.2f} after; OMP_WAIT_POLICY={BENCH_ENV['OMP_WAIT_POLICY']}.\n")
+    print("| benchmark | median 1e6 coll/s | min .. max |")
+    print("|-----------|-------------------|------------|")
+    for name in sorted(s):
+        v = s[name] / 1e6
+        print(f"| {name} | {np.median(v):.2f} | {v.min():.2f} .. {v.max():.2f} |")
+
+    rows = [
+        ("rough constant, N = 1e6, one thread (1e6/s)", s["RoughConstant/1000000/1"], 1e6, 3.0),
+        ("elastic smooth / SPARTA at N = 1e5 (0.75e6/s)", s["SmoothElastic/100000/1"], 0.75e6, 5.0),
+        ("elastic smooth / SPARTA at N = 1e6 (0.5e6/s)", s["SmoothElastic/1000000/1"], 0.5e6, 5.0),
+        ("smooth / rough, one thread", s["SmoothConstant/1000000/1"], s["RoughConstant/1000000/1"], 1.3),
+        ("smooth / rough, two threads", s["SmoothConstant/1000000/2"], s["RoughConstant/1000000/2"], 1.3),
+        ("brilliantov / rough constant, one thread", s["Brilliantov/1000000/1"], s["RoughConstant/1000000/1"], 0.7),
+        ("brilliantov / rough constant, two threads", s["Brilliantov/1000000/2"], s["RoughConstant/1000000/2"], 0.7),
+        ("two threads / one, rough", s["RoughConstant/1000000/2"], s["RoughConstant/1000000/1"], 1.8),
+        ("two threads / one, smooth", s["SmoothConstant/1000000/2"], s["SmoothConstant/1000000/1"], 1.8),
+        ("two threads / one, brilliantov", s["Brilliantov/1000000/2"], s["Brilliantov/1000000/1"], 1.8),
+    ]
+    print("\n| target (issue 5) | goal | measured | 90 % interval | verdict |")
+    print("|------------------|------|----------|---------------|---------|")
+    for label, num, den, goal in rows:
+        est, lo, hi = interval(num, den, rng)
+        print(f"| {label} | >= {goal:g} | {est:.2f} | {lo:.2f} .. {hi:.2f} | {verdict(lo, hi, goal)} |")
+
+
+if __name__ == "__main__":
+    main()
