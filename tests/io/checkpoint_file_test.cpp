@@ -91,7 +91,8 @@ TEST(CheckpointFile, AnyFlippedByteIsRefused) {
 TEST(CheckpointFile, OtherVersionOrKindIsNamed) {
     std::string bytes = encode_checkpoint(a_replica());
     bytes[8] = 7; // the format version (after the 8-byte magic), before the checksum is looked at
-    EXPECT_NE(reason(bytes).find("checkpoint format version 7; this roughgas reads version 1"),
+    EXPECT_NE(reason(bytes).find("checkpoint format version 7; this roughgas reads version " +
+                                 std::to_string(checkpoint_format_version)),
               std::string::npos)
         << reason(bytes);
     EXPECT_NE(reason("RGTCACHE and more bytes than a header").find("not a roughgas checkpoint"),
