@@ -2,6 +2,7 @@
 """The speed targets of issue 5, each with a confidence interval.
 
     scripts/python3 scripts/bench_targets.py [--build build] [--out out/targets] [--repetitions 12]
+    scripts/python3 scripts/bench_targets.py --self-check   (the interval and verdicts on synthetic data)
 
 bench_table.py measures every kernel in a call of its own, minutes apart, and reports medians of
 3 repetitions: on a machine whose speed drifts by up to 30 % within minutes (a VM sharing its host),
@@ -61,12 +62,51 @@ def verdict(lo, hi, target):
     return "met" if lo >= target else ("not met" if hi < target else "undecided")
 
 
+def self_check():
+    """The interval on synthetic repetitions (lognormal scatter) whose true ratio is 1.5, over 200 trials
+    of 12 repetitions each: with 10 % scatter the 90 % interval must cover 1.5 in 80-99 % of the trials
+    (a bootstrap of medians from 12 values is not exact); with 5 % scatter every trial must call 1.3
+    met and 1.7 not met; with 30 % scatter a target equal to the truth must stay undecided in at least
+    80 % of them. Exits 1 on a failure (ctest: scripts_bench_targets)."""
+    rng = np.random.default_rng(7)
+    boot = np.random.default_rng(1)
+    failures = []
+
+    def trials(scatter, n=200):
+        for _ in range(n):
+            den = 4e6 * rng.lognormal(0, scatter, 12)
+            num = 1.5 * 4e6 * rng.lognormal(0, scatter, 12)
+            yield interval(num, den, boot, boots=1000)
+
+    cover = np.mean([lo < 1.5 < hi for _, lo, hi in trials(0.10)])
+    if not 0.80 <= cover <= 0.99:
+        failures.append(f"10 % scatter: the interval covers the true ratio in {cover:.0%} of the trials")
+    wrong = sum(verdict(lo, hi, 1.3) != "met" or verdict(lo, hi, 1.7) != "not met" for _, lo, hi in trials(0.05))
+    if wrong:
+        failures.append(f"5 % scatter: {wrong} of 200 trials do not decide 1.3 and 1.7")
+    undecided = np.mean([verdict(lo, hi, 1.5) == "undecided" for _, lo, hi in trials(0.30)])
+    if undecided < 0.80:
+        failures.append(f"30 % scatter: the truth is undecided in only {undecided:.0%} of the trials")
+    num = 4e6 * rng.lognormal(0, 0.05, 12)
+    _, lo, hi = interval(num, 2e6, boot)  # against a constant (the SPARTA figures)
+    if not lo < np.median(num) / 2e6 < hi:
+        failures.append("a constant denominator: the interval misses the ratio of the medians")
+    for f in failures:
+        print("bench_targets.py --self-check:", f)
+    print(f"bench_targets.py --self-check: coverage {cover:.0%} (10 % scatter), undecided {undecided:.0%} "
+          f"(30 % scatter), {'FAILED' if failures else 'passed'}")
+    sys.exit(1 if failures else 0)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--build", default="build")
     ap.add_argument("--out", default="out/targets")
     ap.add_argument("--repetitions", type=int, default=12)
+    ap.add_argument("--self-check", action="store_true", help="check the interval and verdicts, then exit")
     a = ap.parse_args()
+    if a.self_check:
+        self_check()
     dsmc = os.path.join(a.build, "tests", "bench", "dsmc_bench")
     if not os.path.exists(dsmc):
         sys.exit(f"bench_targets.py: {dsmc} missing: build with -DCMAKE_BUILD_TYPE=Release (benchmarks on)")
