@@ -127,8 +127,9 @@ std::vector<Damage> damages() {
              b[b.size() / 2] = static_cast<char>(b[b.size() / 2] ^ 1);
              write(ck / "replica_0.bin", b);
          }},
-        {"OtherFormatVersion", "run.bin", "checkpoint format version 99; this roughgas reads version " +
-                                                   std::to_string(checkpoint_format_version),
+        {"OtherFormatVersion", "run.bin",
+         "checkpoint format version 99; this roughgas reads version " +
+             std::to_string(checkpoint_format_version),
          [](const fs::path& ck, const fs::path&) {
              std::string b = test::read_file(ck / "run.bin");
              b[8] = 99; // the u64 after the magic
