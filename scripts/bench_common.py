@@ -1,5 +1,7 @@
-"""What the measurement scripts (bench_table.py, bench_accuracy.py, make_reference.py) share: where they
-ran (machine, load average, commit) and how they run `roughgas run` (idle OpenMP threads sleep)."""
+"""What the measurement scripts (bench_table.py, bench_targets.py, bench_accuracy.py, make_reference.py)
+share: where they ran (machine, load average, commit), how they run a Google Benchmark binary and
+`roughgas run` (idle OpenMP threads sleep)."""
+import json
 import os
 import platform
 import re
@@ -48,6 +50,24 @@ def commit():
     except (OSError, subprocess.CalledProcessError):
         return "unknown"
     return head + ("+changes" if dirty else "")
+
+
+def benchmark_iterations(binary, flt, reps, out_json):
+    """Runs the benchmarks of one filter in one call, `reps` randomly interleaved repetitions each, the
+    JSON kept in out_json; returns {name: [the repetitions' result dicts]}, the name without its
+    /min_time, /real_time and /iterations suffixes."""
+    cmd = [binary, f"--benchmark_filter={flt}", f"--benchmark_repetitions={reps}",
+           "--benchmark_enable_random_interleaving=true", "--benchmark_report_aggregates_only=false",
+           "--benchmark_format=json", f"--benchmark_out={out_json}", "--benchmark_out_format=json"]
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, env=BENCH_ENV)
+    with open(out_json) as f:
+        data = json.load(f)
+    runs = {}
+    for b in data["benchmarks"]:
+        if b.get("run_type") == "iteration":
+            name = re.sub(r"/min_time:[^/]*|/real_time|/iterations:\d+", "", b["run_name"])
+            runs.setdefault(name, []).append(b)
+    return runs
 
 
 def run_roughgas(roughgas, case, out, sets=(), threads=1):

@@ -22,14 +22,13 @@ import csv
 import datetime
 import json
 import os
-import re
 import statistics
 import subprocess
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_common import BENCH_ENV, loadavg, machine  # noqa: E402
+from bench_common import BENCH_ENV, benchmark_iterations, loadavg, machine  # noqa: E402
 
 CASES = [
     ("SmoothConstant", "constant, smooth (alpha 0.9)"),
@@ -45,19 +44,9 @@ CASES = [
 def run_bench(binary, flt, reps, out_json):
     """Runs one Google Benchmark filter; returns ({name: (median items/s, median real ms)}, load before, after)."""
     before = loadavg()
-    cmd = [binary, f"--benchmark_filter={flt}", f"--benchmark_repetitions={reps}",
-           "--benchmark_enable_random_interleaving=true", "--benchmark_report_aggregates_only=false",
-           "--benchmark_format=json", f"--benchmark_out={out_json}", "--benchmark_out_format=json"]
-    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, env=BENCH_ENV)
+    runs = benchmark_iterations(binary, flt, reps, out_json)
     after = loadavg()
-    with open(out_json) as f:
-        data = json.load(f)
-    samples = {}
-    for b in data["benchmarks"]:
-        if b.get("run_type") != "iteration":
-            continue
-        name = re.sub(r"/min_time:[^/]*|/real_time|/iterations:\d+", "", b["run_name"])
-        samples.setdefault(name, []).append((b.get("items_per_second", 0.0), b["real_time"], b))
+    samples = {name: [(b.get("items_per_second", 0.0), b["real_time"], b) for b in bs] for name, bs in runs.items()}
     result = {}
     for name, s in samples.items():
         result[name] = (statistics.median(x[0] for x in s), statistics.median(x[1] for x in s), s[-1][2])

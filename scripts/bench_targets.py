@@ -21,30 +21,16 @@ Writes markdown to stdout and the raw JSON to --out.
 """
 import argparse
 import datetime
-import json
 import os
-import re
-import subprocess
 import sys
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_common import BENCH_ENV, commit, loadavg, machine  # noqa: E402
+from bench_common import BENCH_ENV, benchmark_iterations, commit, loadavg, machine  # noqa: E402
 
 FILTER = ("^BM_Case_(RoughConstant|SmoothConstant|Brilliantov)/1000000/[12]/|"
           "^BM_Case_SmoothElastic/(100000|1000000)/1/")
-
-
-def samples(out_json):
-    with open(out_json) as f:
-        data = json.load(f)
-    s = {}
-    for b in data["benchmarks"]:
-        if b.get("run_type") == "iteration":
-            name = re.sub(r"^BM_Case_|/min_time:[^/]*|/real_time", "", b["run_name"])
-            s.setdefault(name, []).append(b["items_per_second"])
-    return {k: np.array(v) for k, v in s.items()}
 
 
 def interval(num, den, rng, boots=4000):
@@ -116,12 +102,9 @@ def main():
     out_json = os.path.join(a.out, "targets.json")
     l0 = loadavg()
     start = datetime.datetime.now(datetime.timezone.utc)
-    subprocess.run([dsmc, f"--benchmark_filter={FILTER}", f"--benchmark_repetitions={a.repetitions}",
-                    "--benchmark_enable_random_interleaving=true", "--benchmark_format=json",
-                    f"--benchmark_out={out_json}", "--benchmark_out_format=json"],
-                   check=True, stdout=subprocess.DEVNULL, env=BENCH_ENV)
+    runs = benchmark_iterations(dsmc, FILTER, a.repetitions, out_json)
     minutes = (datetime.datetime.now(datetime.timezone.utc) - start).total_seconds() / 60
-    s = samples(out_json)
+    s = {name.removeprefix("BM_Case_"): np.array([b["items_per_second"] for b in bs]) for name, bs in runs.items()}
     rng = np.random.default_rng(1)
 
     print(f"Measured {start:%Y-%m-%d %H:%M} UTC ({minutes:.0f} min) on {machine()}; commit {commit()[:12]}; "
