@@ -21,6 +21,25 @@ def loadavg():
         return float(f.read().split()[0])
 
 
+def cpu_times():
+    """(all, stolen) jiffies of the machine's CPUs since boot (/proc/stat): `stolen` is the time the
+    hypervisor ran something else while this VM wanted to run; None where there is no /proc/stat."""
+    try:
+        with open("/proc/stat") as f:
+            v = [int(x) for x in f.readline().split()[1:]]
+    except OSError:
+        return None
+    return sum(v[:8]), (v[7] if len(v) > 7 else 0)
+
+
+def stolen_since(t0):
+    """The share of CPU time the hypervisor took since cpu_times() returned t0, as text."""
+    t1 = cpu_times()
+    if t0 is None or t1 is None or t1[0] <= t0[0]:
+        return "unknown"
+    return f"{100 * (t1[1] - t0[1]) / (t1[0] - t0[0]):.0f} %"
+
+
 def machine():
     model, l2, l3 = "?", "?", "?"
     try:
@@ -68,6 +87,29 @@ def benchmark_iterations(binary, flt, reps, out_json):
             name = re.sub(r"/min_time:[^/]*|/real_time|/iterations:\d+", "", b["run_name"])
             runs.setdefault(name, []).append(b)
     return runs
+
+
+def single_rate(binary, flt):
+    """items/s of the one benchmark that `flt` selects, in a call of its own (wall-clock rate)."""
+    r = subprocess.run([binary, f"--benchmark_filter={flt}", "--benchmark_format=json"], check=True,
+                       capture_output=True, text=True, env=BENCH_ENV)
+    return _first_rate(r.stdout)
+
+
+def pair_rate(binary, flt):
+    """The summed items/s of two processes of the same benchmark started at once (nothing shared but
+    the machine: the ceiling of what two threads of one process can reach)."""
+    cmd = [binary, f"--benchmark_filter={flt}", "--benchmark_format=json"]
+    procs = [subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True, env=BENCH_ENV)
+             for _ in range(2)]
+    outs = [p.communicate()[0] for p in procs]
+    if any(p.returncode for p in procs):
+        raise RuntimeError(f"{' '.join(cmd)} failed")
+    return sum(_first_rate(o) for o in outs)
+
+
+def _first_rate(text):
+    return [b["items_per_second"] for b in json.loads(text)["benchmarks"] if b.get("run_type") == "iteration"][0]
 
 
 def run_roughgas(roughgas, case, out, sets=(), threads=1):

@@ -28,7 +28,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_common import BENCH_ENV, benchmark_iterations, loadavg, machine  # noqa: E402
+from bench_common import BENCH_ENV, benchmark_iterations, loadavg, machine, pair_rate, single_rate  # noqa: E402
 
 CASES = [
     ("SmoothConstant", "constant, smooth (alpha 0.9)"),
@@ -58,22 +58,12 @@ def concurrent_pair(binary, flt, reps, out_prefix):
     (so that a drift of the machine hits both). Returns the medians of (one alone, the pair's sum)
     in items/s, and the load before and after."""
     before = loadavg()
-    cmd = [binary, f"--benchmark_filter={flt}", "--benchmark_format=json"]
     alone, pair = [], []
-
-    def rate(text):
-        return [b["items_per_second"] for b in json.loads(text)["benchmarks"] if b.get("run_type") == "iteration"][0]
-
     for k in range(reps):
-        alone.append(rate(subprocess.run(cmd, check=True, capture_output=True, text=True, env=BENCH_ENV).stdout))
-        procs = [subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True, env=BENCH_ENV)
-                 for _ in range(2)]
-        outs = [p.communicate()[0] for p in procs]
-        if any(p.returncode for p in procs):
-            raise RuntimeError(f"{' '.join(cmd)} failed")
-        pair.append(sum(rate(o) for o in outs))
+        alone.append(single_rate(binary, flt))
+        pair.append(pair_rate(binary, flt))
         with open(f"{out_prefix}_{k}.json", "w") as f:
-            json.dump({"alone": alone[-1], "pair": outs}, f)
+            json.dump({"alone": alone[-1], "pair": pair[-1]}, f)
     return statistics.median(alone), statistics.median(pair), before, loadavg()
 
 

@@ -2,6 +2,7 @@
 """The speed targets of issue 5, each with a confidence interval.
 
     scripts/python3 scripts/bench_targets.py [--build build] [--out out/targets] [--repetitions 12]
+    scripts/python3 scripts/bench_targets.py --ceiling 6     (also: what two threads can reach here)
     scripts/python3 scripts/bench_targets.py --self-check   (the interval and verdicts on synthetic data)
 
 bench_table.py measures every kernel in a call of its own, minutes apart, and reports medians of
@@ -18,16 +19,26 @@ The benchmarks (tests/bench/dsmc_bench.cpp, BM_Case_*/N/T, wall-clock collisions
 constant rough, constant smooth and cached brilliantov at N = 1e6 on 1 and 2 threads, and elastic
 smooth at N = 1e5 and 1e6 on one thread (against SPARTA's figures on this machine, from the issue).
 Writes markdown to stdout and the raw JSON to --out.
+
+--ceiling R adds, for the same three kernels at N = 1e6, R rounds of three calls in a random order:
+one one-thread process alone, two one-thread processes at once (summed: they share nothing but the
+machine's cores, caches and memory, so their sum is what two threads of one process can reach at
+best), and one two-thread process. Each round's ratios (pair / alone, two threads / alone, two
+threads / pair) are taken within the round, seconds apart; the table gives their median and a 90 %
+bootstrap interval over the rounds. If even the pair's interval lies below 1.8, the two-thread
+target is out of this machine's reach.
 """
 import argparse
 import datetime
+import json
 import os
 import sys
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_common import BENCH_ENV, benchmark_iterations, commit, loadavg, machine  # noqa: E402
+from bench_common import (BENCH_ENV, benchmark_iterations, commit, cpu_times, loadavg, machine,  # noqa: E402
+                          pair_rate, single_rate, stolen_since)
 
 FILTER = ("^BM_Case_(RoughConstant|SmoothConstant|Brilliantov)/1000000/[12]/|"
           "^BM_Case_SmoothElastic/(100000|1000000)/1/")
@@ -89,6 +100,8 @@ def main():
     ap.add_argument("--build", default="build")
     ap.add_argument("--out", default="out/targets")
     ap.add_argument("--repetitions", type=int, default=12)
+    ap.add_argument("--ceiling", type=int, default=0, metavar="R",
+                    help="also R rounds of one alone / two at once / two threads (0: none)")
     ap.add_argument("--self-check", action="store_true", help="check the interval and verdicts, then exit")
     a = ap.parse_args()
     if a.self_check:
@@ -98,9 +111,11 @@ def main():
         sys.exit(f"bench_targets.py: {dsmc} missing: build with -DCMAKE_BUILD_TYPE=Release (benchmarks on)")
     if a.repetitions < 3:
         sys.exit("bench_targets.py: --repetitions must be at least 3")
+    if a.ceiling and a.ceiling < 3:
+        sys.exit("bench_targets.py: --ceiling must be 0 or at least 3")
     os.makedirs(a.out, exist_ok=True)
     out_json = os.path.join(a.out, "targets.json")
-    l0 = loadavg()
+    l0, t0 = loadavg(), cpu_times()
     start = datetime.datetime.now(datetime.timezone.utc)
     runs = benchmark_iterations(dsmc, FILTER, a.repetitions, out_json)
     minutes = (datetime.datetime.now(datetime.timezone.utc) - start).total_seconds() / 60
@@ -109,7 +124,8 @@ def main():
 
     print(f"Measured {start:%Y-%m-%d %H:%M} UTC ({minutes:.0f} min) on {machine()}; commit {commit()[:12]}; "
           f"{a.repetitions} randomly interleaved repetitions of each benchmark in one call; load (1 min) "
-          f"{l0:.2f} before, {loadavg():.2f} after; OMP_WAIT_POLICY={BENCH_ENV['OMP_WAIT_POLICY']}.\n")
+          f"{l0:.2f} before, {loadavg():.2f} after; CPU time stolen by the hypervisor {stolen_since(t0)}; "
+          f"OMP_WAIT_POLICY={BENCH_ENV['OMP_WAIT_POLICY']}.\n")
     print("| benchmark | median 1e6 coll/s | min .. max |")
     print("|-----------|-------------------|------------|")
     for name in sorted(s):
@@ -133,6 +149,39 @@ def main():
     for label, num, den, goal in rows:
         est, lo, hi = interval(num, den, rng)
         print(f"| {label} | >= {goal:g} | {est:.2f} | {lo:.2f} .. {hi:.2f} | {verdict(lo, hi, goal)} |")
+    if a.ceiling:
+        ceiling(dsmc, a.ceiling, os.path.join(a.out, "ceiling.json"), rng)
+
+
+def ceiling(dsmc, rounds, out_json, rng):
+    """The two-thread ceiling of this machine (module docstring, --ceiling)."""
+    order = np.random.default_rng()
+    kernels = ("RoughConstant", "SmoothConstant", "Brilliantov")
+    data = {k: [] for k in kernels}
+    l0, t0, start = loadavg(), cpu_times(), datetime.datetime.now(datetime.timezone.utc)
+    for _ in range(rounds):
+        for k in order.permutation(kernels):
+            f1, f2 = f"^BM_Case_{k}/1000000/1/", f"^BM_Case_{k}/1000000/2/"
+            calls = {"alone": lambda: single_rate(dsmc, f1), "pair": lambda: pair_rate(dsmc, f1),
+                     "two_threads": lambda: single_rate(dsmc, f2)}
+            r = {}
+            for c in order.permutation(list(calls)):
+                r[c] = calls[c]()
+            data[k].append(r)
+    with open(out_json, "w") as f:
+        json.dump(data, f, indent=1)
+    minutes = (datetime.datetime.now(datetime.timezone.utc) - start).total_seconds() / 60
+    print(f"\nThe two-thread ceiling ({start:%H:%M} UTC, {minutes:.0f} min, {rounds} rounds of three calls in random "
+          f"order; load {l0:.2f} before, {loadavg():.2f} after; CPU time stolen by the hypervisor {stolen_since(t0)}), "
+          "N = 1e6, ratios within each round:\n")
+    print("| kernel | two processes / one alone | two threads / one alone | two threads / two processes |")
+    print("|--------|---------------------------|-------------------------|-----------------------------|")
+    for k in kernels:
+        cells = []
+        for num, den in (("pair", "alone"), ("two_threads", "alone"), ("two_threads", "pair")):
+            est, lo, hi = interval([r[num] / r[den] for r in data[k]], 1.0, rng)
+            cells.append(f"{est:.2f} ({lo:.2f} .. {hi:.2f})")
+        print(f"| {k} | " + " | ".join(cells) + " |")
 
 
 if __name__ == "__main__":

@@ -108,6 +108,29 @@ TEST(Groups, PausingDoesNotChangeTheTrajectory) {
     EXPECT_TRUE(same_state(a, b));
 }
 
+TEST(Groups, PhasesStopExactlyInAHeatingGas) {
+    // The phases of a run to a collision target aim at half the remaining collisions, predicted
+    // from the current candidate rate and acceptance (engine.hpp, "Stopping in a grouped run"). A gas
+    // whose translational temperature grows (T_rot = 30 T_tr, perfectly rough: T_tr rises about
+    // tenfold towards equipartition, so the acceptance and the candidate rate grow within a step) is
+    // where a prediction could pass its target: 60 targets of 800 collisions each must be met
+    // exactly, with no overshoot, and the trajectory must be bitwise that of an unpaused run on one
+    // thread. (Aiming each phase at all of the remainder fails here.)
+    auto a = make_engine<RoughAoS>(20000, make_rough_constant(0.99, 1.0), grouped(23, 0, 8, 1), 30.0);
+    auto b = make_engine<RoughAoS>(20000, make_rough_constant(0.99, 1.0), grouped(23, 0, 8, 2), 30.0);
+    const double T0 = moments_of(b).all.T_tr;
+    for (int k = 1; k <= 60; ++k) {
+        b.run_collisions(k * 800);
+        ASSERT_EQ(b.collisions(), k * 800);
+    }
+    a.run_collisions(60 * 800);
+    EXPECT_EQ(a.counters().overshoots, 0);
+    EXPECT_EQ(b.counters().overshoots, 0);
+    EXPECT_GT(b.counters().phases, 60);
+    EXPECT_GT(moments_of(b).all.T_tr, 5.0 * T0); // the gas did heat
+    EXPECT_TRUE(same_state(a, b));
+}
+
 TEST(Groups, CollisionRateIsExact) {
     // Elastic smooth gas in equilibrium, N = 1e4 in 8 groups (1250 grains each, rates x 8),
     // 2 threads: nu = 2 C/(N t) over the exact 4 n sigma^2 sqrt(pi T/m) (N - 1)/N. 16 replicas of 3e5
