@@ -196,6 +196,7 @@ void fill_summary(ReplicaSummary* summary, const Engine& engine, const std::stri
     summary->beta_clamped = clamped;
     summary->max_mean_drift = k.max_mean_drift;
     summary->recentrings = k.recentrings;
+    summary->overshoots = k.overshoots;
     summary->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
 }
 

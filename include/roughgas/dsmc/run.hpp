@@ -60,6 +60,7 @@ struct ReplicaSummary {
     double max_mean_drift = 0;      // largest centre-of-mass speed over the rms speed seen at a step start:
                                     // round-off, removed once above 1e-10 (dsmc/engine.hpp)
     std::int64_t recentrings = 0;   // steps that removed it
+    std::int64_t overshoots = 0;    // grouped runs: collision counts passed in a phase (engine.hpp)
     double seconds = 0;             // wall time of the collision loop and the moments
 };
 
