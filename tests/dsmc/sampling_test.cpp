@@ -118,5 +118,34 @@ TEST(Streams, AreKeyedAndReproducible) {
     EXPECT_LT(uniform01(x), 1.0);
 }
 
+// The collision loop's generator (rng.hpp): each of its eight lanes is exactly xoshiro256++ from its
+// four seed words, and the words come out round by round, lanes in order, across several refills.
+TEST(Streams, EightLaneGeneratorIsXoshiroLaneByLane) {
+    constexpr int L = CollisionRng::lanes, B = CollisionRng::buffer_size;
+    const StreamKey key{3, Stream::collisions, 1, 7, 2};
+    CollisionRng x8 = make_collision_stream(key);
+    std::uint64_t seed = stream_hash(key);
+    std::vector<Xoshiro256pp> lanes(L);
+    for (auto& lane : lanes) {
+        std::array<std::uint64_t, 4> s;
+        for (auto& w : s)
+            w = splitmix64(seed); // lane l: words 4l .. 4l + 3 of the splitmix64 sequence
+        lane.set_state(s);
+    }
+    for (int k = 0; k < 5 * B + 3; ++k)
+        ASSERT_EQ(x8(), lanes[static_cast<std::size_t>(k % L)]()) << "word " << k;
+    // Its checkpoint words continue it exactly, mid-buffer; a position past the buffer is refused.
+    CollisionRng copy;
+    copy.set_state(x8.state());
+    EXPECT_EQ(copy, x8);
+    for (int k = 0; k < 2 * B; ++k)
+        ASSERT_EQ(copy(), x8());
+    auto bad = x8.state();
+    bad.back() = B + 1;
+    EXPECT_THROW(copy.set_state(bad), std::invalid_argument);
+    // Distinct keys, distinct streams.
+    EXPECT_NE(make_collision_stream(key)(), make_collision_stream(StreamKey{3, Stream::collisions, 1, 7, 3})());
+}
+
 } // namespace
 } // namespace roughgas

@@ -11,7 +11,7 @@ namespace roughgas {
 
 // Uniform on the unit sphere (Marsaglia 1972): (x, y) uniform in the unit disc by rejection
 // (acceptance pi/4), then (2x sqrt(1-s), 2y sqrt(1-s), 1 - 2s) with s = x^2 + y^2. No trigonometry.
-[[gnu::always_inline]] inline Vec3 uniform_direction(Rng& rng) {
+template <Generator64 G> [[gnu::always_inline]] inline Vec3 uniform_direction(G& rng) {
     double x, y, s;
     do {
         x = uniform_pm1(rng);
@@ -28,7 +28,8 @@ namespace roughgas {
 // normal, so the solid-angle density is r^2/cos(theta) = 4 cos(theta): proportional to cos(theta)
 // on the hemisphere around g^ (tests/dsmc/sampling_test.cpp checks the law of g_n = |g_c . n|).
 // `g_abs` = |g_c| > 0. The degenerate u = -g^ (probability 0) is redrawn.
-[[gnu::always_inline]] inline Vec3 sample_impact_normal(Rng& rng, const Vec3& g_c, double g_abs) {
+template <Generator64 G>
+[[gnu::always_inline]] inline Vec3 sample_impact_normal(G& rng, const Vec3& g_c, double g_abs) {
     for (;;) {
         const Vec3 d = g_c + g_abs * uniform_direction(rng); // |g_c| (g^ + u)
         const double d2 = norm2(d);
@@ -41,7 +42,8 @@ namespace roughgas {
 // in sample_impact_normal, without forming n: with n = -(g^ + u)/|g^ + u|, g_c . n = -|g_c| |g^ + u|/2,
 // so g^N = (g_c + |g_c| u)/2. No square root and no division: what a smooth collision needs (it
 // acts along g^N only, rule.hpp), drawn from the same numbers as the normal (the test checks both).
-[[gnu::always_inline]] inline Vec3 sample_impact_normal_part(Rng& rng, const Vec3& g_c, double g_abs) {
+template <Generator64 G>
+[[gnu::always_inline]] inline Vec3 sample_impact_normal_part(G& rng, const Vec3& g_c, double g_abs) {
     return 0.5 * (g_c + g_abs * uniform_direction(rng));
 }
 

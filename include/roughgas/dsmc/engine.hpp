@@ -497,9 +497,11 @@ class Engine {
                 for (std::size_t k = 0; k < size; ++k)
                     d.push_back(index(r.get<std::uint32_t>(), n - 1));
             }
-            std::array<std::uint64_t, 4> s;
+            std::array<std::uint64_t, CollisionRng::state_words> s;
             for (std::uint64_t& x : s)
                 x = r.u64();
+            if (s.back() > static_cast<std::uint64_t>(CollisionRng::buffer_size))
+                throw std::runtime_error("engine state: random stream position out of range");
             g.rng.set_state(s);
             g.rate = r.f64();
             g.inv_rate = r.f64();
@@ -545,7 +547,7 @@ class Engine {
         LineVector<double> cumulative;
         LineVector<Ring> rings;
         LineVector<LineVector<std::uint32_t>> demotable; // per block: grains slow enough for the class below
-        Rng rng{};
+        CollisionRng rng{};
         boost::random::exponential_distribution<double> exponential{1.0};
         double rate = 0, inv_rate = 0;
         double t = 0, t_next = 0;
@@ -1038,8 +1040,8 @@ class Engine {
             Group& g = groups_[q];
             update_rates(g);
             rate += g.rate;
-            g.rng = make_stream(StreamKey{opt_.seed, Stream::collisions, opt_.replica,
-                                          static_cast<std::uint64_t>(c_.steps), q});
+            g.rng = make_collision_stream(StreamKey{opt_.seed, Stream::collisions, opt_.replica,
+                                                    static_cast<std::uint64_t>(c_.steps), q});
         }
         ++c_.steps;
         const double t0 = t_step_end_;
