@@ -141,6 +141,7 @@ AdaptiveTable1D AdaptiveTable1D::build(double x_lo, double x_hi, const AdaptiveO
 }
 
 void AdaptiveTable1D::build_flat_index() {
+    if (nodes_.size() > std::size_t(FlatEntry::max_node) + 1) throw std::runtime_error("adaptive table: too many nodes");
     const std::size_t per_root = std::size_t{1} << flat_bits;
     flat_.resize(std::size_t(n_root_) * per_root);
     flat_scale_ = double(per_root);
@@ -149,11 +150,12 @@ void AdaptiveTable1D::build_flat_index() {
         int depth = 0;
         for (; depth < flat_bits && nodes_[k].child >= 0; ++depth)
             k = nodes_[k].child + int((i >> (flat_bits - 1 - depth)) & 1);
-        flat_[i] = {k, std::ldexp(1.0, depth)};
+        flat_[i] = FlatEntry::make(k, depth);
     }
 }
 
 void AdaptiveTable2D::build_flat_index() {
+    if (nodes_.size() > std::size_t(FlatEntry::max_node) + 1) throw std::runtime_error("adaptive table: too many nodes");
     const std::size_t per_root = std::size_t{1} << flat_bits;
     flat_nx_ = std::size_t(nx_) * per_root;
     flat_ny_ = std::size_t(ny_) * per_root;
@@ -167,7 +169,7 @@ void AdaptiveTable2D::build_flat_index() {
                 const int shift = flat_bits - 1 - depth;
                 k = nodes_[k].child + 2 * int((iy >> shift) & 1) + int((ix >> shift) & 1);
             }
-            flat_[iy * flat_nx_ + ix] = {k, std::ldexp(1.0, depth)};
+            flat_[iy * flat_nx_ + ix] = FlatEntry::make(k, depth);
         }
 }
 

@@ -26,6 +26,7 @@ TangentialTable TangentialTable::build(const ContactPair& pair, TangentialTableO
     const auto start = std::chrono::steady_clock::now();
     TangentialTable t;
     t.opt_ = opt;
+    t.set_band();
     t.direct_ = DirectTangential{pair, opt.tol};
     // Whole binades: pseudo_log2 has a kink at every power of two, and cells that never straddle
     // one see a smooth function. The table so covers at least [g_min, g_max].
@@ -86,6 +87,7 @@ TangentialTable TangentialTable::deserialize(const ContactPair& pair, Tangential
     if (data.empty()) throw std::runtime_error("TangentialTable: empty payload");
     TangentialTable t;
     t.opt_ = opt;
+    t.set_band();
     t.direct_ = DirectTangential{pair, opt.tol};
     std::size_t pos = 1;
     t.critical_ = AdaptiveTable1D::deserialize(data, pos);

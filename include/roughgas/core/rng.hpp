@@ -133,7 +133,7 @@ class Xoshiro256ppX8 {
   public:
     using result_type = std::uint64_t;
     static constexpr int lanes = 8;
-    static constexpr int rounds = 8;
+    static constexpr int rounds = 16;
     static constexpr int buffer_size = lanes * rounds;
     // state(): the lanes' words (lane-major), the buffer, and the read position.
     static constexpr std::size_t state_words = 4 * lanes + buffer_size + 1;

@@ -58,8 +58,12 @@ public:
         return std::isnan(v) ? direct_.eps_t(g_n, g_t) : v;
     }
     // NaN where the look-up would fall back to the direct integrator.
+    // The collision loop waits for this result (its latency is the loop's, issue 5), so the
+    // division g_N/g_T runs beside the critical look-up instead of after it: y = g_T,cr/g_T is
+    // c (g_N/g_T), and the band tests compare y (g_T < g_T,cr (1 - band) <=> y > 1/(1 - band)).
     double lookup(double g_n, double g_t) const {
         const double x = pseudo_log2(g_n);
+        const double r = g_n / g_t; // +inf for g_t = 0: below the onset
         const double c = critical_(x);
         // Read before the branch on c (which the predictor often misses): its loads then overlap the
         // critical look-up's instead of following them. The empty asm keeps the compiler from sinking
@@ -67,10 +71,10 @@ public:
         double unbroken = unbroken_(x);
         asm("" : "+x"(unbroken));
         if (std::isnan(c)) return c;
-        const double g_cr = c * g_n;
-        if (g_t < g_cr * (1.0 - opt_.onset_band)) return unbroken;
-        if (g_t <= g_cr * (1.0 + opt_.onset_band)) return std::numeric_limits<double>::quiet_NaN();
-        return breaking_(x, g_cr / g_t);
+        const double y = c * r;
+        if (y > y_unbroken_) return unbroken;
+        if (y >= y_direct_) return std::numeric_limits<double>::quiet_NaN();
+        return breaking_(x, y);
     }
     // g_T,cr(g_N): the onset of asperity breaking.
     double critical_speed(double g_n) const {
@@ -93,6 +97,12 @@ private:
     AdaptiveTable1D critical_, unbroken_;
     AdaptiveTable2D breaking_;
     TangentialTableStats stats_{};
+    // The onset band in y: above y_unbroken_ no asperity breaks, in [y_direct_, y_unbroken_] direct.
+    double y_unbroken_ = 0, y_direct_ = 0;
+    void set_band() {
+        y_unbroken_ = 1.0 / (1.0 - opt_.onset_band);
+        y_direct_ = 1.0 / (1.0 + opt_.onset_band);
+    }
 };
 
 } // namespace roughgas
