@@ -91,6 +91,25 @@ TEST(TangentialTable, KnowsTheOnsetOfBreaking) {
     EXPECT_NEAR(table.eps_t(g_n, g_cr * (1 + 1e-4)), above.eps_t, 1e-4);
 }
 
+// The look-up's branches (tangential_table.hpp: y = c g_N/g_T against the onset band): g_T = 0 is
+// below the onset (y = +inf) and gives the no-break value; within the relative band of 1e-6 around
+// the onset the look-up declines (NaN: eps_t then integrates directly), on both sides; 1e-5 below it
+// it gives the no-break value. (Just above it the breaking table may hold direct cells of its own:
+// the jump as the spring stops the sliding, tangential_table.hpp.)
+TEST(TangentialTable, LookUpBranchesOnTheOnsetBand) {
+    const TangentialTable& table = fig2c_table();
+    ASSERT_EQ(table.options().onset_band, 1e-6);
+    for (double g_n : {2e-3, 0.03, 0.5, 3.0}) {
+        const TangentialParameters p = tangential_parameters(table.pair(), g_n);
+        ASSERT_FALSE(std::isnan(table.lookup(g_n, 0.0))) << g_n;
+        EXPECT_NEAR(table.lookup(g_n, 0.0), integrate_tangential(p, 0.0).eps_t, 1e-4) << g_n;
+        const double g_cr = table.critical_speed(g_n);
+        for (double d : {-1e-7, 1e-7})
+            EXPECT_TRUE(std::isnan(table.lookup(g_n, g_cr * (1 + d)))) << g_n << " " << d;
+        EXPECT_NEAR(table.lookup(g_n, g_cr * (1 - 1e-5)), table.lookup(g_n, 0.0), 1e-12) << g_n;
+    }
+}
+
 TEST(TangentialTable, IsEvenInTangentialSpeed) {
     const TangentialTable& table = fig2c_table();
     for (double g_n : {2e-3, 0.03, 0.5, 3.0})
