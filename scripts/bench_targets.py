@@ -15,6 +15,9 @@ independently, 4000 times; the ratio of the medians). A target is
   met        when the interval lies above it,
   not met    when the interval lies below it,
   undecided  otherwise (more repetitions, or a quieter machine, would decide it).
+The interval covers the repetitions of one process: a second call of the same binary can differ
+by more (session 7, AMD EPYC: constant rough 8.36 and 9.00e6/s in two calls, smooth/rough 1.30 and
+1.22), so a verdict near its target wants a second call before it is believed.
 The benchmarks (tests/bench/dsmc_bench.cpp, BM_Case_*/N/T, wall-clock collisions per second):
 constant rough, constant smooth and cached brilliantov at N = 1e6 on 1 and 2 threads, and elastic
 smooth at N = 1e5 and 1e6 on one thread (against SPARTA's figures on this machine, from the issue).
