@@ -45,7 +45,7 @@ TangentialTable TangentialTable::build(const ContactPair& pair, TangentialTableO
         });
     // Above the onset: ratio = c/y. The edge y = 1 holds the limit from the breaking side, taken at
     // the edge of the direct band; y = 0 is g_T -> inf, where eps^T -> 1 (the asperities no longer act).
-    const double y_edge = 1.0 / (1.0 + opt.onset_band);
+    const double y_edge = t.y_direct_; // 1/(1 + band), where the look-up's direct band begins
     t.breaking_ = AdaptiveTable2D::build(
         x_lo, x_hi, 0.0, 1.0, per_binade(opt.breaking, x_lo, x_hi),
         [&](std::span<const double> xs, std::span<const double> ys, std::span<double> out) {

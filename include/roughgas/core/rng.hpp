@@ -153,10 +153,6 @@ class Xoshiro256ppX8 {
         return buf_[pos_++];
     }
 
-    // Lane l's four words, as an Xoshiro256pp's state() (the next refill starts from them).
-    std::array<std::uint64_t, 4> lane_state(int l) const {
-        return {s_[0][l], s_[1][l], s_[2][l], s_[3][l]};
-    }
     std::array<std::uint64_t, state_words> state() const {
         std::array<std::uint64_t, state_words> a{};
         std::size_t k = 0;
@@ -168,10 +164,10 @@ class Xoshiro256ppX8 {
         a[k] = pos_;
         return a;
     }
-    // Throws std::invalid_argument for a read position past the buffer.
+    // Throws std::runtime_error for a read position past the buffer (a malformed checkpoint).
     void set_state(const std::array<std::uint64_t, state_words>& a) {
         if (a[state_words - 1] > static_cast<std::uint64_t>(buffer_size))
-            throw std::invalid_argument("Xoshiro256ppX8: read position past the buffer");
+            throw std::runtime_error("random stream: read position past the buffer");
         std::size_t k = 0;
         for (int l = 0; l < lanes; ++l)
             for (int w = 0; w < 4; ++w)

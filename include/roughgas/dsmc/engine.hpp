@@ -500,9 +500,7 @@ class Engine {
             std::array<std::uint64_t, CollisionRng::state_words> s;
             for (std::uint64_t& x : s)
                 x = r.u64();
-            if (s.back() > static_cast<std::uint64_t>(CollisionRng::buffer_size))
-                throw std::runtime_error("engine state: random stream position out of range");
-            g.rng.set_state(s);
+            g.rng.set_state(s); // throws std::runtime_error for a position past the buffer
             g.rate = r.f64();
             g.inv_rate = r.f64();
             g.t = r.f64();
