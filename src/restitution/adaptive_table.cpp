@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <iterator>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -140,17 +142,59 @@ AdaptiveTable1D AdaptiveTable1D::build(double x_lo, double x_hi, const AdaptiveO
     return t;
 }
 
+// The quartic p(t) of a leaf on the part t in [a, a + h) of it, in that part's own coordinate s:
+// q(s) = p(a + h s), expanded (b_k = h^k sum_{i >= k} C(i, k) c_i a^(i - k)).
+static std::array<double, 5> shifted_quartic(const double (&c)[5], double a, double h) {
+    static constexpr double binom[5][5] = {{1, 0, 0, 0, 0}, {1, 1, 0, 0, 0}, {1, 2, 1, 0, 0}, {1, 3, 3, 1, 0}, {1, 4, 6, 4, 1}};
+    std::array<double, 5> b{};
+    double hk = 1;
+    for (int k = 0; k < 5; ++k) {
+        double sum = 0, ap = 1;
+        for (int i = k; i < 5; ++i) {
+            sum += binom[i][k] * c[i] * ap;
+            ap *= a;
+        }
+        b[k] = hk * sum;
+        hk *= h;
+    }
+    return b;
+}
+
 void AdaptiveTable1D::build_flat_index() {
     if (nodes_.size() > std::size_t(FlatEntry::max_node) + 1) throw std::runtime_error("adaptive table: too many nodes");
     const std::size_t per_root = std::size_t{1} << flat_bits;
     flat_.resize(std::size_t(n_root_) * per_root);
+    cells_.resize(flat_.size());
     flat_scale_ = double(per_root);
+    flat_inv_ = inv_root_ * flat_scale_;
+    flat_n_ = double(flat_.size());
     for (std::size_t i = 0; i < flat_.size(); ++i) {
         std::int32_t k = std::int32_t(i / per_root);
         int depth = 0;
         for (; depth < flat_bits && nodes_[k].child >= 0; ++depth)
             k = nodes_[k].child + int((i >> (flat_bits - 1 - depth)) & 1);
         flat_[i] = FlatEntry::make(k, depth);
+        Cell& cell = cells_[i];
+        std::fill(std::begin(cell.c), std::end(cell.c), nan_v);
+        if (nodes_[k].child < 0) { // a leaf covers the cell: its quartic on the cell (NaN stays NaN)
+            const std::size_t span = std::size_t{1} << (flat_bits - depth);
+            const std::array<double, 5> b =
+                shifted_quartic(nodes_[k].c, double(i & (span - 1)) / double(span), 1.0 / double(span));
+            std::copy(b.begin(), b.end(), cell.c);
+        }
+    }
+    // Whole binades of x = pseudo_log2(g), each cut into 2^b flat cells: the cell index and its
+    // coordinate are bit fields of g (at_speed).
+    binade_bits_ = -1;
+    const double per_binade = flat_inv_;
+    const int b = int(std::lround(std::log2(per_binade)));
+    if (x_lo_ == std::floor(x_lo_) && b >= 0 && b <= 40 && std::ldexp(1.0, b) == per_binade && x_lo_ + 1023 >= 1 &&
+        x_lo_ + 1023 + flat_n_ / per_binade <= 2047) {
+        binade_bits_ = b;
+        cell_shift_ = unsigned(52 - b);
+        cell_base_ = std::uint64_t(x_lo_ + 1023) << b;
+        cell_mask_ = (std::uint64_t{1} << cell_shift_) - 1;
+        cell_t_scale_ = std::ldexp(1.0, -int(cell_shift_));
     }
 }
 
@@ -160,7 +204,12 @@ void AdaptiveTable2D::build_flat_index() {
     flat_nx_ = std::size_t(nx_) * per_root;
     flat_ny_ = std::size_t(ny_) * per_root;
     flat_scale_ = double(per_root);
+    flat_inv_x_ = inv_x_ * flat_scale_;
+    flat_inv_y_ = inv_y_ * flat_scale_;
+    flat_nx_d_ = double(flat_nx_);
+    flat_ny_d_ = double(flat_ny_);
     flat_.resize(flat_nx_ * flat_ny_);
+    cells_.resize(flat_.size());
     for (std::size_t iy = 0; iy < flat_ny_; ++iy)
         for (std::size_t ix = 0; ix < flat_nx_; ++ix) {
             std::int32_t k = std::int32_t((iy / per_root) * nx_ + ix / per_root);
@@ -170,6 +219,18 @@ void AdaptiveTable2D::build_flat_index() {
                 k = nodes_[k].child + 2 * int((iy >> shift) & 1) + int((ix >> shift) & 1);
             }
             flat_[iy * flat_nx_ + ix] = FlatEntry::make(k, depth);
+            Cell& cell = cells_[iy * flat_nx_ + ix];
+            std::fill(std::begin(cell.v), std::end(cell.v), std::numeric_limits<float>::quiet_NaN());
+            if (nodes_[k].child < 0) { // a leaf covers the cell: its interpolant at the cell's corners
+                const std::size_t span = std::size_t{1} << (flat_bits - depth);
+                const double* v = nodes_[k].v;
+                const double x0 = double(ix & (span - 1)) / double(span), y0 = double(iy & (span - 1)) / double(span);
+                const double h = 1.0 / double(span);
+                int q = 0;
+                for (double ty : {y0, y0 + h})
+                    for (double tx : {x0, x0 + h})
+                        cell.v[q++] = float((v[0] + (v[1] - v[0]) * tx) * (1 - ty) + (v[2] + (v[3] - v[2]) * tx) * ty);
+            }
         }
 }
 

@@ -61,14 +61,16 @@ public:
     // The collision loop waits for this result (its latency is the loop's, issue 5), so the
     // division g_N/g_T runs beside the critical look-up instead of after it: y = g_T,cr/g_T is
     // c (g_N/g_T), and the band tests compare y (g_T < g_T,cr (1 - band) <=> y > 1/(1 - band)).
+    // The 1-D tables read their cell off the bits of g_N (AdaptiveTable1D::at_speed): the critical
+    // look-up starts as soon as g_N is known; x is only converted for the 2-D table, beside it.
     double lookup(double g_n, double g_t) const {
         const double x = pseudo_log2(g_n);
         const double r = g_n / g_t; // +inf for g_t = 0: below the onset
-        const double c = critical_(x);
+        const double c = critical_.at_speed(g_n);
         // Read before the branch on c (which the predictor often misses): its loads then overlap the
         // critical look-up's instead of following them. The empty asm keeps the compiler from sinking
         // it back into the branch.
-        double unbroken = unbroken_(x);
+        double unbroken = unbroken_.at_speed(g_n);
         asm("" : "+x"(unbroken));
         if (std::isnan(c)) return c;
         const double y = c * r;
@@ -78,7 +80,7 @@ public:
     }
     // g_T,cr(g_N): the onset of asperity breaking.
     double critical_speed(double g_n) const {
-        const double c = critical_(pseudo_log2(g_n));
+        const double c = critical_.at_speed(g_n);
         return (std::isnan(c) ? critical_ratio(tangential_parameters(pair(), g_n), opt_.tol) : c) * g_n;
     }
 
