@@ -165,7 +165,7 @@ def main():
 
     n_skip = "100000" if a.quick else "1000000"
     # One call for the variants and their references, so that their repetitions are interleaved.
-    res, l0, l1 = run_bench(dsmc, f"^BM_(Skip|Layout)_.*/{n_skip}|^BM_Case_(RoughConstant|SmoothConstant)/{n_skip}/1/",
+    res, l0, l1 = run_bench(dsmc, f"^BM_(Skip|Layout)_.*/{n_skip}|^BM_Case_(RoughConstant|SmoothConstant|Brilliantov)/{n_skip}/1/",
                             reps, os.path.join(a.out, "skips.json"))
     print(f"\nCompile-time skips and layouts against the kernels roughgas run uses, interleaved, N = {n_skip}, "
           f"one thread (load {l0:.2f} .. {l1:.2f}):\n")
