@@ -222,8 +222,10 @@ class Engine {
         for (Group& g : groups_) {
             g.blocks.resize(S * K_);
             for (std::size_t s = 0; s < S; ++s)
-                for (std::size_t c = 0; c < K_; ++c)
+                for (std::size_t c = 0; c < K_; ++c) {
                     g.blocks[s * K_ + c].species = static_cast<std::uint32_t>(s);
+                    g.blocks[s * K_ + c].has_lower = c > 0;
+                }
             for (std::uint32_t x = 0; x < g.blocks.size(); ++x)
                 for (std::uint32_t y = x; y < g.blocks.size(); ++y)
                     g.block_pairs.push_back(
@@ -516,6 +518,7 @@ class Engine {
     struct Block {
         std::uint32_t begin = 0, end = 0;
         std::uint32_t species = 0;
+        bool has_lower = false; // a slower class of the same species exists (x % K != 0, without a division)
         double ceiling2 = 0; // grains above sqrt(ceiling2) move to the next class (top: infinity)
         double bound = 0, bound2 = 0;
         std::uint32_t size() const { return end - begin; }
@@ -871,7 +874,7 @@ class Engine {
             b.bound = sqrt_nonneg(v2);
             return true;
         }
-        if (x % K_ != 0 && v2 <= blocks[x - 1].ceiling2 && g.demotable[x].size() < g.demotable[x].capacity())
+        if (b.has_lower && v2 <= blocks[x - 1].ceiling2 && g.demotable[x].size() < g.demotable[x].capacity())
             g.demotable[x].push_back(i);
         return changed;
     }
