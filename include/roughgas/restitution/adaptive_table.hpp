@@ -72,7 +72,7 @@ public:
 
     // NaN outside [x_lo, x_hi] and in direct cells.
     // The flat cell covering x holds the quartic of its leaf re-expressed in the cell's own
-    // coordinate (flat_cell_quartic), so a look-up is one load and a Horner evaluation; cells of
+    // coordinate (shifted_quartic in the .cpp), so a look-up is one load and a Horner evaluation; cells of
     // deeper leaves (and direct ones) hold NaN and go down the tree instead. The look-up's latency
     // is the collision loop's (issue 5).
     double operator()(double x) const {
