@@ -80,8 +80,6 @@ std::array<double, 5> quartic_through(const std::array<double, 5>& f) {
     return c;
 }
 
-double horner(const std::array<double, 5>& c, double t) { return c[0] + t * (c[1] + t * (c[2] + t * (c[3] + t * c[4]))); }
-
 AdaptiveTable1D AdaptiveTable1D::build(double x_lo, double x_hi, const AdaptiveOptions& opt, const BatchFunction& f) {
     check_options(opt);
     if (!(x_hi > x_lo)) throw std::invalid_argument("adaptive table: empty range");
@@ -115,7 +113,7 @@ AdaptiveTable1D AdaptiveTable1D::build(double x_lo, double x_hi, const AdaptiveO
             double err = 0;
             for (int q = 1; q < 8; q += 2) {
                 const double fq = lat.at(p.i0 + q * L / 8);
-                err = std::max(err, std::abs(horner(c, q / 8.0) - fq) / (opt.relative ? std::abs(fq) : 1.0));
+                err = std::max(err, std::abs(quartic_at(c.data(), q / 8.0) - fq) / (opt.relative ? std::abs(fq) : 1.0));
             }
             for (double v : samples)
                 if (!std::isfinite(v)) err = nan_v;
@@ -229,7 +227,7 @@ void AdaptiveTable2D::build_flat_index() {
                 int q = 0;
                 for (double ty : {y0, y0 + h})
                     for (double tx : {x0, x0 + h})
-                        cell.v[q++] = float((v[0] + (v[1] - v[0]) * tx) * (1 - ty) + (v[2] + (v[3] - v[2]) * tx) * ty);
+                        cell.v[q++] = float(bilinear_at(v[0], v[1], v[2], v[3], tx, ty));
             }
         }
 }
@@ -279,7 +277,7 @@ AdaptiveTable2D AdaptiveTable2D::build(double x_lo, double x_hi, double y_lo, do
                     const bool corner = (a == 0 || a == 4) && (b == 0 || b == 4);
                     if (corner || !((a % 2 == 0 && b % 2 == 0) || (a % 2 == 1 && b % 2 == 1))) continue;
                     const double tx = a / 4.0, ty = b / 4.0;
-                    const double interp = (v00 + (v10 - v00) * tx) * (1 - ty) + (v01 + (v11 - v01) * tx) * ty;
+                    const double interp = bilinear_at(v00, v10, v01, v11, tx, ty);
                     const double fq = lat.at(p.i0 + a * L / 4, p.j0 + b * L / 4);
                     err = std::max(err, std::abs(interp - fq) / (opt.relative ? std::abs(fq) : 1.0));
                 }

@@ -17,15 +17,15 @@ double f1(double x) { return std::sin(3 * x) + (x > 0.3 ? 0.5 : 0.0); }
 // Smooth but for a jump across the line y = 0.4 + 0.2 x.
 double f2(double x, double y) { return std::cos(x + 2 * y) * 0.6 + (y > 0.4 + 0.2 * x ? 0.4 : 0.0); }
 
-AdaptiveTable1D table1(double lo, double hi, int depth) {
-    return AdaptiveTable1D::build(lo, hi, AdaptiveOptions{4, 1, depth, 1e-9, false},
+AdaptiveTable1D table1(double lo, double hi, int root_cells, int depth) {
+    return AdaptiveTable1D::build(lo, hi, AdaptiveOptions{root_cells, 1, depth, 1e-9, false},
                                   [](std::span<const double> xs, std::span<const double>, std::span<double> out) {
                                       for (std::size_t i = 0; i < xs.size(); ++i) out[i] = f1(xs[i]);
                                   });
 }
 
 TEST(AdaptiveTable, FlatCellsOfOneVariableAreTheTreesInterpolant) {
-    const AdaptiveTable1D t = table1(-1.0, 2.0, 8); // depth 8 > flat_bits: deeper leaves exist
+    const AdaptiveTable1D t = table1(-1.0, 2.0, 4, 8); // depth 8 > flat_bits: deeper leaves exist
     ASSERT_GT(t.stats().direct_leaves, 0u);
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> u(-1.2, 2.2);
@@ -48,13 +48,9 @@ TEST(AdaptiveTable, FlatCellsOfOneVariableAreTheTreesInterpolant) {
 
 TEST(AdaptiveTable, LookUpFromTheBitsOfTheSpeedIsTheLookUpAtItsPseudoLogarithm) {
     // Whole binades (x = pseudo_log2 g from -6 to 3), 4 root cells each: 2^6 flat cells per binade.
-    const AdaptiveTable1D t = table1(-6.0, 3.0, 8);
+    const AdaptiveTable1D t = table1(-6.0, 3.0, 4, 8);
     ASSERT_EQ(t.binade_bits(), -1) << "4 root cells over 9 binades are not a power of two per binade";
-    const AdaptiveTable1D b = AdaptiveTable1D::build(
-        -6.0, 3.0, AdaptiveOptions{36, 1, 8, 1e-9, false},
-        [](std::span<const double> xs, std::span<const double>, std::span<double> out) {
-            for (std::size_t i = 0; i < xs.size(); ++i) out[i] = f1(xs[i]);
-        });
+    const AdaptiveTable1D b = table1(-6.0, 3.0, 36, 8);
     ASSERT_EQ(b.binade_bits(), 6);
     std::mt19937_64 rng(5);
     std::uniform_real_distribution<double> u(-6.5, 3.5);

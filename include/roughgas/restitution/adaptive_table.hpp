@@ -63,6 +63,13 @@ inline double node_coordinate(std::size_t i, double tf, unsigned depth) {
     return (static_cast<double>(i & ((std::size_t{1} << up) - 1)) + tf) * span_inv;
 }
 
+// The leaf interpolants, one expression each for the build's checks, the flat cells and the look-ups:
+// the quartic in power basis (Horner) and the bilinear through corners (0,0) (1,0) (0,1) (1,1).
+inline double quartic_at(const double* c, double t) { return c[0] + t * (c[1] + t * (c[2] + t * (c[3] + t * c[4]))); }
+inline double bilinear_at(double v00, double v10, double v01, double v11, double tx, double ty) {
+    return (v00 + (v10 - v00) * tx) * (1 - ty) + (v01 + (v11 - v01) * tx) * ty;
+}
+
 // f evaluated on a batch of points (xs[i], ys[i]) -> out[i]; ys is empty for 1-D tables.
 using BatchFunction = std::function<void(std::span<const double> xs, std::span<const double> ys, std::span<double> out)>;
 
@@ -128,8 +135,7 @@ private:
     void build_flat_index();
 
     double in_cell(std::size_t i, double t, double x) const {
-        const auto& c = cells_[i].c;
-        const double v = c[0] + t * (c[1] + t * (c[2] + t * (c[3] + t * c[4])));
+        const double v = quartic_at(cells_[i].c, t);
         if (std::isnan(v)) [[unlikely]]
             return tree(x); // a deeper leaf (or a direct one: NaN again)
         return v;
@@ -144,8 +150,7 @@ private:
             t -= c;
             k = nodes_[k].child + c;
         }
-        const auto& c = nodes_[k].c; // power-basis coefficients in t; NaN in a direct leaf
-        return c[0] + t * (c[1] + t * (c[2] + t * (c[3] + t * c[4])));
+        return quartic_at(nodes_[k].c, t); // power-basis coefficients in t; NaN in a direct leaf
     }
 };
 
@@ -168,8 +173,7 @@ public:
         const auto iy = std::min(static_cast<std::size_t>(Fy), flat_ny_ - 1); // Fy = flat_ny: the top edge
         const Cell& c = cells_[iy * flat_nx_ + ix];
         const double tx = Fx - static_cast<double>(ix), ty = Fy - static_cast<double>(iy); // ty = 1 at the top edge
-        const double v0 = c.v[0], v1 = c.v[1], v2 = c.v[2], v3 = c.v[3];
-        const double v = (v0 + (v1 - v0) * tx) * (1 - ty) + (v2 + (v3 - v2) * tx) * ty;
+        const double v = bilinear_at(c.v[0], c.v[1], c.v[2], c.v[3], tx, ty);
         if (std::isnan(v)) [[unlikely]]
             return tree(x, y); // a deeper leaf (or a direct one: NaN again)
         return v;
@@ -194,7 +198,7 @@ public:
             k = nodes_[k].child + 2 * cy + cx;
         }
         const auto& v = nodes_[k].v; // corners (0,0) (1,0) (0,1) (1,1); NaN in a direct leaf
-        return (v[0] + (v[1] - v[0]) * tx) * (1 - ty) + (v[2] + (v[3] - v[2]) * tx) * ty;
+        return bilinear_at(v[0], v[1], v[2], v[3], tx, ty);
     }
 
     const AdaptiveStats& stats() const { return stats_; }
