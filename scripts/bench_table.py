@@ -11,7 +11,9 @@ Runs (Release build with benchmarks, ROUGHGAS_BUILD_BENCHMARKS=ON):
   3. tests/bench/restitution_bench BM_*TableBuild: building the restitution tables;
   4. `roughgas run` of a constant rough case for each N under /usr/bin/time: peak memory (max RSS);
   5. the ceiling of two threads: two one-thread benchmark processes at once (nothing shared but the
-     machine), against one alone, interleaved; and the issue's targets computed from the tables.
+     machine), against one alone, interleaved; and the issue's targets computed from the tables;
+  0. first, tests/bench/machine_bench: what a random access and a cache line between the two cores
+     cost on this machine (the latencies behind the tables).
 Repetitions are randomly interleaved (Google Benchmark --benchmark_enable_random_interleaving), the
 median is reported, and every number comes with the load average (/proc/loadavg, 1 min) read
 before and after its benchmark: numbers taken on a loaded machine say so. Writes markdown to
@@ -96,6 +98,22 @@ beta = 0.5
     return kib * 1024
 
 
+def machine_table(probe, reps, out):
+    """The latencies of tests/bench/machine_bench: median and range over `reps` interleaved repetitions."""
+    l0 = loadavg()
+    runs = benchmark_iterations(probe, ".", reps, os.path.join(out, "machine.json"))
+    l1 = loadavg()
+    print(f"Latencies of this machine (tests/bench/machine_bench, {reps} interleaved repetitions; "
+          f"load {l0:.2f} .. {l1:.2f}); ns per dependent load or per one-way line transfer:\n")
+    print("| probe | median ns | min .. max |")
+    print("|-------|-----------|------------|")
+    for name, bs in sorted(runs.items(), key=lambda kv: (kv[0].split("/")[0], int(kv[0].split("/")[1])
+                                                            if kv[0].count("/") and kv[0].split("/")[1].isdigit() else 0)):
+        ns = [(b.get("ns_per_load") or b.get("ns_one_way")) * 1e9 for b in bs]
+        print(f"| {name} | {statistics.median(ns):.1f} | {min(ns):.1f} .. {max(ns):.1f} |")
+    print()
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--build", default="build")
@@ -106,8 +124,9 @@ def main():
     os.makedirs(a.out, exist_ok=True)
     dsmc = os.path.join(a.build, "tests", "bench", "dsmc_bench")
     rest = os.path.join(a.build, "tests", "bench", "restitution_bench")
+    probe = os.path.join(a.build, "tests", "bench", "machine_bench")
     roughgas = os.path.join(a.build, "roughgas")
-    for b in (dsmc, rest, roughgas):
+    for b in (dsmc, rest, probe, roughgas):
         if not os.path.exists(b):
             sys.exit(f"bench_table.py: {b} missing: build with -DCMAKE_BUILD_TYPE=Release (benchmarks on)")
     reps = 1 if a.quick else a.repetitions
@@ -117,6 +136,8 @@ def main():
     print(f"Measured {datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M} UTC on {machine()}; "
           f"median of {reps} randomly interleaved repetitions; wall-clock collisions per second in 1e6/s; "
           f"OMP_WAIT_POLICY={BENCH_ENV['OMP_WAIT_POLICY']}.\n")
+
+    machine_table(probe, max(reps, 5), a.out)
 
     rows = []
     print("| kernel | N | 1 thread | 2 threads | 2T/1T | load (1 min) before, after |")
