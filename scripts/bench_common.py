@@ -41,7 +41,10 @@ def stolen_since(t0):
 
 
 def machine():
-    model, l2, l3 = "?", "?", "?"
+    """The CPU as lscpu names it, with its family and model numbers: a VM's model name ("AMD EPYC") can
+    stay the same while the CPU under it changes (sessions 8 and 9 ran on two CPUs of different speed,
+    both "AMD EPYC" with the same caches)."""
+    model, family, number, l2, l3 = "?", "?", "?", "?", "?"
     try:
         out = subprocess.run(["lscpu"], capture_output=True, text=True).stdout
         for line in out.splitlines():
@@ -49,13 +52,18 @@ def machine():
             v = v.strip()
             if k == "Model name":
                 model = v
+            elif k == "CPU family":
+                family = v
+            elif k == "Model":
+                number = v
             elif k == "L2 cache":
                 l2 = v
             elif k == "L3 cache":
                 l3 = v
     except OSError:
         pass
-    return f"{model}, {os.cpu_count()} CPUs, L2 {l2}, L3 {l3}, {platform.node()}"
+    return (f"{model} (family {family}, model {number}), {os.cpu_count()} CPUs, L2 {l2}, L3 {l3}, "
+            f"{platform.node()}")
 
 
 def commit():
