@@ -4,6 +4,8 @@
     scripts/python3 scripts/bench_table.py [--build build] [--out out/bench] [--repetitions 3] [--quick]
 
 Runs (Release build with benchmarks, ROUGHGAS_BUILD_BENCHMARKS=ON):
+  0. tests/bench/machine_bench: what a random access and a cache line between the two cores cost on
+     this machine (the latencies behind the tables below);
   1. tests/bench/dsmc_bench BM_Case_*/N/T: collisions per second (wall clock) of the constant
      rough, constant smooth, elastic smooth, coulomb, viscoelastic (smooth and rough) and brilliantov
      kernels for N = 1e4 .. 1e7 on 1 and 2 threads (groups as `roughgas run` chooses them);
@@ -11,9 +13,7 @@ Runs (Release build with benchmarks, ROUGHGAS_BUILD_BENCHMARKS=ON):
   3. tests/bench/restitution_bench BM_*TableBuild: building the restitution tables;
   4. `roughgas run` of a constant rough case for each N under /usr/bin/time: peak memory (max RSS);
   5. the ceiling of two threads: two one-thread benchmark processes at once (nothing shared but the
-     machine), against one alone, interleaved; and the issue's targets computed from the tables;
-  0. first, tests/bench/machine_bench: what a random access and a cache line between the two cores
-     cost on this machine (the latencies behind the tables).
+     machine), against one alone, interleaved; and the issue's targets computed from the tables.
 Repetitions are randomly interleaved (Google Benchmark --benchmark_enable_random_interleaving), the
 median is reported, and every number comes with the load average (/proc/loadavg, 1 min) read
 before and after its benchmark: numbers taken on a loaded machine say so. Writes markdown to
@@ -107,9 +107,16 @@ def machine_table(probe, reps, out):
           f"load {l0:.2f} .. {l1:.2f}); ns per dependent load or per one-way line transfer:\n")
     print("| probe | median ns | min .. max |")
     print("|-------|-----------|------------|")
-    for name, bs in sorted(runs.items(), key=lambda kv: (kv[0].split("/")[0], int(kv[0].split("/")[1])
-                                                            if kv[0].count("/") and kv[0].split("/")[1].isdigit() else 0)):
-        ns = [(b.get("ns_per_load") or b.get("ns_one_way")) * 1e9 for b in bs]
+    def order(name):  # by probe, then by its size argument
+        probe_name, _, arg = name.partition("/")
+        return probe_name, int(arg) if arg.isdigit() else 0
+
+    for name, bs in sorted(runs.items(), key=lambda kv: order(kv[0])):
+        ns = [b.get("ns_per_load", b.get("ns_one_way")) for b in bs]
+        ns = [x * 1e9 for x in ns if x is not None]
+        if not ns:  # skipped (BM_Machine_LineTransfer on one CPU)
+            print(f"| {name} | {bs[0].get('error_message', 'skipped')} | |")
+            continue
         print(f"| {name} | {statistics.median(ns):.1f} | {min(ns):.1f} .. {max(ns):.1f} |")
     print()
 
