@@ -191,6 +191,8 @@ class Engine {
     static constexpr std::size_t chunk_grains = std::size_t{1} << 16; // step-start passes, in parallel
     // Grouped runs with a collision target: collisions processed serially in global time order.
     static constexpr std::int64_t tail_collisions = 256;
+    // Block pairs chosen by fixed comparisons instead of a loop: up to small_choice + 1 (choose_block_pair).
+    static constexpr std::size_t small_choice = 2;
 
     // `policies[k]` is the restitution of species pair k (species.hpp); one entry without Mixture.
     Engine(std::vector<SpeciesBlock> species, std::vector<Policy> policies, Store store, EngineOptions opt)
@@ -483,6 +485,7 @@ class Engine {
             }
             for (double& x : g.cumulative)
                 x = r.f64();
+            set_first_cumulative(g);
             for (Ring& ring : g.rings) {
                 for (Candidate& c : ring.c)
                     for (std::uint32_t* x : {&c.i, &c.j, &c.ib, &c.ie, &c.jb, &c.je})
@@ -546,6 +549,7 @@ class Engine {
         LineVector<Block> blocks;
         LineVector<BlockPair> block_pairs; // all x <= y
         LineVector<double> cumulative;
+        std::array<double, small_choice> first_cumulative{}; // set_first_cumulative()
         LineVector<Ring> rings;
         LineVector<LineVector<std::uint32_t>> demotable; // per block: grains slow enough for the class below
         CollisionRng rng{};
@@ -798,16 +802,29 @@ class Engine {
     }
 
     // The block pair of the next candidate, with probability rate/total: the number of cumulative
-    // rates at or below a uniform point (branch-free: the outcome is unpredictable).
+    // rates at or below a uniform point (branch-free: the outcome is unpredictable). Up to three
+    // block pairs (one species with K = 2, the default) by two fixed comparisons with the group's
+    // `first_cumulative` (padded with +infinity): the same k as the loop, without its loop control.
     std::size_t choose_block_pair(Group& g) {
         const std::size_t n = g.cumulative.size();
         if (n == 1)
             return 0;
         const double x = uniform01(g.rng) * g.rate;
+        if (n <= small_choice + 1) {
+            const std::array<double, small_choice>& c = g.first_cumulative;
+            return std::size_t{x >= c[0]} + std::size_t{x >= c[1]};
+        }
         std::size_t k = 0;
         for (std::size_t q = 0; q + 1 < n; ++q)
             k += x >= g.cumulative[q];
         return k;
+    }
+    // The cumulative rates the comparisons of choose_block_pair read: all but the last (the total,
+    // which a uniform point below it never reaches), then +infinity.
+    static void set_first_cumulative(Group& g) {
+        g.first_cumulative.fill(std::numeric_limits<double>::infinity());
+        for (std::size_t q = 0; q + 1 < g.cumulative.size() && q < small_choice; ++q)
+            g.first_cumulative[q] = g.cumulative[q];
     }
 
     // After a collision, grain i of block x has |v|^2 = v2. Keeps every block's bound true:
@@ -898,6 +915,7 @@ class Engine {
             total += bp.rate;
             g.cumulative[k] = total;
         }
+        set_first_cumulative(g);
         g.rate = total;
         g.inv_rate = total > 0 ? 1.0 / total : std::numeric_limits<double>::infinity();
     }
@@ -1000,8 +1018,20 @@ class Engine {
                 const std::size_t hi = std::min(lo + chunk_grains, sp.offset + n_s);
                 std::uint32_t* next = &ccount_[static_cast<std::size_t>(ch) * B];
                 if (B > 1) {
-                    for (std::size_t i = lo; i < hi; ++i)
-                        perm_[next[key_[i]]++] = static_cast<std::uint32_t>(i);
+                    // Each bucket's positions are written in increasing order, one stream per bucket
+                    // (G K of them, 64 at N = 1e6): too many for the hardware prefetchers, so each
+                    // store missed. When a bucket starts a cache line, the line two ahead is
+                    // prefetched for writing (measured: this pass 2.5 -> 1.6 ms at N = 1e6, one thread).
+                    std::uint32_t* const perm = perm_.data();
+                    const std::uint16_t* const key = key_.data();
+                    constexpr std::uint32_t line = 64 / sizeof(std::uint32_t);
+                    const std::size_t ahead_limit = perm_.size() > 2 * line ? perm_.size() - 2 * line : 0;
+                    for (std::size_t i = lo; i < hi; ++i) {
+                        const std::uint32_t p = next[key[i]]++;
+                        if (p % line == 0 && p < ahead_limit)
+                            prefetch_line_for_write(perm + p + 2 * line);
+                        perm[p] = static_cast<std::uint32_t>(i);
+                    }
                 } else {
                     for (std::size_t i = lo; i < hi; ++i)
                         perm_[i] = static_cast<std::uint32_t>(i);
