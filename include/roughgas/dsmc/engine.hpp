@@ -71,9 +71,11 @@
 //
 // Latency. Candidate pairs do not depend on the state, so they are drawn `ring_size` candidates
 // ahead (per block pair) and their grains prefetched: the random loads of several candidates are
-// in flight at once. A pre-drawn position is uniform over its block as it was when drawn; if the
-// block has changed since (grains moved to a faster block), it is re-targeted exactly: kept if
-// still inside, else redrawn, so that it is uniform over the block as it is now (retarget()).
+// in flight at once. What is drawn ahead is one random word per candidate; its two 32-bit halves
+// become the two positions only when the candidate is taken, from the blocks' ranges as they are
+// then (Lemire's multiply-shift with its rejection, exact), so a candidate is uniform over its
+// blocks even if grains have moved between them since it was drawn. The positions the word gives
+// over the ranges at the draw are kept beside it, for the prefetches only.
 //
 // Particle order. The grains never move in the store: blocks are ranges of positions in an index
 // array perm_ (4 bytes per grain; the grain at position p is perm_[p]), re-sorted at each step
@@ -125,7 +127,6 @@ struct EngineCounters {
     std::int64_t bound_raises = 0; // collisions after which a bound grew or a grain changed block
     std::int64_t promotions = 0;   // grains moved to a faster block within a step
     std::int64_t range_moves = 0;  // promotions that moved a block boundary (no demotable grain at hand)
-    std::int64_t retargets = 0;    // pre-drawn candidate indices redrawn because their block changed
     double max_mean_drift = 0; // largest centre-of-mass speed |u| found at a step start, over the rms speed
     std::int64_t recentrings = 0; // steps that removed u (|u| above recentre_threshold of the rms speed)
     std::int64_t phases = 0;      // grouped runs: parallel phases
@@ -326,7 +327,6 @@ class Engine {
             c.bound_raises += g.c.bound_raises;
             c.promotions += g.c.promotions;
             c.range_moves += g.c.range_moves;
-            c.retargets += g.c.retargets;
         }
         return c;
     }
@@ -386,7 +386,7 @@ class Engine {
             w.f64(x);
         w.put(stalled_);
         for (std::int64_t x : {c_.collisions, c_.candidates, c_.steps, c_.bound_raises, c_.promotions,
-                               c_.range_moves, c_.retargets, c_.recentrings, c_.phases, c_.overshoots})
+                               c_.range_moves, c_.recentrings, c_.phases, c_.overshoots})
             w.put(x);
         w.f64(c_.max_mean_drift);
         for (const Group& g : groups_) {
@@ -405,9 +405,11 @@ class Engine {
             for (double x : g.cumulative)
                 w.f64(x);
             for (const Ring& r : g.rings) {
-                for (const Candidate& c : r.c)
-                    for (std::uint32_t x : {c.i, c.j, c.ib, c.ie, c.jb, c.je})
-                        w.put(x);
+                for (const Candidate& c : r.c) {
+                    w.u64(c.word);
+                    w.put(c.i_hint);
+                    w.put(c.j_hint);
+                }
                 w.put(r.head);
             }
             for (const auto& d : g.demotable) {
@@ -420,7 +422,7 @@ class Engine {
             for (double x : {g.rate, g.inv_rate, g.t, g.t_next})
                 w.f64(x);
             for (std::int64_t x : {g.c.collisions, g.c.candidates, g.c.bound_raises, g.c.promotions,
-                                   g.c.range_moves, g.c.retargets})
+                                   g.c.range_moves})
                 w.put(x);
         }
     }
@@ -461,7 +463,7 @@ class Engine {
         nu_ = r.f64();
         stalled_ = r.get<bool>();
         for (std::int64_t* x : {&c_.collisions, &c_.candidates, &c_.steps, &c_.bound_raises, &c_.promotions,
-                                &c_.range_moves, &c_.retargets, &c_.recentrings, &c_.phases, &c_.overshoots})
+                                &c_.range_moves, &c_.recentrings, &c_.phases, &c_.overshoots})
             *x = r.get<std::int64_t>();
         c_.max_mean_drift = r.f64();
         for (Group& g : groups_) {
@@ -487,9 +489,11 @@ class Engine {
                 x = r.f64();
             set_first_cumulative(g);
             for (Ring& ring : g.rings) {
-                for (Candidate& c : ring.c)
-                    for (std::uint32_t* x : {&c.i, &c.j, &c.ib, &c.ie, &c.jb, &c.je})
-                        *x = index(r.get<std::uint32_t>(), n);
+                for (Candidate& c : ring.c) {
+                    c.word = r.u64();
+                    c.i_hint = index(r.get<std::uint32_t>(), n - 1);
+                    c.j_hint = index(r.get<std::uint32_t>(), n - 1);
+                }
                 ring.head = index(r.get<unsigned>(), ring_size - 1);
             }
             for (auto& d : g.demotable) {
@@ -511,7 +515,7 @@ class Engine {
             g.t = r.f64();
             g.t_next = r.f64();
             for (std::int64_t* x : {&g.c.collisions, &g.c.candidates, &g.c.bound_raises, &g.c.promotions,
-                                    &g.c.range_moves, &g.c.retargets})
+                                    &g.c.range_moves})
                 *x = r.get<std::int64_t>();
         }
     }
@@ -531,17 +535,18 @@ class Engine {
         std::uint32_t species_pair;
         double gmax, rate, pairs;
     };
-    // A pre-drawn candidate: indices and the ranges of their blocks when drawn.
+    // A pre-drawn candidate: its random word, and the positions it gave over the blocks' ranges
+    // when drawn (in range, 0 for an empty block): prefetch hints, never used as the candidate.
     struct Candidate {
-        std::uint32_t i, j, ib, ie, jb, je;
+        std::uint64_t word;
+        std::uint32_t i_hint, j_hint;
     };
     struct Ring {
         std::array<Candidate, ring_size> c{};
         unsigned head = 0;
     };
     struct GroupCounters {
-        std::int64_t collisions = 0, candidates = 0, bound_raises = 0, promotions = 0, range_moves = 0,
-                     retargets = 0;
+        std::int64_t collisions = 0, candidates = 0, bound_raises = 0, promotions = 0, range_moves = 0;
     };
     // One group: a DSMC gas of its own for the step (blocks species-major, s K + c). Aligned to a
     // cache line, so that groups on different threads share none.
@@ -744,39 +749,34 @@ class Engine {
             std::rethrow_exception(error);
     }
 
-    std::uint32_t draw_in(Group& g, const Block& b) {
-        return b.size() ? b.begin + static_cast<std::uint32_t>(uniform_index(g.rng, b.size())) : b.begin;
+    // The position in block b that 32 random bits u give by multiply-shift, without Lemire's
+    // rejection (a prefetch hint); 0 for an empty block, so that perm_ may be read there.
+    static std::uint32_t position_hint(const Block& b, std::uint32_t u) {
+        return b.size() ? b.begin + static_cast<std::uint32_t>((std::uint64_t{u} * b.size()) >> 32) : 0;
+    }
+    // A position uniform over block b (not empty) from 32 random bits u: Lemire's multiply-shift
+    // with rejection of the (2^32 mod n) low values that would make some positions likelier; a
+    // rejected u (probability < n/2^32) is replaced by a fresh 64-bit draw.
+    std::uint32_t position_in(Group& g, const Block& b, std::uint32_t u) {
+        const std::uint32_t n = b.size();
+        const std::uint64_t m = std::uint64_t{u} * n;
+        if (static_cast<std::uint32_t>(m) < n) [[unlikely]] {
+            const std::uint32_t threshold = (0u - n) % n;
+            if (static_cast<std::uint32_t>(m) < threshold)
+                return b.begin + static_cast<std::uint32_t>(uniform_index(g.rng, n));
+        }
+        return b.begin + static_cast<std::uint32_t>(m >> 32);
     }
 
     Candidate draw_candidate(Group& g, std::size_t k) {
         const BlockPair& bp = g.block_pairs[k];
-        const Block& X = g.blocks[bp.x];
-        const Block& Y = g.blocks[bp.y];
-        Candidate c{draw_in(g, X), draw_in(g, Y), X.begin, X.end, Y.begin, Y.end};
+        const std::uint64_t word = g.rng();
+        Candidate c{word, position_hint(g.blocks[bp.x], static_cast<std::uint32_t>(word)),
+                    position_hint(g.blocks[bp.y], static_cast<std::uint32_t>(word >> 32))};
         // Stage 1 of 2: the index entries (the grains follow half a ring later, take_candidate).
-        prefetch_line(&perm_[c.i]);
-        prefetch_line(&perm_[c.j]);
+        prefetch_line(&perm_[c.i_hint]);
+        prefetch_line(&perm_[c.j_hint]);
         return c;
-    }
-
-    // idx was uniform over [b0, e0); returns an index uniform over the block's current range.
-    // Exact: with probability m/n (m = size of the overlap) an index in the overlap (idx if it lies
-    // there: given that, it is uniform over the overlap; else a fresh one), otherwise a fresh index
-    // outside the overlap.
-    std::uint32_t retarget(Group& g, std::uint32_t idx, std::uint32_t b0, std::uint32_t e0, const Block& B) {
-        const std::uint32_t b1 = B.begin, e1 = B.end;
-        if (b0 == b1 && e0 == e1) [[likely]]
-            return idx;
-        ++g.c.retargets;
-        const std::uint32_t n = e1 - b1;
-        const std::uint32_t lo = std::max(b0, b1), hi = std::min(e0, e1);
-        const std::uint32_t m = hi > lo ? hi - lo : 0;
-        if (m == 0)
-            return b1 + static_cast<std::uint32_t>(uniform_index(g.rng, n));
-        if (uniform_index(g.rng, n) < m)
-            return idx >= lo && idx < hi ? idx : lo + static_cast<std::uint32_t>(uniform_index(g.rng, m));
-        const std::uint32_t k = static_cast<std::uint32_t>(uniform_index(g.rng, n - m));
-        return k < lo - b1 ? b1 + k : hi + (k - (lo - b1));
     }
 
     void take_candidate(Group& g, std::size_t k, std::uint32_t& i, std::uint32_t& j) {
@@ -787,14 +787,13 @@ class Engine {
         // Stage 2 of 2: the grains of the candidate half a ring ahead, whose index entries were
         // prefetched half a ring ago (a hint only: perm_ may have changed since, which costs a miss).
         const Candidate& ahead = r.c[(r.head + ring_size / 2) % ring_size];
-        if (ahead.ie > ahead.ib) [[likely]] // else an empty block: i == its begin may be past the end
-            store_.prefetch(perm_[ahead.i]);
-        if (ahead.je > ahead.jb) [[likely]]
-            store_.prefetch(perm_[ahead.j]);
+        store_.prefetch(perm_[ahead.i_hint]);
+        store_.prefetch(perm_[ahead.j_hint]);
         const BlockPair& bp = g.block_pairs[k];
         const Block& X = g.blocks[bp.x];
-        i = retarget(g, c.i, c.ib, c.ie, X);
-        j = retarget(g, c.j, c.jb, c.je, g.blocks[bp.y]);
+        // The chosen block pair has a positive rate: both blocks hold grains (two for x == y).
+        i = position_in(g, X, static_cast<std::uint32_t>(c.word));
+        j = position_in(g, g.blocks[bp.y], static_cast<std::uint32_t>(c.word >> 32));
         if (bp.x == bp.y) { // i and j drawn independently from one block: a distinct pair by rejection
             while (j == i)
                 [[unlikely]] j = X.begin + static_cast<std::uint32_t>(uniform_index(g.rng, X.size()));
@@ -830,9 +829,9 @@ class Engine {
     // After a collision, grain i of block x has |v|^2 = v2. Keeps every block's bound true:
     //  - above the block's ceiling: the grain moves up a class (repeatedly). Preferably it trades
     //    places with a grain of the next class that has become slow enough for this one (a
-    //    "demotable" grain, remembered when it collided): the blocks keep their ranges, so no
-    //    pre-drawn candidate needs re-targeting. Else the grain is swapped with the last grain of
-    //    its block and the boundary between the two blocks moves by one.
+    //    "demotable" grain, remembered when it collided): the blocks keep their ranges. Else the
+    //    grain is swapped with the last grain of its block and the boundary between the two blocks
+    //    moves by one.
     //  - above the bound (below the ceiling): the bound is raised to |v|;
     //  - slow enough for the class below: remembered as demotable.
     // `other`, `other_block`: the collision partner, which follows if it was moved.

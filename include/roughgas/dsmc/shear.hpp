@@ -73,14 +73,24 @@ double strang_step_length(double tau, double nu_ref, const PressureTensor& P, do
 // done(pending) (h/2 for a full step); a caller that saves the state at a done() returning false
 // passes that `pending` as `resume` to a later call, which goes on from there bit for bit as the
 // first would have (the step after it and its merged stream, pending + h/2, not a new half-stream).
+// A step() that takes `double& pending` may do that owed stream itself (and set pending to 0)
+// before it decides the next step's length, so that it decides from the state after it; the
+// next stream is then only the new step's h/2.
 template <class Step, class Stream, class Collide, class Done>
 std::int64_t strang_steps(Step&& step, Stream&& stream, Collide&& collide, Done&& done,
                           std::optional<double> resume = std::nullopt) {
+    const auto next_step = [&](double& pending) {
+        if constexpr (std::is_invocable_v<Step&, double&>)
+            return step(pending);
+        else
+            return step();
+    };
     std::int64_t steps = 0;
-    double h = step();
-    stream(resume ? *resume + 0.5 * h : 0.5 * h);
+    double owed = resume.value_or(0.0);
+    double h = next_step(owed);
+    stream(owed + 0.5 * h);
     for (;;) {
-        const double pending = collide(h) - 0.5 * h; // h/2 for a full step
+        double pending = collide(h) - 0.5 * h; // h/2 for a full step
         ++steps;
         bool finished;
         if constexpr (std::is_invocable_v<Done&, double>)
@@ -91,7 +101,7 @@ std::int64_t strang_steps(Step&& step, Stream&& stream, Collide&& collide, Done&
             stream(pending);
             break;
         }
-        h = step();
+        h = next_step(pending);
         stream(pending + 0.5 * h);
     }
     return steps;
