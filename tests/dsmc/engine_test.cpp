@@ -304,8 +304,11 @@ TEST(Engine, SmoothSpheresFollowHaffsLaw) {
 TEST(Engine, MixtureCollisionRatesAreExact) {
     // Binary elastic smooth mixture at one temperature T = 1: A (m = 1, R = 0.5), B (m = 4, R = 1),
     // half each, n = 1. Pair (a, b) collides at the rate P_ab pi sigma_ab^2 <g_ab>/V per unit time,
-    // <g_ab> = sqrt((8/pi) T (1/m_a + 1/m_b)), P_ab the number of distinct pairs. 8 replicas of
-    // N = 1e4 for 30 collisions per particle; each pair type within 3 standard errors.
+    // <g_ab> = sqrt((8/pi) T (1/m_a + 1/m_b)), P_ab the number of distinct pairs. 32 replicas of
+    // N = 1e4 for 30 collisions per particle; each pair type within 3.5 standard errors: with the
+    // error estimated from the replicas (Student t, 31 degrees of freedom) a correct engine fails one
+    // of the three in 0.4 % of the seeds. (With 8 replicas and 3 errors it was 6 %: 2 of 10 seeds
+    // failed when the collision streams changed in session 10, pooled over the 10: 0.9997 +- 0.0005.)
     SpeciesSpec A = unit_grain(), B = unit_grain();
     A.name = "A";
     A.fraction = 0.5;
@@ -314,7 +317,7 @@ TEST(Engine, MixtureCollisionRatesAreExact) {
     B.radius = 1;
     B.fraction = 0.5;
     std::vector<std::vector<double>> ratio(3);
-    for (std::uint64_t k = 0; k < 8; ++k) {
+    for (std::uint64_t k = 0; k < 32; ++k) {
         auto e = make_engine<SmoothAoS, true>({A, B}, 10000, std::vector(3, make_smooth_constant(1.0)),
                                               EngineOptions{1.0, 1.0, 16, k});
         const Moments m0 = moments_of(e);
@@ -332,7 +335,7 @@ TEST(Engine, MixtureCollisionRatesAreExact) {
     for (int t = 0; t < 3; ++t) {
         const MeanErr m = mean_err(ratio[t]);
         std::printf("  pair type %d: rate/exact = %.4f +- %.4f\n", t, m.mean, m.err);
-        EXPECT_NEAR(m.mean, 1.0, 3 * m.err) << "pair type " << t;
+        EXPECT_NEAR(m.mean, 1.0, 3.5 * m.err) << "pair type " << t;
     }
 }
 
