@@ -421,10 +421,6 @@ class Engine {
                 w.u64(x);
             for (double x : {g.rate, g.inv_rate, g.t, g.t_next})
                 w.f64(x);
-            w.put(g.next.drawn);
-            for (std::uint32_t x : {g.next.k, g.next.i, g.next.j})
-                w.put(x);
-            w.f64(g.next.u);
             for (std::int64_t x : {g.c.collisions, g.c.candidates, g.c.bound_raises, g.c.promotions,
                                    g.c.range_moves})
                 w.put(x);
@@ -518,12 +514,6 @@ class Engine {
             g.inv_rate = r.f64();
             g.t = r.f64();
             g.t_next = r.f64();
-            g.next.drawn = r.get<bool>();
-            g.next.k = index(r.get<std::uint32_t>(), g.block_pairs.size() - 1);
-            g.next.i = index(r.get<std::uint32_t>(), n - 1);
-            g.next.j = index(r.get<std::uint32_t>(), n - 1);
-            g.next.u = r.f64();
-            refresh_next(g); // its grains and |g_c|^2 follow from the store and the index array
             for (std::int64_t* x : {&g.c.collisions, &g.c.candidates, &g.c.bound_raises, &g.c.promotions,
                                     &g.c.range_moves})
                 *x = r.get<std::int64_t>();
@@ -551,16 +541,6 @@ class Engine {
         std::uint64_t word;
         std::uint32_t i_hint, j_hint;
     };
-    // The candidate at a group's t_next, drawn one candidate ahead (advance): its block pair k,
-    // positions i, j, acceptance uniform u, and the grains at i and j with their |g_c|^2 (kept up
-    // to date: recomputed whenever a collision may have changed them).
-    struct NextCandidate {
-        bool drawn = false;
-        std::uint32_t k = 0, i = 0, j = 0;
-        double u = 0;
-        std::uint32_t gi = 0, gj = 0;
-        double g2 = 0;
-    };
     struct Ring {
         std::array<Candidate, ring_size> c{};
         unsigned head = 0;
@@ -581,7 +561,6 @@ class Engine {
         boost::random::exponential_distribution<double> exponential{1.0};
         double rate = 0, inv_rate = 0;
         double t = 0, t_next = 0;
-        NextCandidate next{}; // the candidate at t_next, if drawn (advance's look-ahead)
         GroupCounters c{};
     };
 
@@ -600,32 +579,23 @@ class Engine {
         while (done < quota && g.t_next < t_limit) {
             g.t = g.t_next;
             ++g.c.candidates;
-            if (!g.next.drawn) [[unlikely]] // the first candidate of a step, or after a rate change
-                draw_next(g);
-            const NextCandidate c = g.next;
-            // Look-ahead: the candidate after this one is drawn now, before this one's collision, so
-            // that its loads and |g_c|^2 run beside the collision instead of waiting behind it and
-            // behind the unpredictable branch on the acceptance. Exact: its time and block pair are
-            // drawn at the current rates, and if the collision changes them it is discarded and the
-            // clock restarted (memoryless); if the collision moves grains between positions or
-            // changes its grains' velocities, its |g_c|^2 is recomputed (same uniform). Always drawn
-            // whatever t_limit is, so that where run() pauses never changes the trajectory.
-            g.t_next = g.t + g.exponential(g.rng) * g.inv_rate;
-            draw_next(g);
-            const BlockPair& bp = g.block_pairs[c.k];
+            const std::size_t k = choose_block_pair(g);
+            const BlockPair& bp = g.block_pairs[k];
+            std::uint32_t i, j;
+            take_candidate(g, k, i, j);
+            const std::uint32_t gi = perm_[i], gj = perm_[j];
+            Vec3& v_i = store_.v(gi);
+            Vec3& v_j = store_.v(gj);
+            const Vec3 g_c = v_i - v_j;
+            const double g2 = norm2(g_c);
             bool accepted;
             if constexpr (Kernel == CollisionKernel::maxwell) {
                 accepted = true; // the rate is exact: no thinning
             } else {
-                const double x = c.u * bp.gmax;
-                accepted = x * x < c.g2; // with probability |g_c|/g_max
+                const double x = uniform01(g.rng) * bp.gmax;
+                accepted = x * x < g2; // with probability |g_c|/g_max
             }
             if (accepted) {
-                const std::uint32_t gi = c.gi, gj = c.gj;
-                Vec3& v_i = store_.v(gi);
-                Vec3& v_j = store_.v(gj);
-                const Vec3 g_c = v_i - v_j;
-                const double g2 = c.g2;
                 const std::size_t sp = Mixture ? bp.species_pair : 0;
                 const PairConstants& pc = types_[sp].pc;
                 const Policy& policy = policies_[sp];
@@ -649,45 +619,18 @@ class Engine {
                 ++done;
                 obs(rec, sp);
                 const double vi2 = norm2(v_i), vj2 = norm2(v_j);
-                std::uint32_t i = c.i, j = c.j, x_i = bp.x, x_j = bp.y;
-                const std::int64_t promotions = g.c.promotions;
+                std::uint32_t x_i = bp.x, x_j = bp.y;
                 bool rates_changed = false;
                 rates_changed |= settle(g, i, x_i, vi2, j, x_j);
                 rates_changed |= settle(g, j, x_j, vj2, i, x_i);
                 if (rates_changed) [[unlikely]] {
                     ++g.c.bound_raises;
                     update_rates(g);
-                    g.next.drawn = false; // drawn at the old rates: discarded, the clock restarted
-                    g.t_next = g.t + g.exponential(g.rng) * g.inv_rate;
-                } else if (g.c.promotions != promotions || g.next.gi == gi || g.next.gi == gj ||
-                           g.next.gj == gi || g.next.gj == gj) {
-                    refresh_next(g); // grains moved between positions, or its grains collided
                 }
             }
+            g.t_next = g.t + g.exponential(g.rng) * g.inv_rate;
         }
         return done;
-    }
-
-    // Draws the group's next candidate (g.next): its block pair, positions and acceptance uniform,
-    // and reads its grains. Nothing is drawn while the group has no candidate rate (no grains).
-    void draw_next(Group& g) {
-        NextCandidate& n = g.next;
-        n.drawn = false;
-        if (!(g.rate > 0))
-            return;
-        n.k = static_cast<std::uint32_t>(choose_block_pair(g));
-        take_candidate(g, n.k, n.i, n.j);
-        if constexpr (Kernel != CollisionKernel::maxwell)
-            n.u = uniform01(g.rng);
-        refresh_next(g);
-        n.drawn = true;
-    }
-    // The grains at the next candidate's positions and their |g_c|^2, as they are now.
-    void refresh_next(Group& g) {
-        NextCandidate& n = g.next;
-        n.gi = perm_[n.i];
-        n.gj = perm_[n.j];
-        n.g2 = norm2(store_.v(n.gi) - store_.v(n.gj));
     }
 
     // One group: the plain event loop.
@@ -1141,10 +1084,8 @@ class Engine {
             nu_ = 0;
             step_length_ = std::numeric_limits<double>::infinity();
             t_step_end_ = std::numeric_limits<double>::infinity();
-            for (Group& g : groups_) {
+            for (Group& g : groups_)
                 g.t_next = std::numeric_limits<double>::infinity();
-                g.next.drawn = false;
-            }
             return;
         }
         nu_ = nu;
@@ -1158,7 +1099,6 @@ class Engine {
                     c = draw_candidate(g, k);
             }
             g.t = t0;
-            g.next.drawn = false;
             g.t_next = g.rate > 0 ? t0 + g.exponential(g.rng) * g.inv_rate : std::numeric_limits<double>::infinity();
         }
     }
