@@ -476,13 +476,12 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
             // scaled by sqrt(T)). Not in a steady state: a step of one mean free time heats by
             // ~30 % there, and one rule for every step length keeps the splitting error c h^2 with
             // one c (tests/validation/usf_test.cpp).
-            const double s = 0.5 * (h_prev + h);
-            const double trace = P.xx + P.yy + P.zz;
-            const double heating = (P.xx - 2 * a * s * P.xy + a * a * s * s * P.yy + P.yy + P.zz) / trace;
+            const double heating = streamed_temperature_ratio(P, a, 0.5 * (h_prev + h));
             if (pending != 0 && (heating > 2.0 || heating < 0.5)) {
+                const double trace = P.trace();
                 stream(pending);
                 pending = 0;
-                nu_ref *= std::sqrt((P.xx + P.yy + P.zz) / trace);
+                nu_ref *= std::sqrt(P.trace() / trace);
                 h_prev = strang_step_length(tau, nu_ref, P, a, 0.0);
             } else {
                 h_prev = h;

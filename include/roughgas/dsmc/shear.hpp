@@ -49,6 +49,10 @@ PressureTensor stream_shear(Store& store, double a, double s, std::span<const Sp
     return sums;
 }
 
+// T'/T of the state with pressure tensor P (any normalisation, tr P > 0) after a stream of s: the
+// stream is exact on P, P_xx -> P_xx - 2 a s P_xy + a^2 s^2 P_yy, and T ~ tr P.
+double streamed_temperature_ratio(const PressureTensor& P, double a, double s);
+
 // The length h of the next Strang step, in time: h nu = tau with nu the Maxwellian hard-sphere
 // collision frequency of the state the step's collisions start from, i.e. after the stream of
 // s = (h_prev + h)/2 that precedes them (s = h/2 for the first step: h_prev = 0). Predicted from a

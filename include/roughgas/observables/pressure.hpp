@@ -33,6 +33,7 @@ struct PressureTensor {
         xz += c.x * c.z;
         yz += c.y * c.z;
     }
+    double trace() const { return xx + yy + zz; }
     // += f o
     void add_scaled(double f, const PressureTensor& o) {
         xx += f * o.xx;
