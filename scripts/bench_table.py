@@ -10,6 +10,7 @@ Runs (Release build with benchmarks, ROUGHGAS_BUILD_BENCHMARKS=ON):
      rough, constant smooth, elastic smooth, coulomb, viscoelastic (smooth and rough) and brilliantov
      kernels for N = 1e4 .. 1e7 on 1 and 2 threads (groups as `roughgas run` chooses them);
   2. dsmc_bench BM_Skip_* / BM_Threads_* / BM_Layout_*: what each compile-time skip and the groups are worth;
+     BM_StepStart_*: the step start alone (time per step start and per grain);
   3. tests/bench/restitution_bench BM_*TableBuild: building the restitution tables;
   4. `roughgas run` of a constant rough case for each N under /usr/bin/time: peak memory (max RSS);
   5. the ceiling of two threads: two one-thread benchmark processes at once (nothing shared but the
@@ -208,6 +209,15 @@ def main():
     print("|-------------------|------------|")
     for name, (rate, _, _) in sorted(res.items()):
         print(f"| {name} | {fmt_rate(rate)} |")
+
+    step_sizes = "100000" if a.quick else "100000|1000000|10000000"
+    res, l0, l1 = run_bench(dsmc, f"^BM_StepStart_.*/({step_sizes})/", reps, os.path.join(a.out, "step_start.json"))
+    print(f"\nThe step start alone (partition, counting sort, bounds; load {l0:.2f} .. {l1:.2f}):\n")
+    print("| benchmark (N/T) | time per step start | per grain |")
+    print("|-----------------|---------------------|-----------|")
+    for name, (_, ms, _) in sorted(res.items()):
+        n = int(name.split("/")[1])
+        print(f"| {name.split('/min_time')[0]} | {ms:.2f} ms | {ms * 1e6 / n:.1f} ns |")
 
     res, l0, l1 = run_bench(rest, "TableBuild", 1, os.path.join(a.out, "tables.json"))
     print(f"\nRestitution table builds (load {l0:.2f} .. {l1:.2f}):\n")

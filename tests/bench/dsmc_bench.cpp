@@ -11,6 +11,7 @@
 //   BM_Case<...>/N/T     the kernels run_replica selects: constant rough / smooth / elastic smooth,
 //                        coulomb, viscoelastic and brilliantov from cached tables; T threads
 //   BM_Threads<...>/N/G/T  G groups (1: none) on T threads
+//   BM_StepStart<...>/N/T  the step start alone (partition, counting sort, bounds) on T threads
 //   BM_Classes<...>/N/K  speed classes of the majorant (K = 1: the plain vmax_a + vmax_b bound)
 //   BM_Layout<...>       the same rough and smooth constant kernels on the other particle layouts
 //   BM_Skip<...>         what each compile-time skip is worth: the rough kernel at beta = -1 (omega
@@ -196,6 +197,33 @@ void BM_Threads_SmoothConstant(benchmark::State& s) {
                          static_cast<int>(s.range(2)));
 }
 
+// The step start alone (engine.hpp, begin_step: the partition, the counting sort, the bounds), /N/T:
+// each iteration ends the step and takes one collision, which starts the next. Wall-clock time;
+// grains_per_second = N / (time of one step start).
+template <class Store, class Policy> void run_step_start(benchmark::State& state, const Policy& policy) {
+    const auto N = static_cast<std::int64_t>(state.range(0));
+    const SpeciesSpec species = unit_grain();
+    const auto blocks = make_species_blocks({species}, N);
+    Store store(static_cast<std::size_t>(N));
+    init_maxwellian(store, blocks, 1, 0);
+    const EngineOptions opt{1.0 / std::pow(2 * species.radius, 3), 1.0, 1, 0, 2, auto_groups(N),
+                            static_cast<int>(state.range(1))};
+    Engine<Store, Policy, false> e(blocks, {policy}, std::move(store), opt);
+    e.run_collisions(N / 4);
+    for (auto _ : state) {
+        e.restart_step();
+        e.run_collisions(e.collisions() + 1);
+    }
+    state.counters["grains_per_second"] =
+        benchmark::Counter(static_cast<double>(N), benchmark::Counter::kIsIterationInvariantRate);
+}
+void BM_StepStart_RoughConstant(benchmark::State& s) {
+    run_step_start<RoughPacked>(s, make_rough_constant(0.9, 0.5));
+}
+void BM_StepStart_SmoothConstant(benchmark::State& s) {
+    run_step_start<SmoothAoS>(s, make_smooth_constant(0.9));
+}
+
 #define ROUGHGAS_SIZES ->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->MinTime(2.0)
 // The README table (scripts/bench_table.py): N = 1e4 .. 1e7 on 1 and 2 threads.
 #define ROUGHGAS_CASE_SIZES                                                                              \
@@ -228,6 +256,16 @@ BENCHMARK(BM_Threads_SmoothConstant)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(2.0);
+BENCHMARK(BM_StepStart_RoughConstant)
+    ->ArgsProduct({{100000, 1000000, 10000000}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(1.0);
+BENCHMARK(BM_StepStart_SmoothConstant)
+    ->ArgsProduct({{100000, 1000000, 10000000}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(1.0);
 BENCHMARK(BM_Layout_RoughAoS64) ROUGHGAS_SIZES;
 BENCHMARK(BM_Layout_RoughSoA) ROUGHGAS_SIZES;
 BENCHMARK(BM_Layout_SmoothPacked24) ROUGHGAS_SIZES;
