@@ -2,7 +2,7 @@
 # Installs the given Debian packages that are missing (apt-get; sudo when not root). Quiet and
 # idempotent. `--base` adds what every roughgas build needs (the list is kept here only).
 set -euo pipefail
-base=(g++ cmake make pkg-config libeigen3-dev libfftw3-dev libboost-dev libboost-math-dev
+base=(g++ cmake make ninja-build pkg-config libeigen3-dev libfftw3-dev libboost-dev libboost-math-dev
       libgtest-dev libbenchmark-dev libtomlplusplus-dev libcli11-dev libfmt-dev
       python3-numpy python3-matplotlib)
 packages=()

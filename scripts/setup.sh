@@ -8,6 +8,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 
 build="${ROUGHGAS_BUILD_DIR:-$root/build}"
 if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  # Ninja: the objects of a target compile while the libraries it links are still being built
+  # (with Makefiles one core idled while src/dsmc/run.cpp, the longest object, compiled).
+  cmake -G Ninja -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 fi
 "$root/scripts/cmake_build.sh" setup "$build/build.log" "$build" --parallel "$(nproc)"
