@@ -10,6 +10,7 @@ build="${ROUGHGAS_BUILD_DIR:-$root/build}"
 if [ ! -f "$build/CMakeCache.txt" ]; then
   # Ninja: the objects of a target compile while the libraries it links are still being built
   # (with Makefiles one core idled while src/dsmc/run.cpp, the longest object, compiled).
-  cmake -G Ninja -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  # ROUGHGAS_CMAKE_ARGS: extra configure arguments (.ci/run leaves the benchmarks out).
+  cmake -G Ninja -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release ${ROUGHGAS_CMAKE_ARGS:-} >/dev/null
 fi
 "$root/scripts/cmake_build.sh" setup "$build/build.log" "$build" --parallel "$(nproc)"
