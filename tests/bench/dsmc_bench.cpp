@@ -35,18 +35,26 @@ namespace {
 
 constexpr std::int64_t bench_chunk = 100000;
 
+// A homogeneous gas of N grains of `species` at T = 1 (Maxwellian, seed 1), number density
+// n = 1/sigma^3 (sigma = 2R), steps of one mean free time: what every benchmark here runs.
+template <class Store, class Policy, bool Mixture>
+Engine<Store, Policy, Mixture> make_bench_engine(std::int64_t N, const SpeciesSpec& species,
+                                                 const Policy& policy, int classes, int groups, int threads) {
+    const auto blocks = make_species_blocks({species}, N);
+    Store store(static_cast<std::size_t>(N));
+    init_maxwellian(store, blocks, 1, 0);
+    return Engine<Store, Policy, Mixture>(
+        blocks, {policy}, std::move(store),
+        EngineOptions{1.0 / std::pow(2 * species.radius, 3), 1.0, 1, 0, classes, groups, threads});
+}
+
 template <class Store, class Policy, bool Mixture = false>
 void run_bench(benchmark::State& state, const SpeciesSpec& species, const Policy& policy, int classes = 2,
                int groups = 0, int threads = 1) {
     const auto N = static_cast<std::int64_t>(state.range(0));
     if (groups == 0) // what run_replica uses (run_spec.hpp)
         groups = auto_groups(N);
-    const auto blocks = make_species_blocks({species}, N);
-    Store store(static_cast<std::size_t>(N));
-    init_maxwellian(store, blocks, 1, 0);
-    Engine<Store, Policy, Mixture> e(
-        blocks, {policy}, std::move(store),
-        EngineOptions{1.0 / std::pow(2 * species.radius, 3), 1.0, 1, 0, classes, groups, threads});
+    auto e = make_bench_engine<Store, Policy, Mixture>(N, species, policy, classes, groups, threads);
     // A grouped run meets a collision target in parallel phases and a short serial tail
     // (engine.hpp): chunks of at least a step (N/2 collisions), as run_replica uses.
     const std::int64_t chunk = groups > 1 ? std::max<std::int64_t>(bench_chunk, N / 2) : bench_chunk;
@@ -202,13 +210,8 @@ void BM_Threads_SmoothConstant(benchmark::State& s) {
 // grains_per_second = N / (time of one step start).
 template <class Store, class Policy> void run_step_start(benchmark::State& state, const Policy& policy) {
     const auto N = static_cast<std::int64_t>(state.range(0));
-    const SpeciesSpec species = unit_grain();
-    const auto blocks = make_species_blocks({species}, N);
-    Store store(static_cast<std::size_t>(N));
-    init_maxwellian(store, blocks, 1, 0);
-    const EngineOptions opt{1.0 / std::pow(2 * species.radius, 3), 1.0, 1, 0, 2, auto_groups(N),
-                            static_cast<int>(state.range(1))};
-    Engine<Store, Policy, false> e(blocks, {policy}, std::move(store), opt);
+    auto e = make_bench_engine<Store, Policy, false>(N, unit_grain(), policy, 2, auto_groups(N),
+                                                     static_cast<int>(state.range(1)));
     e.run_collisions(N / 4);
     for (auto _ : state) {
         e.restart_step();
