@@ -15,6 +15,7 @@
 // out byte for byte as from the run without a stop. SIGINT/SIGTERM (stop_signals.hpp) stop every
 // replica at its next boundary with a checkpoint, write the CSV so far and exit 128 + the signal.
 #include "commands.hpp"
+#include "output_dir_lock.hpp"
 #include "progress.hpp"
 #include "quasistatic_warning.hpp"
 #include "run_checkpoints.hpp"
@@ -99,6 +100,7 @@ struct RunSetup {
     bool resuming = false;
     bool manifest_changed = false;                      // a resume with another --checkpoint-every
     std::vector<std::optional<ResumedReplica>> resumed; // per replica (resuming)
+    OutputDirLock lock; // held from the first check of the directory to the end of the run
 };
 
 RunSetup new_run(const RunOptions& o, const CLI::App& app) {
@@ -110,6 +112,7 @@ RunSetup new_run(const RunOptions& o, const CLI::App& app) {
     RunSetup s;
     s.cfg = load_case(o.case_file, sets, CaseUse::run); // invalid input: exit 2
     s.dir = o.out;
+    s.lock.lock_if_exists(s.dir); // before its files are checked: another run may be writing them
     check_output_dir(s.dir, o.force, s.cfg.run.histogram_every > 0, s.cfg.run.kind == RunKind::shear);
     s.manifest.run = {roughgas_version(),
                       o.case_file,
@@ -123,8 +126,11 @@ RunSetup new_run(const RunOptions& o, const CLI::App& app) {
 }
 
 RunSetup resume_run(const RunOptions& o, const CLI::App& app) {
+    OutputDirLock lock;
+    lock.lock_if_exists(o.resume, "--resume"); // the run may still be going on in another process
     ResumedRun r = read_resumable_run(o.resume); // refusals: exit 2, nothing written
     RunSetup s;
+    s.lock = std::move(lock);
     s.cfg = std::move(r.cfg);
     s.dir = o.resume;
     s.manifest = std::move(r.manifest);
@@ -214,6 +220,7 @@ int run_run(const RunOptions& o, const CLI::App& app) {
                                                   : fmt::format("built in {:.2f} s", i.seconds));
     }
     fs::create_directories(dir);
+    setup.lock.lock(dir); // a new directory (an existing one is locked already)
     if (setup.resuming) {
         remove_stale_temporaries(dir);
     } else {

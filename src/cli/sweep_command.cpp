@@ -9,6 +9,7 @@
 // for shear runs the steady window of T and P*_ij; for cooling runs the scaled homogeneous cooling
 // state (theta, a20, a02 stop drifting while T falls), averaged with batch-means errors.
 #include "commands.hpp"
+#include "output_dir_lock.hpp"
 
 #include "roughgas/dsmc/run.hpp"
 #include "roughgas/io/case_file.hpp"
@@ -130,10 +131,13 @@ int run_sweep(const SweepOptions& o) {
     const fs::path dir(o.out);
     if (fs::exists(dir) && !fs::is_directory(dir))
         throw InputError(dir.string(), "--out", "--out " + dir.string() + ": exists and is not a directory");
+    OutputDirLock lock; // one writer per directory (output_dir_lock.hpp), until the sweep ends
+    lock.lock_if_exists(dir);
     if (!o.force && fs::exists(dir / "sweep.csv"))
         throw InputError(dir.string(), "--out",
                          fmt::format("--out {}: sweep.csv exists (use --force to overwrite)", dir.string()));
     fs::create_directories(dir);
+    lock.lock(dir);
 
     const int threads =
         std::min<int>(o.threads > 0 ? o.threads : omp_get_max_threads(), static_cast<int>(s.count));

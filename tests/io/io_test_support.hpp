@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -58,6 +59,15 @@ inline std::string read_file(const fs::path& p) {
     std::ostringstream s;
     s << in.rdbuf();
     return s.str();
+}
+
+// Every file below `dir` with its bytes: "nothing written" is this map unchanged.
+inline std::map<std::string, std::string> file_contents(const fs::path& dir) {
+    std::map<std::string, std::string> m;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        if (e.is_regular_file())
+            m[fs::relative(e.path(), dir).string()] = read_file(e.path());
+    return m;
 }
 
 struct CommandResult {

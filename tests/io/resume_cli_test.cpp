@@ -9,7 +9,6 @@
 
 #include <gtest/gtest.h>
 
-#include <map>
 #include <string>
 
 namespace roughgas {
@@ -36,15 +35,6 @@ std::string shear_case() {
 
 std::string run_args(const fs::path& f, const fs::path& out, const std::string& extra = "") {
     return "run '" + f.string() + "' --out '" + out.string() + "' --quiet " + extra;
-}
-
-// Every file below `dir` with its bytes: "nothing written" is this map unchanged.
-std::map<std::string, std::string> contents(const fs::path& dir) {
-    std::map<std::string, std::string> m;
-    for (const auto& e : fs::recursive_directory_iterator(dir))
-        if (e.is_regular_file())
-            m[fs::relative(e.path(), dir).string()] = test::read_file(e.path());
-    return m;
 }
 
 void expect_same_outputs(const fs::path& a, const fs::path& b) {
@@ -86,11 +76,11 @@ TEST(ResumeCli, AnEarlierCheckpointIsKeptWithoutForce) {
     const fs::path f = dir.write("c.toml", cooling_case());
     const fs::path out = dir / "out";
     ASSERT_EQ(run_roughgas(run_args(f, out, "--checkpoint-every 1"), dir).status, 0);
-    const auto before = contents(out);
+    const auto before = test::file_contents(out);
     const test::CommandResult r = run_roughgas(run_args(f, out), dir);
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("checkpoint exists (continue that run with --resume"), std::string::npos) << r.err;
-    EXPECT_EQ(contents(out), before);
+    EXPECT_EQ(test::file_contents(out), before);
     // --force starts over: the old checkpoint goes (this run takes none).
     ASSERT_EQ(run_roughgas(run_args(f, out, "--force"), dir).status, 0);
     EXPECT_FALSE(fs::exists(out / "checkpoint"));
@@ -199,14 +189,14 @@ TEST_P(ResumeRefused, Exit2NamingFileAndReasonAndWritesNothing) {
     const fs::path out = dir / "out";
     fs::copy(*dir_ / "good", out, fs::copy_options::recursive);
     d.apply(out / "checkpoint", *dir_ / "other");
-    const auto before = contents(dir.path());
+    const auto before = test::file_contents(dir.path());
     const test::CommandResult r = run_roughgas("run --resume '" + out.string() + "'", dir);
     EXPECT_EQ(r.status, 2) << r.err;
     EXPECT_NE(r.err.find((out / "checkpoint" / d.file).string() + ": cannot resume: "), std::string::npos)
         << r.err;
     EXPECT_NE(r.err.find(d.reason), std::string::npos) << r.err;
     EXPECT_TRUE(r.out.empty()) << r.out;
-    EXPECT_EQ(contents(dir.path()), before);
+    EXPECT_EQ(test::file_contents(dir.path()), before);
 }
 
 INSTANTIATE_TEST_SUITE_P(ResumeCli, ResumeRefused, ::testing::ValuesIn(damages()),
