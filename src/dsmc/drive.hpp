@@ -49,7 +49,7 @@ ReplicaEnd drive_kernel(const RunSpec& spec, const std::vector<SpeciesBlock>& bl
 //                                  ViscoelasticDirect: one species
 //   drive_brilliantov.cpp          Brilliantov, BrilliantovDirect: one species
 //   drive_mixture_variant.cpp      AnySmoothPolicy, AnyRoughPolicy: mixtures
-#define ROUGHGAS_DRIVE_KERNEL(P, M)                                                                           \
+#define ROUGHGAS_DRIVE_KERNEL(P, M)                                                                          \
     template ReplicaEnd drive_kernel<P, M>(const RunSpec&, const std::vector<SpeciesBlock>&, std::vector<P>, \
                                            int, const ReplicaIo&)
 

@@ -1,4 +1,5 @@
-// drive_kernel (drive.hpp) compiled for: One species with the viscoelastic normal and asperity tangential contact (tables or direct integration).
+// drive_kernel (drive.hpp) compiled for one species with the viscoelastic normal and asperity
+// tangential contact (tables or direct integration).
 #include "drive_impl.hpp"
 
 namespace roughgas::detail {

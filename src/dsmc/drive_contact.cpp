@@ -1,4 +1,5 @@
-// drive_kernel (drive.hpp) compiled for: One species whose restitution comes from the contact model: Coulomb friction, viscoelastic (tables or direct integration).
+// drive_kernel (drive.hpp) compiled for one species whose restitution comes from the contact model:
+// Coulomb friction, viscoelastic (tables or direct integration).
 #include "drive_impl.hpp"
 
 namespace roughgas::detail {

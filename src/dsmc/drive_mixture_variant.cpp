@@ -1,4 +1,5 @@
-// drive_kernel (drive.hpp) compiled for: Mixtures whose pairs need different policy types: one variant per pair, visited per collision.
+// drive_kernel (drive.hpp) compiled for mixtures whose pairs need different policy types: one
+// variant per pair, visited per collision.
 #include "drive_impl.hpp"
 
 namespace roughgas::detail {

@@ -1,4 +1,5 @@
-// drive_kernel (drive.hpp) compiled for: Rough spheres with constant restitution (one species and same-type mixtures; hard-sphere and Maxwell kernels).
+// drive_kernel (drive.hpp) compiled for rough spheres with constant restitution (one species and
+// same-type mixtures; hard-sphere and Maxwell kernels).
 #include "drive_impl.hpp"
 
 namespace roughgas::detail {

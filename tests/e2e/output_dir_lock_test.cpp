@@ -39,9 +39,9 @@ TEST(OutputDirLock, ARunningRunKeepsOthersOutUntilItIsKilled) {
     const test::ScratchDir dir;
     const fs::path f = dir.write("long.toml", long_case());
     const fs::path out = dir / "out";
-    test::ChildProcess first({"run", f.string(), "--out", out.string(), "--quiet", "--threads", "1",
-                              "--checkpoint-every", "1000"},
-                             dir / "first_out.txt", dir / "first_err.txt");
+    test::ChildProcess first(
+        {"run", f.string(), "--out", out.string(), "--quiet", "--threads", "1", "--checkpoint-every", "1000"},
+        dir / "first_out.txt", dir / "first_err.txt");
     ASSERT_TRUE(test::wait_until(first, [&] { return fs::exists(out / "checkpoint" / "run.bin"); }))
         << test::read_file(dir / "first_err.txt");
     ASSERT_TRUE(first.running()) << test::read_file(dir / "first_err.txt");
@@ -49,10 +49,14 @@ TEST(OutputDirLock, ARunningRunKeepsOthersOutUntilItIsKilled) {
     // Without --force the existing files would be reported; the lock is checked before them.
     const std::string again = "run '" + f.string() + "' --out '" + out.string() + "' --quiet";
     expect_refused(test::run_roughgas(again, dir), "--out", "a second run");
-    expect_refused(test::run_roughgas(again + " --force --set run.end=1", dir), "--out", "a second run, --force");
-    expect_refused(test::run_roughgas("run --resume '" + out.string() + "' --quiet", dir), "--resume", "--resume");
-    expect_refused(test::run_roughgas("sweep '" + f.string() + "' --param collision.alpha=0.7:0.9:2 --quiet "
-                                      "--set run.end=1 --out '" + out.string() + "'",
+    expect_refused(test::run_roughgas(again + " --force --set run.end=1", dir), "--out",
+                   "a second run, --force");
+    expect_refused(test::run_roughgas("run --resume '" + out.string() + "' --quiet", dir), "--resume",
+                   "--resume");
+    expect_refused(test::run_roughgas("sweep '" + f.string() +
+                                          "' --param collision.alpha=0.7:0.9:2 --quiet "
+                                          "--set run.end=1 --out '" +
+                                          out.string() + "'",
                                       dir),
                    "--out", "a sweep");
     EXPECT_TRUE(first.running()); // still the only writer
@@ -84,8 +88,10 @@ TEST(OutputDirLock, ALockedDirectoryIsLeftAsItWas) {
                                           "' --quiet --force --set run.end=1",
                                       dir),
                    "--out", "run");
-    expect_refused(test::run_roughgas("sweep '" + f.string() + "' --param collision.alpha=0.7:0.9:2 --quiet "
-                                      "--set run.end=1 --out '" + out.string() + "'",
+    expect_refused(test::run_roughgas("sweep '" + f.string() +
+                                          "' --param collision.alpha=0.7:0.9:2 --quiet "
+                                          "--set run.end=1 --out '" +
+                                          out.string() + "'",
                                       dir),
                    "--out", "sweep");
     EXPECT_EQ(test::file_contents(out), before);
