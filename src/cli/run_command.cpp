@@ -126,11 +126,9 @@ RunSetup new_run(const RunOptions& o, const CLI::App& app) {
 }
 
 RunSetup resume_run(const RunOptions& o, const CLI::App& app) {
-    OutputDirLock lock;
-    lock.lock_if_exists(o.resume, "--resume"); // the run may still be going on in another process
-    ResumedRun r = read_resumable_run(o.resume); // refusals: exit 2, nothing written
     RunSetup s;
-    s.lock = std::move(lock);
+    s.lock.lock_if_exists(o.resume, "--resume"); // the run may still be going on in another process
+    ResumedRun r = read_resumable_run(o.resume); // refusals: exit 2, nothing written
     s.cfg = std::move(r.cfg);
     s.dir = o.resume;
     s.manifest = std::move(r.manifest);

@@ -27,6 +27,12 @@ std::string long_case() {
            "[collision]\nmodel = \"constant\"\nalpha = 0.9\nbeta = 0.5\n";
 }
 
+// A short sweep (two points, one collision per grain each) of `f` into `out`.
+std::string sweep_args(const fs::path& f, const fs::path& out) {
+    return "sweep '" + f.string() + "' --param collision.alpha=0.7:0.9:2 --quiet --set run.end=1 --out '" +
+           out.string() + "'";
+}
+
 void expect_refused(const test::CommandResult& r, const std::string& option, const std::string& what) {
     EXPECT_EQ(r.status, 2) << what << "\n" << r.err;
     EXPECT_NE(r.err.find(option), std::string::npos) << what << "\n" << r.err;
@@ -53,12 +59,7 @@ TEST(OutputDirLock, ARunningRunKeepsOthersOutUntilItIsKilled) {
                    "a second run, --force");
     expect_refused(test::run_roughgas("run --resume '" + out.string() + "' --quiet", dir), "--resume",
                    "--resume");
-    expect_refused(test::run_roughgas("sweep '" + f.string() +
-                                          "' --param collision.alpha=0.7:0.9:2 --quiet "
-                                          "--set run.end=1 --out '" +
-                                          out.string() + "'",
-                                      dir),
-                   "--out", "a sweep");
+    expect_refused(test::run_roughgas(sweep_args(f, out), dir), "--out", "a sweep");
     EXPECT_TRUE(first.running()); // still the only writer
     EXPECT_FALSE(fs::exists(out / "sweep.csv"));
 
@@ -88,12 +89,7 @@ TEST(OutputDirLock, ALockedDirectoryIsLeftAsItWas) {
                                           "' --quiet --force --set run.end=1",
                                       dir),
                    "--out", "run");
-    expect_refused(test::run_roughgas("sweep '" + f.string() +
-                                          "' --param collision.alpha=0.7:0.9:2 --quiet "
-                                          "--set run.end=1 --out '" +
-                                          out.string() + "'",
-                                      dir),
-                   "--out", "sweep");
+    expect_refused(test::run_roughgas(sweep_args(f, out), dir), "--out", "sweep");
     EXPECT_EQ(test::file_contents(out), before);
 
     ::close(fd); // released: the same run goes through
