@@ -1,52 +1,71 @@
 #!/usr/bin/env python3
 """The speed targets of issue 5, each with a confidence interval.
 
-    scripts/python3 scripts/bench_targets.py [--build build] [--out out/targets] [--processes 6] [--repetitions 6]
+    scripts/python3 scripts/bench_targets.py [--build build] [--out out/targets] [--processes 6] [--rounds 30]
     scripts/python3 scripts/bench_targets.py --ceiling 6     (also: what two threads can reach here)
     scripts/python3 scripts/bench_targets.py --self-check   (the interval and verdicts on synthetic data)
 
-bench_table.py measures every kernel in a call of its own, minutes apart, and reports medians of
-3 repetitions: on a machine whose speed drifts by up to 30 % within minutes (a VM sharing its host),
-a ratio of two such medians is not established by one table. This script measures only the
-benchmarks the targets name, in --processes separate calls of the benchmark binary, each with
---repetitions randomly interleaved repetitions of every benchmark, so that a drift of the machine
-hits numerator and denominator alike. Separate calls, because one process is not a sample of the
-code's speed: its memory placement (huge pages, cache sets) is fixed for its life, and on the AMD
-EPYC of session 7 two calls of the same binary gave constant rough 8.36 and 9.00e6/s, smooth/rough
-1.30 and 1.22, each inside the other's single-call interval. Every ratio is therefore the median
-over the calls of each call's ratio of medians, with a 90 % two-level bootstrap interval (4000
-times: the calls resampled, then the repetitions within each resampled call, numerator and
-denominator independently). A target is
+The benchmarks the targets name (the gases of tests/bench/bench_gas.hpp, wall-clock collisions per
+second): constant rough, constant smooth and cached brilliantov at N = 1e6 on 1 and 2 threads, and
+elastic smooth at N = 1e5 and 1e6 on one thread (against SPARTA's figures on this machine, from the
+issue). They run in --processes separate calls of tests/bench/slices_bench, which builds every gas once
+and then runs --rounds rounds, each gas for a slice of a quarter of a second per round.
+
+Why slices (since session 13): the project's VMs have episodes of seconds to minutes in which every
+kernel runs up to 25-40 % slower (session 12: constant rough 3.9-7.1e6/s among the 2-second repetitions
+of one Google Benchmark call). Repetitions of Google Benchmark, even randomly interleaved, put the two
+sides of a ratio into different episodes, and the intervals stayed at +-8-15 % for eight sessions. The
+slices of one round are a second apart: each round's ratio of two kernels cancels the episode, and its
+spread (5 % for smooth/rough, session 13) is that of the kernels' own slices. Separate calls, because one
+process is not a sample of the code's speed: its memory placement (huge pages, cache sets) is fixed for
+its life (session 13: smooth/rough 1.28-1.32 over four calls, each +-1-2 %).
+
+Every ratio is the median over the calls of each call's median over the rounds of the round's ratio, with
+a 90 % two-level bootstrap interval (4000 times: the calls resampled, then the rounds within each
+resampled call); an absolute figure (collisions per second, the SPARTA ratios) the same with the slices'
+rates. A target is
   met        when the interval lies above it,
   not met    when the interval lies below it,
   undecided  otherwise (more calls, or a quieter machine, would decide it).
-The benchmarks (tests/bench/dsmc_bench.cpp, BM_Case_*/N/T, wall-clock collisions per second):
-constant rough, constant smooth and cached brilliantov at N = 1e6 on 1 and 2 threads, and elastic
-smooth at N = 1e5 and 1e6 on one thread (against SPARTA's figures on this machine, from the issue).
-Writes markdown to stdout and the raw JSON to --out.
+Writes markdown to stdout and the slices (CSV) to --out.
 
---ceiling R adds, for the same three kernels at N = 1e6, R rounds of three calls in a random order:
-one one-thread process alone, two one-thread processes at once (summed: they share nothing but the
-machine's cores, caches and memory, so their sum is what two threads of one process can reach at
-best), and one two-thread process. Each round's ratios (pair / alone, two threads / alone, two
-threads / pair) are taken within the round, seconds apart; the table gives their median and a 90 %
-bootstrap interval over the rounds. If even the pair's interval lies below 1.8, the two-thread
+--ceiling R adds, for the same three kernels at N = 1e6, R rounds of three calls of dsmc_bench (Google
+Benchmark) in a random order: one one-thread process alone, two one-thread processes at once (summed:
+they share nothing but the machine's cores, caches and memory, so their sum is what two threads of one
+process can reach at best), and one two-thread process. Each round's ratios (pair / alone, two threads /
+alone, two threads / pair) are taken within the round, seconds apart; the table gives their median and a
+90 % bootstrap interval over the rounds. If even the pair's interval lies below 1.8, the two-thread
 target is out of this machine's reach.
 """
 import argparse
+import csv
 import datetime
 import json
 import os
+import subprocess
 import sys
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_common import (BENCH_ENV, benchmark_iterations, commit, cpu_times, loadavg, machine,  # noqa: E402
-                          pair_rate, single_rate, stolen_since)
+from bench_common import (BENCH_ENV, commit, cpu_times, loadavg, machine, pair_rate, single_rate,  # noqa: E402
+                          stolen_since)
 
-FILTER = ("^BM_Case_(RoughConstant|SmoothConstant|Brilliantov)/1000000/[12]/|"
-          "^BM_Case_SmoothElastic/(100000|1000000)/1/")
+BENCHMARKS = [f"{k}/1000000/{t}" for t in (1, 2) for k in ("RoughConstant", "SmoothConstant", "Brilliantov")] + [
+    "SmoothElastic/100000/1", "SmoothElastic/1000000/1"]
+
+
+def slices(binary, rounds, out_csv):
+    """One call of slices_bench over BENCHMARKS: {benchmark: rates (collisions/s), one per round}."""
+    with open(out_csv, "w") as f:
+        subprocess.run([binary, "--rounds", str(rounds), *BENCHMARKS], check=True, stdout=f, env=BENCH_ENV)
+    rates = {b: np.full(rounds, np.nan) for b in BENCHMARKS}
+    with open(out_csv) as f:
+        for row in csv.DictReader(f):
+            rates[row["benchmark"]][int(row["round"])] = int(row["collisions"]) / float(row["seconds"])
+    if any(np.isnan(r).any() for r in rates.values()):
+        raise RuntimeError(f"{out_csv}: a slice is missing")
+    return rates
 
 
 def interval(num, den, rng, boots=4000):
@@ -84,7 +103,9 @@ def self_check():
     calls is not exact); with 1 % and 2 % every trial must call 1.3 met and 1.7 not met; with 15 % between
     calls a target equal to the truth must stay undecided in at least 80 % of them; and an interval over
     one call only must cover the truth in well under 75 % of the trials at 4 % between calls (what pooling
-    the calls is for). Exits 1 on a failure (ctest: scripts_bench_targets)."""
+    the calls is for). Then the rounds of slices_bench (comments below): pairing the two slices of a round
+    must decide what the medians of the two sides cannot. Exits 1 on a failure (ctest:
+    scripts_bench_targets)."""
     rng = np.random.default_rng(7)
     boot = np.random.default_rng(1)
     failures = []
@@ -108,6 +129,33 @@ def self_check():
     undecided = np.mean([verdict(lo, hi, 1.5) == "undecided" for _, lo, hi in trials(0.15, 0.02)])
     if undecided < 0.80:
         failures.append(f"15 % between calls: the truth is undecided in only {undecided:.0%} of the trials")
+    # The rounds of slices_bench: each round's two slices share an episode of the machine (lognormal,
+    # 25 %), each call its placement (2 %, numerator and denominator independently), each slice its own
+    # scatter (4 %). Truth 1.4 against a target of 1.3: the interval over the rounds' ratios must cover
+    # 1.4 in 75-99 % of the trials and call 1.3 met in at least 95 %; the ratio of the two sides'
+    # medians (what Google Benchmark's separate repetitions give) must decide it in well under that.
+    def rounds(P=6, R=30):
+        num, den = [], []
+        for _ in range(P):
+            episode = rng.lognormal(0, 0.25, R)
+            num.append(1.4 * 4e6 * rng.lognormal(0, 0.02) * episode * rng.lognormal(0, 0.04, R))
+            den.append(4e6 * rng.lognormal(0, 0.02) * episode * rng.lognormal(0, 0.04, R))
+        return num, den
+    paired_cover = paired_met = unpaired_met = 0
+    for _ in range(200):
+        num, den = rounds()
+        _, lo, hi = interval([n / d for n, d in zip(num, den)], 1.0, boot, boots=1000)
+        paired_cover += lo < 1.4 < hi
+        paired_met += verdict(lo, hi, 1.3) == "met"
+        _, lo, hi = interval([n[rng.permutation(n.size)] for n in num], den, boot, boots=1000)
+        unpaired_met += verdict(lo, hi, 1.3) == "met"
+    if not 150 <= paired_cover <= 198:
+        failures.append(f"rounds: the interval covers the true ratio in {paired_cover / 2:.0f} % of the trials")
+    if paired_met < 190:
+        failures.append(f"rounds: 1.3 against a true 1.4 is met in only {paired_met / 2:.0f} % of the trials")
+    if unpaired_met > paired_met / 2:
+        failures.append(f"rounds: unpaired medians decide 1.3 in {unpaired_met / 2:.0f} % of the trials: "
+                        "the check cannot tell what pairing gives")
     num = calls(4e6, 0.02, 0.02)
     est, lo, hi = interval(num, 2e6, boot)  # against a constant (the SPARTA figures)
     if not lo < est < hi or abs(est - np.median([np.median(c) for c in num]) / 2e6) > 1e-12:
@@ -115,7 +163,9 @@ def self_check():
     for f in failures:
         print("bench_targets.py --self-check:", f)
     print(f"bench_targets.py --self-check: coverage {cover:.0%} (6 calls), {one:.0%} (one call), undecided "
-          f"{undecided:.0%} (15 % between calls), {'FAILED' if failures else 'passed'}")
+          f"{undecided:.0%} (15 % between calls); rounds of slices: coverage {paired_cover / 2:.0f} %, 1.3 met "
+          f"for a true 1.4 in {paired_met / 2:.0f} % (unpaired medians {unpaired_met / 2:.0f} %), "
+          f"{'FAILED' if failures else 'passed'}")
     sys.exit(1 if failures else 0)
 
 
@@ -123,68 +173,73 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--build", default="build")
     ap.add_argument("--out", default="out/targets")
-    ap.add_argument("--processes", type=int, default=6, help="separate calls of the benchmark binary")
-    ap.add_argument("--repetitions", type=int, default=6, help="interleaved repetitions per call")
+    ap.add_argument("--processes", type=int, default=6, help="separate calls of slices_bench")
+    ap.add_argument("--rounds", type=int, default=30, help="rounds of slices per call")
     ap.add_argument("--ceiling", type=int, default=0, metavar="R",
                     help="also R rounds of one alone / two at once / two threads (0: none)")
     ap.add_argument("--self-check", action="store_true", help="check the interval and verdicts, then exit")
     a = ap.parse_args()
     if a.self_check:
         self_check()
-    dsmc = os.path.join(a.build, "tests", "bench", "dsmc_bench")
-    if not os.path.exists(dsmc):
-        sys.exit(f"bench_targets.py: {dsmc} missing: build with -DCMAKE_BUILD_TYPE=Release (benchmarks on)")
-    if a.repetitions < 3:
-        sys.exit("bench_targets.py: --repetitions must be at least 3")
+    bench = os.path.join(a.build, "tests", "bench")
+    for b in ("slices_bench", "dsmc_bench"):
+        if not os.path.exists(os.path.join(bench, b)):
+            sys.exit(f"bench_targets.py: {bench}/{b} missing: build with -DCMAKE_BUILD_TYPE=Release (benchmarks on)")
+    if a.rounds < 5:
+        sys.exit("bench_targets.py: --rounds must be at least 5")
     if a.processes < 3:
         sys.exit("bench_targets.py: --processes must be at least 3")
     if a.ceiling and a.ceiling < 3:
         sys.exit("bench_targets.py: --ceiling must be 0 or at least 3")
     os.makedirs(a.out, exist_ok=True)
-    out_json = os.path.join(a.out, "targets.json")
     l0, t0 = loadavg(), cpu_times()
     start = datetime.datetime.now(datetime.timezone.utc)
-    s = {}  # benchmark -> one array of repetitions per call
-    for p in range(a.processes):
-        runs = benchmark_iterations(dsmc, FILTER, a.repetitions, os.path.join(a.out, f"targets_{p}.json"))
-        for name, bs in runs.items():
-            s.setdefault(name.removeprefix("BM_Case_"), []).append(np.array([b["items_per_second"] for b in bs]))
-    with open(out_json, "w") as f:
-        json.dump({k: [c.tolist() for c in v] for k, v in s.items()}, f, indent=1)
+    calls = [slices(os.path.join(bench, "slices_bench"), a.rounds, os.path.join(a.out, f"slices_{p}.csv"))
+             for p in range(a.processes)]
     minutes = (datetime.datetime.now(datetime.timezone.utc) - start).total_seconds() / 60
     rng = np.random.default_rng(1)
 
     print(f"Measured {start:%Y-%m-%d %H:%M} UTC ({minutes:.0f} min) on {machine()}; commit {commit()[:12]}; "
-          f"{a.processes} calls of the benchmark binary, {a.repetitions} randomly interleaved repetitions of "
-          f"each benchmark per call; load (1 min) "
+          f"{a.processes} calls of slices_bench, {a.rounds} rounds of quarter-second slices each; load (1 min) "
           f"{l0:.2f} before, {loadavg():.2f} after; CPU time stolen by the hypervisor {stolen_since(t0)}; "
           f"OMP_WAIT_POLICY={BENCH_ENV['OMP_WAIT_POLICY']}.\n")
     print("| benchmark | median 1e6 coll/s | min .. max | medians of the calls |")
     print("|-----------|-------------------|------------|----------------------|")
-    for name in sorted(s):
-        v = np.concatenate(s[name]) / 1e6
-        per_call = " ".join(f"{np.median(c) / 1e6:.2f}" for c in s[name])
-        print(f"| {name} | {np.median(v):.2f} | {v.min():.2f} .. {v.max():.2f} | {per_call} |")
+    for b in BENCHMARKS:
+        v = np.concatenate([c[b] for c in calls]) / 1e6
+        per_call = " ".join(f"{np.median(c[b]) / 1e6:.2f}" for c in calls)
+        print(f"| {b} | {np.median(v):.2f} | {v.min():.2f} .. {v.max():.2f} | {per_call} |")
 
+    def rates(b):
+        return [c[b] for c in calls]
+
+    def ratio(num, den):  # per call, the rounds' ratios (each round's two slices are a second apart)
+        return [c[num] / c[den] for c in calls]
+
+    r1, s1, b1 = "RoughConstant/1000000/1", "SmoothConstant/1000000/1", "Brilliantov/1000000/1"
+    r2, s2, b2 = "RoughConstant/1000000/2", "SmoothConstant/1000000/2", "Brilliantov/1000000/2"
     rows = [
-        ("rough constant, N = 1e6, one thread (1e6/s)", s["RoughConstant/1000000/1"], 1e6, 3.0),
-        ("elastic smooth / SPARTA at N = 1e5 (0.75e6/s)", s["SmoothElastic/100000/1"], 0.75e6, 5.0),
-        ("elastic smooth / SPARTA at N = 1e6 (0.5e6/s)", s["SmoothElastic/1000000/1"], 0.5e6, 5.0),
-        ("smooth / rough, one thread", s["SmoothConstant/1000000/1"], s["RoughConstant/1000000/1"], 1.3),
-        ("smooth / rough, two threads", s["SmoothConstant/1000000/2"], s["RoughConstant/1000000/2"], 1.3),
-        ("brilliantov / rough constant, one thread", s["Brilliantov/1000000/1"], s["RoughConstant/1000000/1"], 0.7),
-        ("brilliantov / rough constant, two threads", s["Brilliantov/1000000/2"], s["RoughConstant/1000000/2"], 0.7),
-        ("two threads / one, rough", s["RoughConstant/1000000/2"], s["RoughConstant/1000000/1"], 1.8),
-        ("two threads / one, smooth", s["SmoothConstant/1000000/2"], s["SmoothConstant/1000000/1"], 1.8),
-        ("two threads / one, brilliantov", s["Brilliantov/1000000/2"], s["Brilliantov/1000000/1"], 1.8),
+        ("rough constant, N = 1e6, one thread (1e6/s)", rates(r1), 1e6, 3.0),
+        ("elastic smooth / SPARTA at N = 1e5 (0.75e6/s)", rates("SmoothElastic/100000/1"), 0.75e6, 5.0),
+        ("elastic smooth / SPARTA at N = 1e6 (0.5e6/s)", rates("SmoothElastic/1000000/1"), 0.5e6, 5.0),
+        ("smooth / rough, one thread", ratio(s1, r1), 1.0, 1.3),
+        ("smooth / rough, two threads", ratio(s2, r2), 1.0, 1.3),
+        ("brilliantov / rough constant, one thread", ratio(b1, r1), 1.0, 0.7),
+        ("brilliantov / rough constant, two threads", ratio(b2, r2), 1.0, 0.7),
+        ("two threads / one, rough", ratio(r2, r1), 1.0, 1.8),
+        ("two threads / one, smooth", ratio(s2, s1), 1.0, 1.8),
+        ("two threads / one, brilliantov", ratio(b2, b1), 1.0, 1.8),
     ]
-    print("\n| target (issue 5) | goal | measured | 90 % interval | verdict |")
-    print("|------------------|------|----------|---------------|---------|")
+    print("\n| target (issue 5) | goal | measured | 90 % interval | verdict | medians of the calls |")
+    print("|------------------|------|----------|---------------|---------|----------------------|")
+    with open(os.path.join(a.out, "targets.json"), "w") as f:
+        json.dump({label: [c.tolist() for c in num] for label, num, _, _ in rows}, f, indent=1)
     for label, num, den, goal in rows:
         est, lo, hi = interval(num, den, rng)
-        print(f"| {label} | >= {goal:g} | {est:.2f} | {lo:.2f} .. {hi:.2f} | {verdict(lo, hi, goal)} |")
+        per_call = " ".join(f"{np.median(c) / den:.2f}" for c in num)
+        print(f"| {label} | >= {goal:g} | {est:.2f} | {lo:.2f} .. {hi:.2f} | {verdict(lo, hi, goal)} | {per_call} |")
     if a.ceiling:
-        ceiling(dsmc, a.ceiling, os.path.join(a.out, "ceiling.json"), rng)
+        ceiling(os.path.join(bench, "dsmc_bench"), a.ceiling, os.path.join(a.out, "ceiling.json"), rng)
 
 
 def ceiling(dsmc, rounds, out_json, rng):
