@@ -448,8 +448,8 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
                 strang.reset();
             }
             while (engine.collisions() < target) {
-                const std::int64_t next = std::min(target, engine.collisions() + chunk);
-                if (engine.run(next, std::numeric_limits<double>::infinity(), tally) == StopReason::stalled) {
+                // About a chunk, by time (Engine::run_about: no halving phases), exactly to the row.
+                if (engine.run_about(chunk, target, tally) == StopReason::stalled) {
                     throw std::runtime_error(
                         "run_replica: no collision can happen: every grain is at rest in the "
                         "centre-of-mass frame (translational temperature 0)");

@@ -52,9 +52,9 @@ template <class Case> Slice make_slice(std::int64_t N, int threads) {
         SliceResult r;
         while (r.seconds < seconds) {
             const auto t0 = Clock::now();
-            gas->run_chunk();
+            const std::int64_t done = gas->run_chunk();
             r.seconds += std::chrono::duration<double>(Clock::now() - t0).count();
-            r.collisions += gas->chunk();
+            r.collisions += done;
             gas->rescale_if_cooled();
         }
         return r;

@@ -108,6 +108,43 @@ TEST(Groups, PausingDoesNotChangeTheTrajectory) {
     EXPECT_TRUE(same_state(a, b));
 }
 
+TEST(Groups, RunAboutStopsAtTimesAndExactlyAtTheTarget) {
+    // Engine::run_about, the stretches of run_replica between rows: about n collisions by a time stop
+    // (one phase per step instead of halving phases), never past the target, which it meets exactly.
+    // Its pauses are times chosen from the run's own rate: the trajectory must be bitwise that of an
+    // unpaused run on one thread, and it must take fewer phases than stretches stopped at counts.
+    const std::int64_t target = 60000, n = 5000;
+    auto a = make_engine<RoughAoS>(20000, make_rough_constant(0.9, 0.3), grouped(29, 0, 8, 1));
+    auto b = make_engine<RoughAoS>(20000, make_rough_constant(0.9, 0.3), grouped(29, 0, 8, 2));
+    auto c = make_engine<RoughAoS>(20000, make_rough_constant(0.9, 0.3), grouped(29, 0, 8, 2));
+    a.run_collisions(target);
+    int stretches = 0, by_time = 0;
+    while (b.collisions() < target) {
+        const std::int64_t before = b.collisions();
+        const StopReason r = b.run_about(n, target, IgnoreCollisions{});
+        ASSERT_LE(b.collisions(), target);
+        ASSERT_GT(b.collisions(), before);
+        by_time += r == StopReason::time;
+        ++stretches;
+        c.run_collisions(std::min(target, c.collisions() + n));
+    }
+    EXPECT_EQ(b.collisions(), target);
+    EXPECT_GT(by_time, 5);   // most stretches ended at a time ...
+    EXPECT_GT(stretches, 7); // ... of about n collisions each (12 expected)
+    EXPECT_LT(stretches, 20);
+    EXPECT_LT(b.counters().phases, c.counters().phases / 2);
+    EXPECT_EQ(b.counters().overshoots, 0);
+    EXPECT_TRUE(same_state(a, b));
+    EXPECT_TRUE(same_state(a, c));
+    // A gas in which no collision can happen (every grain at rest): `stalled`, not an endless loop.
+    auto d = make_engine<RoughAoS>(20000, make_rough_constant(0.9, 0.3), grouped(29, 0, 8, 2));
+    d.run_collisions(5000);
+    for (std::size_t i = 0; i < d.particles(); ++i)
+        d.store().v(i) = Vec3{};
+    d.restart_step();
+    EXPECT_EQ(d.run_about(n, target, IgnoreCollisions{}), StopReason::stalled);
+}
+
 TEST(Groups, PhasesStopExactlyInAHeatingGas) {
     // The phases of a run to a collision target aim at half the remaining collisions, predicted
     // from the current candidate rate and acceptance (engine.hpp, "Stopping in a grouped run"). A gas

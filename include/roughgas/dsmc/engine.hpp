@@ -294,6 +294,32 @@ class Engine {
         return run(collision_target, std::numeric_limits<double>::infinity(), IgnoreCollisions{});
     }
 
+    // About `n` more collisions, never past `collision_target`: a stretch of a run between two of
+    // its pauses (progress reports, checkpoints). Runs to the time at which the current rate
+    // (candidates times acceptance) gives n collisions, or exactly to the target if that comes
+    // first. Why a time: a collision target is met exactly by halving phases (run_groups), about
+    // log2(n / tail_collisions) parallel regions, each with its load imbalance, and a serial tail;
+    // a time stop takes one phase per step. Neither kind of stop changes the trajectory, so only the
+    // pauses move (measured, N = 1e6, rough: two threads 3-9 % faster in the stretches between rows).
+    // Falls back to the count (returning `stalled` where no collision can happen) when there is no
+    // rate yet or the time stop brought no collision.
+    template <class Observer> StopReason run_about(std::int64_t n, std::int64_t collision_target, Observer&& obs) {
+        const std::int64_t c0 = collisions();
+        if (G_ > 1 && collision_target - c0 > n) {
+            const EngineCounters c = counters();
+            const double acceptance = c.candidates > 1000 ? static_cast<double>(c.collisions) /
+                                                                static_cast<double>(c.candidates)
+                                                          : 0.0;
+            const double rate = candidate_rate() * acceptance;
+            if (rate > 0 && std::isfinite(rate)) {
+                const StopReason r = run(collision_target, t_ + static_cast<double>(n) / rate, obs);
+                if (r != StopReason::time || collisions() > c0)
+                    return r;
+            }
+        }
+        return run(std::min(collision_target, c0 + n), std::numeric_limits<double>::infinity(), obs);
+    }
+
     // Ends the current step now: the next run() refreshes the bounds first. Required after the
     // state was changed from outside (e.g. velocities rescaled); exact, since the pending candidate
     // is discarded (memoryless clock).
