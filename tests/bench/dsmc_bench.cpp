@@ -3,7 +3,8 @@
 //
 // Each benchmark builds a homogeneous cooling gas (bench_gas.hpp: Maxwellian start, T = 1, n = 1,
 // unit grains; the ice cases in SI units with speeds ~0.1 m/s), warms it up for half a collision per
-// particle and then times chunks of 1e5 collisions. items_per_second = collisions per second. Counters:
+// particle and then times chunks of about 1e5 collisions (N/2 with groups), run as run_replica runs
+// between two output rows (Engine::run_about). items_per_second = collisions per second. Counters:
 // acceptance = collisions/candidates of the majorant, bytes = bytes per particle of the store,
 // bytes_total = with the engine's index array and scratch. Groups: auto_groups(N) unless given
 // (what roughgas run uses); wall-clock time where threads vary (UseRealTime).

@@ -63,7 +63,8 @@
 // overshoot if the collision rate doubles within it (counted in `overshoots`; seen only where the
 // translational temperature grows some 70-fold within the first collisions per grain: T_rot =
 // 400 T_tr, beta = 1, a first target of one collision per grain; tests/dsmc/groups_test.cpp
-// checks a tenfold growth).
+// checks a tenfold growth). Stretches that need no exact count (run_replica's pauses between
+// rows) stop at a time instead (run_about): one phase per step.
 //
 // Pauses. run() stops after a given collision count or before a given time, keeping the pending
 // candidate: stopping and resuming never changes the trajectory, so the output schedule does not
