@@ -310,11 +310,7 @@ class Engine {
     StopReason run_about(std::int64_t n, std::int64_t collision_target, Observer&& obs) {
         const std::int64_t c0 = collisions();
         if (G_ > 1 && collision_target - c0 > n) {
-            const EngineCounters c = counters();
-            const double acceptance =
-                c.candidates > 1000 ? static_cast<double>(c.collisions) / static_cast<double>(c.candidates)
-                                    : 0.0;
-            const double rate = candidate_rate() * acceptance;
+            const double rate = candidate_rate() * measured_acceptance(); // NaN before 1000 candidates
             if (rate > 0 && std::isfinite(rate)) {
                 const StopReason r = run(collision_target, t_ + static_cast<double>(n) / rate, obs);
                 if (r != StopReason::time || collisions() - c0 >= n / 4)
@@ -690,6 +686,14 @@ class Engine {
         return std::isfinite(t_stop) ? StopReason::time : StopReason::stalled;
     }
 
+    // Collisions per candidate over the run so far (the phases' and run_about's rate is the
+    // candidate rate times this); NaN before 1000 candidates, too few to tell.
+    double measured_acceptance() const {
+        const EngineCounters c = counters();
+        return c.candidates > 1000 ? static_cast<double>(c.collisions) / static_cast<double>(c.candidates)
+                                   : std::numeric_limits<double>::quiet_NaN();
+    }
+
     // Several groups (see "Groups" above). `obs_of(g)` is the observer of group g.
     template <class ObsOf>
     StopReason run_groups(std::int64_t collision_target, double t_stop, int threads, ObsOf&& obs_of) {
@@ -714,11 +718,8 @@ class Engine {
                 // A parallel phase to a common time: about half the remaining collisions.
                 double t_phase = t_limit;
                 if (counting) {
-                    const EngineCounters c = counters();
-                    const double acceptance =
-                        c.candidates > 1000 ? std::max(0.01, static_cast<double>(c.collisions) /
-                                                                 static_cast<double>(c.candidates))
-                                            : 1.0;
+                    const double measured = measured_acceptance();
+                    const double acceptance = std::isnan(measured) ? 1.0 : std::max(0.01, measured);
                     t_phase = std::min(t_limit, std::max(t_, first) + 0.5 * static_cast<double>(remaining) /
                                                                           (candidate_rate() * acceptance));
                 }
