@@ -181,15 +181,20 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
         usf_species.push_back(
             {static_cast<double>(b.count) / static_cast<double>(N), b.grain.mass, b.grain.radius});
     std::vector<Vec3> spin; // shear: omega - Omega, so that T_rot is about the mean spin
+    // On the replica's threads (the engine's): a row streams the whole store from memory twice,
+    // which takes as long as the collisions between two rows where rows are dense (README, "Output
+    // rows" in "Both cores for one run").
+    const int threads = std::max(1, spec.threads);
     const auto moments_now = [&](Vec3& Omega) {
         if (!spec.shear)
-            return compute_moments(engine.store().velocities(), engine.store().angular_velocities(), slices);
+            return compute_moments(engine.store().velocities(), engine.store().angular_velocities(), slices,
+                                   threads);
         const Vec3Column w = engine.store().angular_velocities();
         Omega = mean_spin(w, slices);
         spin.resize(N);
         for (std::size_t i = 0; i < N; ++i)
             spin[i] = w[i] - Omega;
-        return compute_moments(engine.store().velocities(), column_of(spin.data(), 0), slices);
+        return compute_moments(engine.store().velocities(), column_of(spin.data(), 0), slices, threads);
     };
 
     const auto emit = [&] {

@@ -117,6 +117,76 @@ TEST(Moments, MaxwellianMixtureOfUnequalGrainsHasZeroCumulantsOverAll) {
         EXPECT_NEAR(g.A_cw, 0.0, 0.03);
 }
 
+// A two-species gas of 30001 + 20000 grains (several chunks, the last ones partial), far from
+// Maxwellian and drifting by 1e3 thermal speeds, against the definitions summed in long double.
+struct DriftingMixture {
+    std::vector<Vec3> v, w;
+    std::vector<SpeciesSlice> sp{{0, 30001, 1.0, 0.1}, {30001, 20000, 3.0, 0.4}};
+    DriftingMixture() {
+        Rng rng = make_stream(33, Stream::test, 0, 0);
+        boost::random::normal_distribution<double> normal;
+        const Vec3 drift{1e3, -2e3, 5e2};
+        for (const SpeciesSlice& s : sp)
+            for (std::size_t i = 0; i < s.count; ++i) {
+                const double e = std::exp(0.5 * normal(rng)); // a spread of speeds: a20 > 0
+                v.push_back(drift + Vec3{e * normal(rng), e * normal(rng), e * normal(rng)});
+                w.push_back({normal(rng) + 0.5 * v.back().y, normal(rng), e * normal(rng)});
+            }
+    }
+};
+
+TEST(Moments, ChunkedSumsMatchTheDefinitionsInLongDouble) {
+    const DriftingMixture g;
+    const Moments m = compute_moments(col(g.v), col(g.w), g.sp);
+    long double P[3] = {0, 0, 0}, M = 0;
+    for (const SpeciesSlice& s : g.sp)
+        for (std::size_t i = s.offset; i < s.offset + s.count; ++i) {
+            P[0] += s.mass * static_cast<long double>(g.v[i].x);
+            P[1] += s.mass * static_cast<long double>(g.v[i].y);
+            P[2] += s.mass * static_cast<long double>(g.v[i].z);
+            M += s.mass;
+        }
+    const long double u[3] = {P[0] / M, P[1] / M, P[2] / M};
+    EXPECT_NEAR(m.mean_velocity.x, static_cast<double>(u[0]), 1e-12 * 1e3);
+    for (std::size_t k = 0; k < g.sp.size(); ++k) {
+        const SpeciesSlice& s = g.sp[k];
+        long double c2 = 0, w2 = 0, c4 = 0;
+        for (std::size_t i = s.offset; i < s.offset + s.count; ++i) {
+            const long double cx = g.v[i].x - u[0], cy = g.v[i].y - u[1], cz = g.v[i].z - u[2];
+            const long double cc = cx * cx + cy * cy + cz * cz;
+            c2 += cc;
+            c4 += cc * cc;
+            w2 += static_cast<long double>(norm2(g.w[i]));
+        }
+        const long double n = s.count, T = s.mass * c2 / (3 * n), Tr = s.moment_of_inertia * w2 / (3 * n);
+        const long double a20 = (4.0L / 15) * (c4 / n) * (s.mass / (2 * T)) * (s.mass / (2 * T)) - 1;
+        // The drift is 1e3 thermal speeds, so u carries a rounding error of 1e3 eps; the
+        // temperature about it is still correct to ~1e-13 relative.
+        EXPECT_NEAR(m.species[k].T_tr / static_cast<double>(T), 1.0, 1e-11) << k;
+        EXPECT_NEAR(m.species[k].T_rot / static_cast<double>(Tr), 1.0, 1e-13) << k;
+        EXPECT_NEAR(m.species[k].a20, static_cast<double>(a20), 1e-10) << k;
+        EXPECT_GT(m.species[k].a20, 0.1) << k; // the spread of speeds is seen
+    }
+}
+
+TEST(Moments, SameBitsOnAnyThreadCount) {
+    // The chunks and the order their sums are added in depend on the species' ranges only.
+    const DriftingMixture g;
+    const Moments a = compute_moments(col(g.v), col(g.w), g.sp, 1);
+    for (int threads : {2, 3, 7}) {
+        const Moments b = compute_moments(col(g.v), col(g.w), g.sp, threads);
+        EXPECT_EQ(a.mean_velocity.x, b.mean_velocity.x);
+        for (std::size_t k = 0; k < 2; ++k) {
+            EXPECT_EQ(a.species[k].T_tr, b.species[k].T_tr);
+            EXPECT_EQ(a.species[k].T_rot, b.species[k].T_rot);
+            EXPECT_EQ(a.species[k].a20, b.species[k].a20);
+            EXPECT_EQ(a.species[k].A_cw, b.species[k].A_cw);
+        }
+        EXPECT_EQ(a.all.T_tr, b.all.T_tr);
+        EXPECT_EQ(a.all.a11, b.all.a11);
+    }
+}
+
 TEST(Moments, NoRotationGivesNaNForRotationalCumulants) {
     std::vector<Vec3> v, w;
     shell(v, w, 1.0, 0.0, {});

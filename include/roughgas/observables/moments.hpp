@@ -52,6 +52,9 @@ struct Moments {
 // moment_of_inertia: the mean spin); 0 when the weights sum to 0.
 Vec3 weighted_mean(Vec3Column x, std::span<const SpeciesSlice> species, double SpeciesSlice::*weight);
 
-Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesSlice> species);
+// Two passes over the grains, in fixed chunks: with `threads` > 1 the chunks are summed on that many
+// OpenMP threads; the result does not depend on it (bitwise).
+Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesSlice> species,
+                        int threads = 1);
 
 } // namespace roughgas
