@@ -84,8 +84,9 @@ void check_output_dir(const fs::path& dir, bool force, bool histograms, bool she
         if ((file == histograms_file && !histograms) || (file == steady_file && !shear))
             continue;
         if (fs::exists(dir / file))
-            throw InputError(dir.string(), "--out",
-                             fmt::format("--out {}: {} exists (use --force to overwrite)", dir.string(), file));
+            throw InputError(
+                dir.string(), "--out",
+                fmt::format("--out {}: {} exists (use --force to overwrite)", dir.string(), file));
     }
 }
 
@@ -143,7 +144,7 @@ RunSetup resume_run(const RunOptions& o, const CLI::App& app) {
 
 int run_run(const RunOptions& o, const CLI::App& app) {
     // First: the signals are blocked in every thread started from here on (the OpenMP pool too).
-    const StopSignals signals;
+    const StopSignals signals("run", "stopping at the next step, writing a checkpoint and the CSV so far");
     RunSetup setup = o.resume.empty() ? new_run(o, app) : resume_run(o, app);
     const CaseConfig& cfg = setup.cfg;
     const fs::path& dir = setup.dir;
@@ -167,7 +168,8 @@ int run_run(const RunOptions& o, const CLI::App& app) {
                 const double g = std::sqrt(3.0 * (cfg.species[a].temperature / cfg.species[a].mass +
                                                   cfg.species[b].temperature / cfg.species[b].mass));
                 const double speeds[] = {g, 3.0 * g};
-                warned = warn_if_not_quasistatic(cfg, a, b, speeds, "initial rms impact speed and 3x it", std::cerr);
+                warned = warn_if_not_quasistatic(cfg, a, b, speeds, "initial rms impact speed and 3x it",
+                                                 std::cerr);
             }
     }
     const int K = spec.replicas;
@@ -200,9 +202,10 @@ int run_run(const RunOptions& o, const CLI::App& app) {
     if (!spec.histogram_times.empty()) {
         htable.emplace(spec);
         CsvProvenance hprov = prov;
-        hprov.notes = {"one row per bin at every run.histogram_every time; reduced variables per species: c* = "
-                       "c sqrt(m/(2 T_tr)), w* = omega sqrt(J/(2 T_rot)) (observables/histograms.hpp)",
-                       prov.notes[1]};
+        hprov.notes = {
+            "one row per bin at every run.histogram_every time; reduced variables per species: c* = "
+            "c sqrt(m/(2 T_tr)), w* = omega sqrt(J/(2 T_rot)) (observables/histograms.hpp)",
+            prov.notes[1]};
         hprov.units = htable->units();
         hcsv.emplace(htable->names(), hprov);
     }
@@ -463,14 +466,16 @@ int run_run(const RunOptions& o, const CLI::App& app) {
 
 Subcommand add_run_command(CLI::App& parent) {
     auto o = std::make_shared<RunOptions>();
-    CLI::App* app = parent.add_subcommand("run", "run a DSMC simulation of the homogeneous cooling state or of "
-                                                 "uniform shear flow, writing DIR/moments.csv");
+    CLI::App* app =
+        parent.add_subcommand("run", "run a DSMC simulation of the homogeneous cooling state or of "
+                                     "uniform shear flow, writing DIR/moments.csv");
     CLI::Option* case_opt = app->add_option("CASE", o->case_file, "case file (TOML)");
     CLI::Option* out = app->add_option("--out", o->out, "output directory (moments.csv)");
     CLI::Option* set = add_set_option(*app, o->sets);
     CLI::Option* seed = app->add_option("--seed", o->seed, "random seed (overrides run.seed)");
-    app->add_option("--threads", o->threads,
-                    "threads for the replicas and within each replica (default: all; results do not depend on it)")
+    app->add_option(
+           "--threads", o->threads,
+           "threads for the replicas and within each replica (default: all; results do not depend on it)")
         ->check(CLI::PositiveNumber);
     app->add_flag("--quiet", o->quiet, "no progress output");
     CLI::Option* force = app->add_flag(

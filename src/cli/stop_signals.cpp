@@ -7,10 +7,12 @@
 #include <cstdlib>
 #include <iostream>
 #include <system_error>
+#include <utility>
 
 namespace roughgas::cli {
 
-StopSignals::StopSignals() {
+StopSignals::StopSignals(std::string command, std::string on_first)
+    : command_(std::move(command)), on_first_(std::move(on_first)) {
     sigemptyset(&set_);
     sigaddset(&set_, SIGINT);
     sigaddset(&set_, SIGTERM);
@@ -48,9 +50,8 @@ void StopSignals::wait() {
             return;
         int none = 0;
         if (signal_.compare_exchange_strong(none, sig, std::memory_order_acq_rel)) {
-            std::cerr << "\nroughgas run: " << name()
-                      << ": stopping at the next step, writing a checkpoint and the CSV so far (send it "
-                         "again to end at once)\n";
+            std::cerr << "\nroughgas " << command_ << ": " << name() << ": " << on_first_
+                      << " (send it again to end at once)\n";
             continue;
         }
         // The second signal: its default action, which ends the process as killed by it. Raised on

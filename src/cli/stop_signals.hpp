@@ -1,7 +1,8 @@
 #pragma once
-// SIGINT and SIGTERM during `roughgas run` (README "Checkpoints and restart"): the first asks the
-// run to stop at its next boundary (a checkpoint, the CSV so far, exit 128 + the signal's number),
-// a second one ends the process at once (the signal's default action).
+// SIGINT and SIGTERM during `roughgas run` (README "Checkpoints and restart") and `roughgas sweep`:
+// the first asks the command to stop at its next boundary (run: a checkpoint and the CSV so far;
+// sweep: the finished points' files; exit 128 + the signal's number), a second one ends the process
+// at once (the signal's default action).
 //
 // No signal handler and no global: while a StopSignals exists both signals are blocked in the
 // thread that made it and in every thread started after (threads inherit the mask: make it before
@@ -17,7 +18,9 @@ namespace roughgas::cli {
 
 class StopSignals {
   public:
-    StopSignals();
+    // `on_first`: what the command says on stderr when the first signal comes, after
+    // "roughgas COMMAND: SIGNAME: ", e.g. "roughgas run: SIGINT: stopping at the next step, ...".
+    StopSignals(std::string command, std::string on_first);
     // Restores the mask: a signal that came while it was being destroyed then takes its default action.
     ~StopSignals();
     StopSignals(const StopSignals&) = delete;
@@ -29,6 +32,7 @@ class StopSignals {
 
   private:
     void wait();
+    std::string command_, on_first_;
     sigset_t set_{}, old_{};
     std::atomic<int> signal_{0};
     std::atomic<bool> closing_{false};

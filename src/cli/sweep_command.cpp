@@ -8,8 +8,14 @@
 // The summary is the steady state of the point (observables/steady_state.hpp, io/steady_csv.hpp):
 // for shear runs the steady window of T and P*_ij; for cooling runs the scaled homogeneous cooling
 // state (theta, a20, a02 stop drifting while T falls), averaged with batch-means errors.
+//
+// SIGINT/SIGTERM (stop_signals.hpp): the running points stop at their next step boundary and are
+// dropped, the points not started are skipped; the finished points keep DIR/point_K/moments.csv,
+// no sweep.csv is written (a summary with points missing would read as the whole sweep), and the
+// exit status is 128 + the signal's number. A sweep has no checkpoints: run it again to redo it.
 #include "commands.hpp"
 #include "output_dir_lock.hpp"
+#include "stop_signals.hpp"
 
 #include "roughgas/dsmc/run.hpp"
 #include "roughgas/io/case_file.hpp"
@@ -22,12 +28,14 @@
 #include <fmt/format.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <charconv>
 #include <exception>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <mutex>
+#include <optional>
 
 namespace roughgas::cli {
 namespace {
@@ -88,17 +96,26 @@ struct PointResult {
     SteadyResult steady;
 };
 
-PointResult run_point(const CaseConfig& cfg) {
+// Empty when `signals` asked for a stop before the point ended (its state is dropped).
+std::optional<PointResult> run_point(const CaseConfig& cfg, const StopSignals& signals) {
     RunSpec spec = run_spec_from_case(cfg);
     spec.threads = 1;
     MomentsTable table(spec);
     const auto tables = build_run_tables(spec);
+    // No checkpoints: only the stop is polled at the replica's boundaries (the state it hands over
+    // on a stop is not kept).
+    ReplicaCheckpoints stop;
+    stop.save = [](std::string) {};
+    stop.stop = [&] { return signals.requested(); };
     std::vector<std::vector<std::vector<double>>> rows(static_cast<std::size_t>(spec.replicas));
     for (int r = 0; r < spec.replicas; ++r) {
-        run_replica(spec, *tables, r, [&](std::span<const double> row) {
+        const auto sink = [&](std::span<const double> row) {
             table.check(row); // NonFiniteValue: stop, naming the column and t
             rows[static_cast<std::size_t>(r)].emplace_back(row.begin(), row.end());
-        });
+        };
+        if (signals.requested() ||
+            run_replica(spec, *tables, r, sink, {}, nullptr, {}, &stop) == ReplicaEnd::stopped)
+            return std::nullopt;
     }
     PointResult p{table.names(), table.units(), {}, {}};
     for (std::size_t k = 0; k < rows[0].size(); ++k) {
@@ -112,6 +129,9 @@ PointResult run_point(const CaseConfig& cfg) {
 }
 
 int run_sweep(const SweepOptions& o) {
+    // First: the signals are blocked in every thread started from here on (the OpenMP pool too).
+    const StopSignals signals("sweep", "stopping every point at its next step; the finished points keep "
+                                       "their point_K/moments.csv, no sweep.csv is written");
     const Sweep s = parse_sweep(o);
     const double from = parse_number(o, s.from), to = parse_number(o, s.to);
     // Every point is validated (exit 2) before any work.
@@ -142,6 +162,7 @@ int run_sweep(const SweepOptions& o) {
     const int threads =
         std::min<int>(o.threads > 0 ? o.threads : omp_get_max_threads(), static_cast<int>(s.count));
     std::vector<PointResult> results(values.size());
+    std::vector<char> done(values.size(), 0);
     std::exception_ptr error;
     std::mutex mutex;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
@@ -152,7 +173,12 @@ int run_sweep(const SweepOptions& o) {
                 if (error)
                     continue;
             }
-            PointResult p = run_point(cases[static_cast<std::size_t>(k)]);
+            if (signals.requested())
+                continue;
+            std::optional<PointResult> point = run_point(cases[static_cast<std::size_t>(k)], signals);
+            if (!point)
+                continue;
+            PointResult& p = *point;
             CsvProvenance prov;
             prov.case_file = o.case_file;
             prov.overrides = point_sets[static_cast<std::size_t>(k)];
@@ -173,6 +199,7 @@ int run_sweep(const SweepOptions& o) {
                                          values[static_cast<std::size_t>(k)],
                                          p.steady.reached ? "" : " (steady state NOT reached)");
             results[static_cast<std::size_t>(k)] = std::move(p);
+            done[static_cast<std::size_t>(k)] = 1;
         } catch (...) {
             std::lock_guard lock(mutex);
             if (!error)
@@ -181,6 +208,18 @@ int run_sweep(const SweepOptions& o) {
     }
     if (error)
         std::rethrow_exception(error);
+    if (signals.requested()) {
+        std::string finished;
+        for (std::size_t k = 0; k < done.size(); ++k)
+            if (done[k])
+                finished += fmt::format("{}{}", finished.empty() ? "" : ", ", k);
+        std::cerr << fmt::format(
+            "roughgas sweep: stopped by {}: {} of {} points finished{}{}; no {} written\n", signals.name(),
+            std::count(done.begin(), done.end(), 1), s.count,
+            finished.empty() ? "" : " (point_K/moments.csv for K = ", finished.empty() ? "" : finished + ")",
+            (dir / "sweep.csv").string());
+        return 128 + signals.signal();
+    }
 
     std::vector<std::string> columns = {s.key};
     const std::vector<std::string> steady_cols = steady_csv_columns(results[0].steady);

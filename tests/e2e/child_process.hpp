@@ -2,6 +2,8 @@
 // The real roughgas binary as a child process that a test can signal and kill: started with
 // posix_spawn, not through a shell (a shell's background job would have SIGINT ignored), with
 // SIGINT and SIGTERM at their defaults and unblocked whatever the test runner set.
+#include "../io/io_test_support.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cerrno>
@@ -104,6 +106,29 @@ bool wait_until(ChildProcess& child, Ready&& ready, std::chrono::seconds limit =
         nanosleep(&ms, nullptr);
     }
     return false;
+}
+
+// `roughgas args...` (stdout and stderr into files in `dir`) signalled with `sig` once `ready()`
+// holds; with `twice`, signalled again once it has said it is stopping. Its status and stderr.
+struct Stopped {
+    int status = -1;
+    std::string err;
+};
+template <class Ready>
+Stopped start_and_stop(const std::vector<std::string>& args, int sig, Ready&& ready, const ScratchDir& dir,
+                       bool twice = false) {
+    ChildProcess child(args, dir / "child_out.txt", dir / "child_err.txt");
+    EXPECT_TRUE(wait_until(child, ready)) << read_file(dir / "child_err.txt");
+    child.signal(sig);
+    if (twice) { // once the first is taken (the message is out), a second one ends it at once
+        wait_until(child,
+                   [&] { return read_file(dir / "child_err.txt").find("stopping") != std::string::npos; });
+        child.signal(sig);
+    }
+    Stopped s;
+    s.status = child.wait();
+    s.err = read_file(dir / "child_err.txt");
+    return s;
 }
 
 } // namespace roughgas::test

@@ -163,31 +163,6 @@ std::size_t valid_rows(const fs::path& csv) {
     return rows;
 }
 
-// A long run (3 replicas on 2 threads, 150 collisions per particle) stopped by `sig` once
-// `ready()` holds; returns its status and stderr.
-struct Stopped {
-    int status = -1;
-    std::string err;
-};
-template <class Ready>
-Stopped start_and_stop(const std::vector<std::string>& args, int sig, Ready&& ready,
-                       const test::ScratchDir& dir, bool twice = false) {
-    test::ChildProcess child(args, dir / "child_out.txt", dir / "child_err.txt");
-    EXPECT_TRUE(test::wait_until(child, ready)) << test::read_file(dir / "child_err.txt");
-    child.signal(sig);
-    if (twice) { // once the first is taken (the message is out), a second one ends it at once
-        test::wait_until(child, [&] {
-            return test::read_file(dir / "child_err.txt").find("stopping at the next step") !=
-                   std::string::npos;
-        });
-        child.signal(sig);
-    }
-    Stopped s;
-    s.status = child.wait();
-    s.err = test::read_file(dir / "child_err.txt");
-    return s;
-}
-
 TEST(Signals, SigtermAndSigintCheckpointWriteTheCsvSoFarAndExitNonZero) {
     const test::ScratchDir dir;
     const fs::path f = dir.write("case.toml", rough_cooling(10000, 150.0));
@@ -205,7 +180,7 @@ TEST(Signals, SigtermAndSigintCheckpointWriteTheCsvSoFarAndExitNonZero) {
       // may start its replica late, and a replica the signal finds not yet started is skipped
       // (it starts afresh on resume, as replica 2 does).
         const fs::path out = dir / "sigterm";
-        const Stopped s = start_and_stop(
+        const test::Stopped s = test::start_and_stop(
             run_args(out, true), SIGTERM,
             [&] {
                 return fs::exists(out / "checkpoint" / "replica_0.bin") &&
@@ -226,7 +201,7 @@ TEST(Signals, SigtermAndSigintCheckpointWriteTheCsvSoFarAndExitNonZero) {
     }
     { // SIGINT without --checkpoint-every: a checkpoint all the same, and the complete rows
         const fs::path out = dir / "sigint";
-        const Stopped s = start_and_stop(
+        const test::Stopped s = test::start_and_stop(
             run_args(out, false), SIGINT, [&] { return fs::exists(out / "moments.csv"); }, dir);
         ASSERT_TRUE(WIFEXITED(s.status)) << s.err;
         EXPECT_EQ(WEXITSTATUS(s.status), 130) << s.err;
@@ -241,7 +216,7 @@ TEST(Signals, SigtermAndSigintCheckpointWriteTheCsvSoFarAndExitNonZero) {
     }
     { // SIGTERM twice: the second ends the process at once (or it had already stopped): resumable
         const fs::path out = dir / "twice";
-        const Stopped s = start_and_stop(
+        const test::Stopped s = test::start_and_stop(
             run_args(out, true), SIGTERM, [&] { return any_replica_file(out); }, dir, true);
         EXPECT_TRUE((WIFSIGNALED(s.status) && WTERMSIG(s.status) == SIGTERM) ||
                     (WIFEXITED(s.status) && WEXITSTATUS(s.status) == 143))
