@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Work-precision diagram of the DSMC (issue 5 item 4): wall time against error.
+"""Work-precision diagram of the DSMC: wall time against error.
 
     scripts/python3 scripts/bench_accuracy.py [--build build] [--out out/accuracy] [--quick]
                                               [--panels maxwell,hcs,restitution,shear]
@@ -11,7 +11,7 @@ of a curve are independent (the thread and group curves share them: same seed, s
 but for the groups). One panel per reference:
 
 maxwell      the inelastic rough Maxwell model (run.kernel = "maxwell"), whose T_tr(t), T_rot(t) obey
-             closed linear ODEs exactly (README "The Maxwell kernel"; the theory columns): a rough
+             closed linear ODEs exactly (docs/model.md, the Maxwell kernel; the theory columns): a rough
              gas (alpha = 0.8, beta = 0.4, theta(0) = 0.1) over 8 collisions per particle, 4
              replicas; error = rms over the rows of T_tr/T_tr_theory - 1 and T_rot/T_rot_theory - 1
              of the replica mean. Curves: N, threads 1 and 2, groups automatic against 1.
@@ -242,7 +242,7 @@ def crossover(rows, ref, window):
 
 
 def markdown(rows):
-    """The points as the README's tables: one per panel, a row per curve, a column per N; each cell
+    """The points as docs/accuracy.md's tables: one per panel, a row per curve, a column per N; each cell
     "rms error (wall s)"."""
     out = []
     for panel in dict.fromkeys(r["panel"] for r in rows):

@@ -42,8 +42,8 @@ def stolen_since(t0):
 
 def machine():
     """The CPU as lscpu names it, with its family and model numbers: a VM's model name ("AMD EPYC") can
-    stay the same while the CPU under it changes (sessions 8 and 9 ran on two CPUs of different speed,
-    both "AMD EPYC" with the same caches)."""
+    stay the same while the CPU under it changes (two CPUs of different speed have been seen under
+    the same "AMD EPYC", with the same caches)."""
     model, family, number, l2, l3 = "?", "?", "?", "?", "?"
     try:
         out = subprocess.run(["lscpu"], capture_output=True, text=True).stdout

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The performance tables of the README (issue 5), regenerated from the benchmark binaries.
+"""The performance tables of docs/performance.md, regenerated from the benchmark binaries.
 
     scripts/python3 scripts/bench_table.py [--build build] [--out out/bench] [--repetitions 3] [--quick]
 
@@ -14,7 +14,7 @@ Runs (Release build with benchmarks, ROUGHGAS_BUILD_BENCHMARKS=ON):
   3. tests/bench/restitution_bench BM_*TableBuild: building the restitution tables;
   4. `roughgas run` of a constant rough case for each N under /usr/bin/time: peak memory (max RSS);
   5. the ceiling of two threads: two one-thread benchmark processes at once (nothing shared but the
-     machine), against one alone, interleaved; and the issue's targets computed from the tables.
+     machine), against one alone, interleaved; and the speed targets computed from the tables.
 Repetitions are randomly interleaved (Google Benchmark --benchmark_enable_random_interleaving), the
 median is reported, and every number comes with the load average (/proc/loadavg, 1 min) read
 before and after its benchmark: numbers taken on a loaded machine say so. Writes markdown to
@@ -164,13 +164,13 @@ def main():
         w.writeheader()
         w.writerows(rows)
 
-    # The issue's targets, from the table above (N = 1e6, or the largest N of a --quick run).
+    # The speed targets, from the table above (N = 1e6, or the largest N of a --quick run).
     n_t = 1000000 if 1000000 in sizes else sizes[-1]
     rate = {(r["kernel"], r["N"]): r for r in rows}
     r1 = lambda k: rate[(k, n_t)]["coll_per_s_1T"]  # noqa: E731
     r2 = lambda k: rate[(k, n_t)]["coll_per_s_2T"]  # noqa: E731
     elastic_100k = rate[("SmoothElastic", 100000)]["coll_per_s_1T"]
-    print(f"\nTargets of issue 5, from the table (N = {n_t:.0e}):\n")
+    print(f"\nSpeed targets, from the table (N = {n_t:.0e}):\n")
     print("| target | measured |")
     print("|--------|----------|")
     print(f"| rough constant, one thread >= 3e6/s | {fmt_rate(r1('RoughConstant'))}e6/s |")

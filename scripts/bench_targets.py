@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The speed targets of issue 5, each with a confidence interval.
+"""The speed targets, each with a confidence interval.
 
     scripts/python3 scripts/bench_targets.py [--build build] [--out out/targets] [--processes 6] [--rounds 30]
     scripts/python3 scripts/bench_targets.py --ceiling 6     (also: what two threads can reach here)
@@ -7,18 +7,18 @@
 
 The benchmarks the targets name (the gases of tests/bench/bench_gas.hpp, wall-clock collisions per
 second): constant rough, constant smooth and cached brilliantov at N = 1e6 on 1 and 2 threads, and
-elastic smooth at N = 1e5 and 1e6 on one thread (against SPARTA's figures on this machine, from the
-issue). They run in --processes separate calls of tests/bench/slices_bench, which builds every gas once
-and then runs --rounds rounds, each gas for a slice of a quarter of a second per round.
+elastic smooth at N = 1e5 and 1e6 on one thread (against SPARTA's figures: 0.75e6 and 0.5e6
+collisions per CPU-second). They run in --processes separate calls of tests/bench/slices_bench, which
+builds every gas once and then runs --rounds rounds, each gas for a slice of a quarter of a second per round.
 
-Why slices (since session 13): the project's VMs have episodes of seconds to minutes in which every
-kernel runs up to 25-40 % slower (session 12: constant rough 3.9-7.1e6/s among the 2-second repetitions
-of one Google Benchmark call). Repetitions of Google Benchmark, even randomly interleaved, put the two
-sides of a ratio into different episodes, and the intervals stayed at +-8-15 % for eight sessions. The
-slices of one round are a second apart: each round's ratio of two kernels cancels the episode, and its
-spread (5 % for smooth/rough, session 13) is that of the kernels' own slices. Separate calls, because one
-process is not a sample of the code's speed: its memory placement (huge pages, cache sets) is fixed for
-its life (session 13: smooth/rough 1.28-1.32 over four calls, each +-1-2 %).
+Why slices: shared VMs have episodes of seconds to minutes in which every kernel runs up to 25-40 %
+slower (measured: constant rough 3.9-7.1e6/s among the 2-second repetitions of one Google Benchmark
+call). Repetitions of Google Benchmark, even randomly interleaved, put the two sides of a ratio into
+different episodes, and their intervals stay at +-8-15 %. The slices of one round are a second apart:
+each round's ratio of two kernels cancels the episode, and its spread (measured: 5 % for smooth/rough)
+is that of the kernels' own slices. Separate calls, because one process is not a sample of the code's
+speed: its memory placement (huge pages, cache sets) is fixed for its life (measured: smooth/rough
+1.28-1.32 over four calls, each +-1-2 %).
 
 Every ratio is the median over the calls of each call's median over the rounds of the round's ratio, with
 a 90 % two-level bootstrap interval (4000 times: the calls resampled, then the rounds within each
@@ -230,8 +230,8 @@ def main():
         ("two threads / one, smooth", ratio(s2, s1), 1.0, 1.8),
         ("two threads / one, brilliantov", ratio(b2, b1), 1.0, 1.8),
     ]
-    print("\n| target (issue 5) | goal | measured | 90 % interval | verdict | medians of the calls |")
-    print("|------------------|------|----------|---------------|---------|----------------------|")
+    print("\n| target | goal | measured | 90 % interval | verdict | medians of the calls |")
+    print("|--------|------|----------|---------------|---------|----------------------|")
     with open(os.path.join(a.out, "targets.json"), "w") as f:
         json.dump({label: [c.tolist() for c in num] for label, num, _, _ in rows}, f, indent=1)
     for label, num, den, goal in rows:

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""Least-squares fit of the dissipative constant A (seed 000 eq. 23) to the measured ice law that
-seed 000 Fig. 1 draws dashed: eps(v) = (v/v_c)^-0.234, v_c = 0.0077 cm/s (Bridges et al. 1984),
-over 0.05-5 cm/s.
+"""Least-squares fit of the dissipative constant A (Brilliantov et al. (1996) eq. 23) to the
+measured ice law that the paper's Fig. 1 draws dashed: eps(v) = (v/v_c)^-0.234, v_c = 0.0077 cm/s
+(Bridges et al. 1984), over 0.05-5 cm/s.
 
 usage: scripts/python3 scripts/fit_ice_dissipation.py [CASE.toml] [--write | --check] [--roughgas PATH]
   default CASE: cases/ice.toml. Prints the fitted A and the residuals.
@@ -9,7 +9,7 @@ usage: scripts/python3 scripts/fit_ice_dissipation.py [CASE.toml] [--write | --c
   --check  exits 1 unless the case's dissipation equals the fit to 1e-3 relative (used by ctest).
 
 Method: eps^N depends on g_N only through w = g_N rho^2 tau^5 with tau = (3/2) A (eq. 24) or A (eq. 25)
-(physics.md §6), so w = g_N c_ref (A/A_ref)^5. One `roughgas restitution` run at the case's A gives
+(docs/model.md §6), so w = g_N c_ref (A/A_ref)^5. One `roughgas restitution` run at the case's A gives
 the master curve eps^N(w) (column w of normal.csv); the fit is then a 1-D minimisation over ln A
 of sum_v (eps^N(v c(A)) - eps_Bridges(v))^2 on 60 log-spaced speeds, by golden-section search after
 a coarse scan.

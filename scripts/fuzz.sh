@@ -3,7 +3,7 @@
 # 60) with libFuzzer, AddressSanitizer and UndefinedBehaviorSanitizer (clang; CMakePresets.json
 # "fuzz", build dir build-fuzz/). The seed corpus is cases/*.toml, copied to a scratch directory
 # (the inputs libFuzzer adds go there, never into cases/). Exit 0: no crash, no sanitizer report.
-# Prints the corpus size and the number of runs (the README's Reliability section quotes them).
+# Prints the corpus size and the number of runs (docs/reliability.md quotes them).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 seconds="${1:-60}"

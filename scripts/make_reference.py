@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Reference data with their own error bars (issue 5 item 4), and the check of the solver against them.
+"""Reference data with their own error bars, and the check of the solver against them.
 
     scripts/python3 scripts/make_reference.py hcs [--build build] [--threads 1]   # ~2 min CPU
     scripts/python3 scripts/make_reference.py usf [--build build] [--threads 1]   # ~12 min CPU

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Draws the output of `roughgas restitution` to PNG: the project's versions of seed 000 Figs. 1 and 2.
+"""Draws the output of `roughgas restitution` to PNG: the project's versions of Brilliantov et al.
+(1996) Figs. 1 and 2.
 
 usage: scripts/python3 scripts/plot_restitution.py OUT_DIR [--bridges]
   OUT_DIR/normal.csv      -> OUT_DIR/normal.png      eps^N against g_N (cm/s), with the measured ice law
@@ -37,7 +38,7 @@ def plot_normal(out_dir, with_bridges):
     ax.set_ylim(0, 1.02)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(loc="lower left")
-    ax.set_title("Normal restitution (seed 000 Fig. 1)")
+    ax.set_title("Normal restitution (Brilliantov et al. 1996, Fig. 1)")
     fig.tight_layout()
     path = os.path.join(out_dir, "normal.png")
     fig.savefig(path + ".tmp.png", dpi=120)
@@ -62,7 +63,7 @@ def plot_tangential(out_dir):
     ax.set_xlabel(r"$g^N$ [cm/s]")
     ax.set_ylabel(r"$g^T$ [cm/s]")
     fig.colorbar(mesh, ax=ax, label=r"$\epsilon^T$ ($\beta = -\epsilon^T$)")
-    ax.set_title(r"Tangential restitution (seed 000 Fig. 2); black: $\epsilon^T = 0$")
+    ax.set_title(r"Tangential restitution (Brilliantov et al. 1996, Fig. 2); black: $\epsilon^T = 0$")
     fig.tight_layout()
     path = os.path.join(out_dir, "tangential.png")
     fig.savefig(path + ".tmp.png", dpi=120)

@@ -8,9 +8,9 @@
 # statistical checks that repeat code the other tests already run thousands of times over (the
 # eps^T table against 12 000 direct integrations, collision-rate and step-length statistics, theta
 # against theory, a threads comparison); under the sanitizers they took 5 of the job's 11 CPU
-# minutes. They run in scripts/test.sh. UndefinedBehaviorSanitizer was left out of this build in
-# session 11 (on a Zen 1 VM .ci/run took 21 min with it, src/dsmc/run.cpp alone 165-196 s); it is
-# back since the engine instantiations compile in five files on both cores (src/dsmc/drive_*.cpp).
+# minutes. They run in scripts/test.sh. UndefinedBehaviorSanitizer makes the engine's
+# instantiations slow to compile (in one file, .ci/run took 21 min on a Zen 1 VM, that file alone
+# 165-196 s); they are spread over five files that compile on both cores (src/dsmc/drive_*.cpp).
 # ROUGHGAS_SANITIZE_PRESET=sanitize-address builds AddressSanitizer only (build-sanitize-address/):
 # .ci/run chooses it on a machine too slow for both sanitizers within its 20 minutes.
 set -euo pipefail

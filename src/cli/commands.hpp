@@ -18,7 +18,10 @@ Subcommand add_run_command(CLI::App& parent);
 Subcommand add_check_command(CLI::App& parent);
 Subcommand add_restitution_command(CLI::App& parent);
 Subcommand add_sweep_command(CLI::App& parent);
-Subcommand add_keys_command(CLI::App& parent); // hidden: prints the README tables
+Subcommand add_keys_command(CLI::App& parent); // prints the generated tables of docs/reference.md
+
+// The tables of command-line options of `root` and each of its subcommands (docs/reference.md).
+std::string cli_options_markdown(const CLI::App& root);
 
 // `--set KEY=VALUE`, repeatable, one value per occurrence (so it cannot swallow CASE.toml).
 inline CLI::Option* add_set_option(CLI::App& app, std::vector<std::string>& sets) {
@@ -29,7 +32,7 @@ inline CLI::Option* add_set_option(CLI::App& app, std::vector<std::string>& sets
         ->allow_extra_args(false);
 }
 
-// Exit statuses of interface.md.
+// Exit statuses (docs/reference.md); a stop by SIGINT or SIGTERM exits with 128 + the signal.
 inline constexpr int exit_ok = 0;
 inline constexpr int exit_failure = 1;
 inline constexpr int exit_invalid = 2;

@@ -1,5 +1,6 @@
-// roughgas keys (hidden): prints the README's generated tables, so the README can be refreshed
-// from the schema (tests/io/readme_test.cpp fails when they differ).
+// roughgas keys: prints the generated tables of docs/reference.md (case-file keys, output columns,
+// command-line options), so the reference can be refreshed from the code; tests/io/reference_test.cpp
+// fails when the reference and these tables differ.
 #include "commands.hpp"
 
 #include "roughgas/io/case_schema.hpp"
@@ -7,18 +8,79 @@
 #include "roughgas/io/moments_csv.hpp"
 #include "roughgas/io/restitution_csv.hpp"
 
+#include <fmt/format.h>
+
 #include <iostream>
 #include <memory>
+#include <string>
 
 namespace roughgas::cli {
 
+namespace {
+
+// A table cell: '|' would end the cell.
+std::string cell(std::string s) {
+    std::string out;
+    for (char c : s) {
+        if (c == '|')
+            out += "\\|";
+        else if (c == '\n')
+            out += ' ';
+        else
+            out += c;
+    }
+    return out;
+}
+
+// What an option takes: "-" for a flag, else its value's name, "(repeatable)" when it may be given
+// more than once.
+std::string value_text(const CLI::Option& o) {
+    std::string v = o.get_type_name();
+    if (v.empty()) // a flag
+        return "-";
+    if (v.rfind("ENUM", 0) == 0) // the allowed words are in the description
+        v = "WORD";
+    if (o.get_expected_max() > 1 || o.get_multi_option_policy() == CLI::MultiOptionPolicy::TakeAll)
+        v += " (repeatable)";
+    return v;
+}
+
+std::string options_table(const CLI::App& app, const std::string& command) {
+    std::string md = fmt::format("`{}`: {}\n\n", command, cell(app.get_description()));
+    md += "| Option | Value | Required | Description |\n|--------|-------|----------|-------------|\n";
+    for (const CLI::Option* o : app.get_options()) {
+        std::string name = o->get_name();
+        if (o->get_positional() && o->get_lnames().empty() && o->get_snames().empty())
+            name = o->get_name(true, false);
+        md += fmt::format("| `{}` | {} | {} | {} |\n", name, cell(value_text(*o)), o->get_required() ? "yes" : "no",
+                          cell(o->get_description()));
+    }
+    return md;
+}
+
+} // namespace
+
+std::string cli_options_markdown(const CLI::App& root) {
+    std::string md = options_table(root, "roughgas");
+    for (const CLI::App* sub : root.get_subcommands({})) {
+        md += '\n';
+        md += options_table(*sub, "roughgas " + sub->get_name());
+    }
+    return md;
+}
+
 Subcommand add_keys_command(CLI::App& parent) {
     auto output = std::make_shared<bool>(false);
-    CLI::App* app = parent.add_subcommand("keys", "print the README tables of case-file keys");
-    app->group(""); // hidden from --help: a maintenance tool
-    app->add_flag("--output", *output, "print the tables of output columns instead");
-    return {app, [output] {
-                if (*output) {
+    auto cli = std::make_shared<bool>(false);
+    CLI::App* app = parent.add_subcommand(
+        "keys", "print the generated tables of docs/reference.md: case-file keys (default), output "
+                "columns (--output) or command-line options (--cli)");
+    CLI::Option* output_flag = app->add_flag("--output", *output, "print the tables of output columns");
+    app->add_flag("--cli", *cli, "print the tables of command-line options")->excludes(output_flag);
+    return {app, [output, cli, &parent] {
+                if (*cli) {
+                    std::cout << cli_options_markdown(parent);
+                } else if (*output) {
                     std::cout << restitution_columns_markdown() << '\n'
                               << moments_columns_markdown() << '\n'
                               << histograms_columns_markdown();

@@ -1,4 +1,5 @@
-// roughgas: the command line (interface.md). Exit status 0 ok, 2 invalid input, 1 anything else.
+// roughgas: the command line (docs/reference.md). Exit status 0 ok, 2 invalid input, 1 anything else;
+// run and sweep add 128 + the signal's number when SIGINT or SIGTERM stops them.
 #include "commands.hpp"
 
 #include "roughgas/io/csv_writer.hpp"
@@ -17,6 +18,12 @@ int run_cli(int argc, char** argv) {
     const std::vector<Subcommand> commands = {add_run_command(app), add_check_command(app),
                                               add_restitution_command(app), add_sweep_command(app),
                                               add_keys_command(app)};
+    // The options are in --help; everything else a user scripts against is in the reference.
+    const std::string footer = "Reference (commands, options, case-file keys, output columns, exit codes): "
+                               "docs/reference.md in the roughgas sources.";
+    app.footer(footer);
+    for (const Subcommand& c : commands)
+        c.app->footer(footer);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

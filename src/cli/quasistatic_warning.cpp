@@ -36,9 +36,9 @@ bool warn_if_not_quasistatic(const CaseConfig& cfg, std::size_t i, std::size_t j
     if (hi == 0)
         return false;
     err << fmt::format("roughgas: warning: {}: impact speeds {:.3g} .. {:.3g} m/s of species \"{}\" with \"{}\" are "
-                       "outside the quasistatic range of the contact model (seed 000 app. B: at {:.3g} m/s, "
-                       "g/c_t = {:.3g} (must be <= 0.1) and A/t_c = {:.3g} (<= 1); c_t = {:.4g} m/s): the "
-                       "restitution there is computed but is not physics\n",
+                       "outside the quasistatic range of the contact model (Brilliantov et al. 1996, "
+                       "appendix B: at {:.3g} m/s, g/c_t = {:.3g} (must be <= 0.1) and A/t_c = {:.3g} "
+                       "(<= 1); c_t = {:.4g} m/s): the restitution there is computed but is not physics\n",
                        where, lo, hi, cfg.species[i].name, cfg.species[j].name, hi, worst.speed, worst.time, c_t);
     return true;
 }

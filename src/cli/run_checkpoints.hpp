@@ -1,5 +1,5 @@
 #pragma once
-// The checkpoints of `roughgas run` (README "Checkpoints and restart"; the file format is
+// The checkpoints of `roughgas run` (docs/running.md; the file format is
 // io/checkpoint_file.hpp): reading and checking DIR/checkpoint for --resume, and writing it while
 // a run goes on.
 #include "roughgas/dsmc/run.hpp"

@@ -1,5 +1,5 @@
-// roughgas run CASE.toml --out DIR ... : the DSMC of the homogeneous gas (issue 3), cooling or in
-// uniform shear flow (issue 4), writing DIR/moments.csv (interface.md "Output", io/moments_csv.hpp)
+// roughgas run CASE.toml --out DIR ... : the DSMC of the homogeneous gas, cooling or in
+// uniform shear flow, writing DIR/moments.csv (docs/reference.md "Output", io/moments_csv.hpp)
 // and, for shear runs, DIR/steady.csv (the steady state found in the rows, io/steady_csv.hpp).
 //
 // Order of work: validate the case and the output directory (exit 2, nothing written), build the
@@ -9,7 +9,7 @@
 // time, batched only when rewriting would take more than a tenth of the time, and at the end), so a
 // crash or a kill keeps what was computed.
 //
-// Checkpoints (issue 6; README "Checkpoints and restart"): with --checkpoint-every X each replica
+// Checkpoints (docs/running.md): with --checkpoint-every X each replica
 // saves its state to DIR/checkpoint/replica_R.bin every X collisions per particle (run_checkpoints.hpp,
 // io/checkpoint_file.hpp), and `roughgas run --resume DIR` continues from those files: the CSVs come
 // out byte for byte as from the run without a stop. SIGINT/SIGTERM (stop_signals.hpp) stop every

@@ -1,5 +1,5 @@
 #pragma once
-// SIGINT and SIGTERM during `roughgas run` (README "Checkpoints and restart") and `roughgas sweep`:
+// SIGINT and SIGTERM during `roughgas run` (docs/running.md) and `roughgas sweep`:
 // the first asks the command to stop at its next boundary (run: a checkpoint and the CSV so far;
 // sweep: the finished points' files; exit 128 + the signal's number), a second one ends the process
 // at once (the signal's default action).

@@ -2,9 +2,9 @@
 // Integrates one contact (contact_ode.hpp) piece by piece with Boost.Odeint's dense-output
 // Dormand-Prince 5(4) stepper, and locates every event on the dense output: odeint has no events,
 // so, as in odeint's examples/find_crossing.cpp, an event is bracketed between previous_time() and
-// current_time() and refined with Boost.Math toms748_solve on calc_state (style.md §2.5).
+// current_time() and refined with Boost.Math toms748_solve on calc_state.
 //
-// Events (physics.md §6-7):
+// Events (docs/model.md §6-7):
 //   max compression   V: + -> 0            records max X
 //   force end         X + uV: + -> 0       terminal (`force` end)
 //   separation end    X: + -> 0            terminal (`separation` end)
@@ -316,7 +316,7 @@ template <std::size_t N> class ContactRun {
         return stop;
     }
 
-    // e -> 0 at the break (physics.md §7) and a fresh start of the stepper: the right-hand side
+    // e -> 0 at the break (docs/model.md §7) and a fresh start of the stepper: the right-hand side
     // jumps here. The first step is capped to end just past the next break, predicted from
     // de/dt at the restart, so that a many-break contact costs about one step per break.
     void restart_after_break(double t_break) {

@@ -1,5 +1,5 @@
 #pragma once
-// The contact ODE of physics.md §6-7 in Hertz units, written for three independent variables
+// The contact ODE of docs/model.md §6-7 in Hertz units, written for three independent variables
 // ("clocks") so that the right-hand side is analytic on every piece that is integrated.
 //
 // Why: in Hertz time S the eq. 24 force X^{1/2}(X + uV) is not smooth at X = 0. The solution
@@ -55,10 +55,10 @@ inline double acceleration(const OdeCoefficients& c, double X, double V) {
 }
 
 // The normal acceleration that drives the asperity spring: only a compressive normal force
-// (X'' < 0) presses the asperities together. Seed 000 eqs. 28-29: the load-bearing tangential
-// area is S^T = phi^T sigma^N S with f^T(0) = 0, an expansion about sigma^N = 0 from the
+// (X'' < 0) presses the asperities together. Brilliantov et al. (1996) eqs. 28-29: the load-bearing
+// tangential area is S^T = phi^T sigma^N S with f^T(0) = 0, an expansion about sigma^N = 0 from the
 // compressive side; under tension (the attractive end of an eq. 24/25 `separation` contact,
-// physics.md §6) no asperity carries shear. Taken literally, X'' > 0 would turn the spring into an
+// docs/model.md §6) no asperity carries shear. Taken literally, X'' > 0 would turn the spring into an
 // anti-spring (p' = (mu/kappa) X'' e grows with e) and let |eps_t| grow far beyond 1.
 inline double compressive(double a) {
     return a < 0 ? a : 0.0;

@@ -43,7 +43,7 @@ inline double loading_end_root(NormalForm form, double u) {
 
 // Unloading (V < 0) from (X, V) down to X = 0: may we switch to the compression clock here?
 // Repulsion (force > 0) is at most X^{3/2} for both forms (X + uV <= X), so it adds at most
-// W_r = 2 (2/5) X^{5/2} to V^2. Attraction (separation end only; physics.md §6) is at most
+// W_r = 2 (2/5) X^{5/2} to V^2. Attraction (separation end only; docs/model.md §6) is at most
 // X^{1/2} u|V| (eq. 24) or (u|V|)^{3/2} (eq. 25), with |V| <= 1.25 |V_now| while V^2 <= 1.25 V_now^2;
 // integrated over [0, X] it removes at most W_a from V^2. Requiring V^2 >= 4 (W_r + W_a) keeps
 // V^2 in [3/4, 5/4] V_now^2 until X = 0: |V| stays away from 0 and no capture can occur.

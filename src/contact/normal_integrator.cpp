@@ -1,5 +1,5 @@
-// The normal contact (seed 000 eqs. 24-26; physics.md §6) in Hertz units: the contact ODE of
-// contact_ode.hpp without the tangential pair, integrated by contact_driver.hpp.
+// The normal contact (Brilliantov et al. (1996) eqs. 24-26; docs/model.md §6) in Hertz units: the contact
+// ODE of contact_ode.hpp without the tangential pair, integrated by contact_driver.hpp.
 #include "roughgas/contact/normal_integrator.hpp"
 
 #include "contact_driver.hpp"

@@ -1,5 +1,5 @@
-// The tangential contact with the asperity model (seed 000 eq. 37 made well-defined,
-// physics.md §7), integrated together with the normal motion by contact_driver.hpp.
+// The tangential contact with the asperity model (Brilliantov et al. (1996) eq. 37 made well-defined,
+// docs/model.md §7), integrated together with the normal motion by contact_driver.hpp.
 //
 // Scaling. tangential_integrator.hpp writes p' = (mu/kappa) X'' e, e' = p/z, p(0) = r = g_T/g_N,
 // |e| = 1 breaks. The driver integrates p^ = p/|r| and e^ = e/s with s = min(|r|, 1):

@@ -182,8 +182,7 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
             {static_cast<double>(b.count) / static_cast<double>(N), b.grain.mass, b.grain.radius});
     std::vector<Vec3> spin; // shear: omega - Omega, so that T_rot is about the mean spin
     // On the replica's threads (the engine's): a row streams the whole store from memory twice,
-    // which takes as long as the collisions between two rows where rows are dense (README, "Output
-    // rows" in "Both cores for one run").
+    // which takes as long as the collisions between two rows where rows are dense.
     const int threads = std::max(1, spec.threads);
     const auto moments_now = [&](Vec3& Omega) {
         if (!spec.shear)

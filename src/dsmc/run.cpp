@@ -1,5 +1,5 @@
 // One replica of a homogeneous cooling run: the kernel is chosen once (std::visit over the pairs'
-// restitution models, style.md §2.3) and the loop below only pauses it at the output times (and
+// restitution models) and the loop below only pauses it at the output times (and
 // saves or restores its state for checkpoints, between chunks of the loop).
 #include "roughgas/dsmc/run.hpp"
 

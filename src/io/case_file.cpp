@@ -647,7 +647,8 @@ class Builder {
         return m;
     }
 
-    // A is given directly or, by seed 000 eq. 23, from both viscosities: never both, never neither.
+    // A is given directly or, by Brilliantov et al. (1996) eq. 23, from both viscosities: never both,
+    // never neither.
     double dissipation(const Reader& r, const MaterialConfig& m) {
         const KeySpec& a_spec = *find_key("material.dissipation");
         const bool viscous = m.eta1 || m.eta2;
@@ -669,15 +670,15 @@ class Builder {
         if (!m.eta1 || !m.eta2) {
             const std::string missing = m.eta1 ? "material.eta2" : "material.eta1";
             add(missing,
-                fmt::format("{}: required with {} (A follows from both viscosities, seed 000 eq. 23; "
-                            "must be >= 0 (Pa s))",
+                fmt::format("{}: required with {} (A follows from both viscosities, Brilliantov et al. "
+                            "1996 eq. 23; must be >= 0 (Pa s))",
                             missing, m.eta1 ? "eta1" : "eta2"),
                 "material");
             return 0;
         }
         if (m.poisson_ratio == 0 || 3 * *m.eta2 + 2 * *m.eta1 <= 0) {
-            add("material.eta1", "material.eta1, material.eta2: seed 000 eq. 23 needs poisson_ratio != 0 and "
-                                 "3 eta2 + 2 eta1 > 0");
+            add("material.eta1", "material.eta1, material.eta2: Brilliantov et al. 1996 eq. 23 needs "
+                                 "poisson_ratio != 0 and 3 eta2 + 2 eta1 > 0");
             return 0;
         }
         return dissipation_from_viscosities(*m.eta1, *m.eta2, m.young_modulus, m.poisson_ratio);
@@ -741,7 +742,7 @@ class Builder {
     }
 
     // The Maxwell kernel is the reference model with a known answer for constant alpha, beta
-    // (README "The Maxwell kernel"); it is compiled for constant restitution only.
+    // (docs/model.md); it is compiled for constant restitution only.
     void check_maxwell_kernel(const CaseConfig& c) {
         for (std::size_t a = 0; a < c.species.size(); ++a) {
             for (std::size_t b = a; b < c.species.size(); ++b) {

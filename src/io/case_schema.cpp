@@ -1,4 +1,4 @@
-// The case-file schema: every key once, in the order the README lists them.
+// The case-file schema: every key once, in the order docs/reference.md lists them.
 #include "roughgas/io/case_schema.hpp"
 
 #include "roughgas/contact/contact_model.hpp"
@@ -82,8 +82,8 @@ std::vector<Key> collision_keys(const std::string& table) {
             .required()
             .one_of(collision_model_names)
             .doc("restitution model: constant alpha, beta; coulomb (Walton: constant alpha, beta from "
-                 "Coulomb friction); viscoelastic (eps^N from the contact, seed 000); brilliantov "
-                 "(eps^N and eps^T from the contact with asperities, seed 000)"),
+                 "Coulomb friction); viscoelastic (eps^N from the contact, Brilliantov et al. 1996); "
+                 "brilliantov (eps^N and eps^T from the contact with asperities, Brilliantov et al. 1996)"),
         Key(t + "alpha", T::real)
             .when("required for model = constant, coulomb")
             .ge(0)
@@ -235,12 +235,13 @@ std::vector<Key> keys() {
             .unit("s")
             .when("required unless eta1 and eta2 are given")
             .ge(0)
-            .doc("dissipative constant A of seed 000 eq. 23"),
+            .doc("dissipative constant A of Brilliantov et al. 1996 eq. 23"),
         Key("material.eta1", T::real)
             .unit("Pa s")
             .optional()
             .ge(0)
-            .doc("viscous constant eta_1: with eta2, gives A by seed 000 eq. 23 (instead of dissipation)"),
+            .doc("viscous constant eta_1: with eta2, gives A by Brilliantov et al. 1996 eq. 23 (instead of "
+                 "dissipation)"),
         Key("material.eta2", T::real)
             .unit("Pa s")
             .optional()
@@ -249,21 +250,21 @@ std::vector<Key> keys() {
         Key("material.friction", T::real)
             .when("required for model = brilliantov and roughgas restitution")
             .ge(0)
-            .doc("friction coefficient mu of the asperity model (seed 000 eqs. 35-37)"),
+            .doc("friction coefficient mu of the asperity model (Brilliantov et al. 1996 eqs. 35-37)"),
         Key("material.asperity", T::real)
             .unit("m")
             .when("required for model = brilliantov and roughgas restitution")
             .gt(0)
-            .doc("asperity scale zeta_0 (seed 000 eq. 32)"),
+            .doc("asperity scale zeta_0 (Brilliantov et al. 1996 eq. 32)"),
         // [contact]
         Key("contact.form", T::string)
             .fallback(std::string("eq24"))
             .one_of(normal_form_names)
-            .doc("normal force law: seed 000 eq. 24 or eq. 25"),
+            .doc("normal force law: Brilliantov et al. 1996 eq. 24 or eq. 25"),
         Key("contact.end", T::string)
             .fallback(std::string("force"))
             .one_of(contact_end_names)
-            .doc("end of contact: force (normal force reaches 0) or separation (xi = 0), physics.md §6"),
+            .doc("end of contact: force (normal force reaches 0) or separation (xi = 0), docs/model.md §6"),
         Key("contact.cache", T::boolean)
             .fallback(true)
             .doc("use a tabulated eps(g) built once; false: integrate every collision directly"),
@@ -288,7 +289,8 @@ std::vector<Key> keys() {
             .gt(0)
             .le(1)
             .doc("Strang splitting step h (stream h/2, collide h, stream h/2), in mean free times of the "
-                 "state each step's collisions start from; the error of the steady P*_xy is O(h^2) (README)"),
+                 "state each step's collisions start from; the error of the steady P*_xy is O(h^2) "
+                 "(docs/model.md)"),
         // [restitution]
         Key("restitution.g_n_min", T::real)
             .unit("m/s")

@@ -13,7 +13,7 @@ namespace {
 struct Quantity {
     const char* x;    // bin-centre column
     const char* f;    // density column stem
-    const char* what; // for the README
+    const char* what; // for docs/reference.md's table
     std::vector<double> SpeciesHistograms::*member;
 };
 const Quantity quantities[] = {

@@ -123,7 +123,7 @@ const std::map<std::string, std::string>& meanings() {
     static const std::map<std::string, std::string> m = {
         {"t", "time since the start (the case's time unit: the density n and the species set it)"},
         {"coll_per_particle", "collisions per particle so far, 2 x collisions / N"},
-        {"T_tr", "translational temperature (1/3)<m c^2>, c = v - u (physics.md §5)"},
+        {"T_tr", "translational temperature (1/3)<m c^2>, c = v - u (docs/model.md §5)"},
         {"T_rot", "rotational temperature (1/3)<J omega^2>"},
         {"theta", "T_rot/T_tr"},
         {"a20", "(4/15)<c*^4> - 1, c* = c/sqrt(2 T_tr/m): 0 for a Maxwellian"},

@@ -129,7 +129,7 @@ void HcsTheory::rates(std::span<const double> T_tr, std::span<const double> T_ro
     }
 }
 
-// sum_s x_s T_s / sum_s x_s: the temperature of the mixture (physics.md §5 over all grains).
+// sum_s x_s T_s / sum_s x_s: the temperature of the mixture (docs/model.md §5 over all grains).
 double HcsTheory::fraction_weighted(std::span<const double> T) const {
     double sum = 0, x = 0;
     for (std::size_t s = 0; s < species_.size(); ++s) {

@@ -96,7 +96,7 @@ inline SpeciesSpec unit_grain() {
     return SpeciesSpec{};
 }
 
-// Ice (seed 000 Fig. 2c, the restitution benchmark's pair): R = 1 cm, A = 5.3e-5 s,
+// Ice (Brilliantov et al. (1996) Fig. 2c, the restitution benchmark's pair): R = 1 cm, A = 5.3e-5 s,
 // zeta_0 = 1e-3 R_eff, mu = sqrt(1e-3); T such that each velocity component has rms 0.1 m/s.
 inline ContactPair ice_pair() {
     const double R = 0.01, m = 4.0 / 3.0 * std::numbers::pi * R * R * R * 1000.0;

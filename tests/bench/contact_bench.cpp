@@ -1,4 +1,4 @@
-// Cost of one direct contact integration (seed 000 eqs. 24-26, 37; physics.md §6-7):
+// Cost of one direct contact integration (Brilliantov et al. (1996) eqs. 24-26, 37; docs/model.md §6-7):
 //  - eps_n per evaluation at rel = 1e-6, 1e-8, 1e-10, 1e-11, 1e-12 (abs = rel/100, as the default
 //    Tolerance), cycling over 16 values u = 1e-3 ... 10; counter `max_error` = max |eps_n -
 //    eps_n(rel = 1e-14)| over them;

@@ -1,4 +1,4 @@
-// Collisions per second of the DSMC collision loop (issue 3 "Speed", issue 5 items 1-3).
+// Collisions per second of the DSMC collision loop.
 // Run: build/tests/bench/dsmc_bench [--benchmark_filter=...] [--benchmark_repetitions=3]
 //
 // Each benchmark builds a homogeneous cooling gas (bench_gas.hpp: Maxwellian start, T = 1, n = 1,
@@ -106,8 +106,8 @@ void BM_Skip_MixtureKernelOneSpecies(benchmark::State& s) {
     run_bench<RoughPacked, RoughConstant, true>(s, unit_grain(), make_rough_constant(0.9, 0.5));
 }
 // What the tables cost in the brilliantov case's own gas: the constant rough kernel on the ice grains
-// with about the mean coefficients that gas shows (alpha 0.22-0.24, beta -0.96 over 2e6 collisions,
-// session 8), so that the gas cools and departs from a Maxwellian as it does (BM_Case_Brilliantov).
+// with about the mean coefficients that gas shows (measured: alpha 0.22-0.24, beta -0.96 over 2e6
+// collisions), so that the gas cools and departs from a Maxwellian as it does (BM_Case_Brilliantov).
 void BM_Skip_TablesInTheIceGas(benchmark::State& s) {
     run_bench<RoughPacked>(s, ice_grain(), make_rough_constant(0.23, -0.96));
 }
@@ -150,7 +150,7 @@ void BM_StepStart_SmoothConstant(benchmark::State& s) {
 }
 
 #define ROUGHGAS_SIZES ->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->MinTime(2.0)
-// The README table (scripts/bench_table.py): N = 1e4 .. 1e7 on 1 and 2 threads.
+// The table of docs/performance.md (scripts/bench_table.py): N = 1e4 .. 1e7 on 1 and 2 threads.
 #define ROUGHGAS_CASE_SIZES                                                                                  \
     ->ArgsProduct({{10000, 100000, 1000000, 10000000}, {1, 2}})                                              \
         ->Unit(benchmark::kMillisecond)                                                                      \

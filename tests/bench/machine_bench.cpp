@@ -1,6 +1,6 @@
 // What a random access costs on this machine: the latency the collision loop's grain loads meet
 // (dsmc/engine.hpp prefetches them; this measures them unprefetched). Not project code under test:
-// a probe that explains the DSMC benchmarks (README "DSMC speed", session 9).
+// a probe that explains the DSMC benchmarks (docs/performance.md).
 // Run: build/tests/bench/machine_bench
 //
 //   BM_Machine_RandomLoad/MiB    dependent loads along a random cycle through every cache line of a

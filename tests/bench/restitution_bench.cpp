@@ -1,5 +1,5 @@
 // Restitution tables: look-up cost (ns per call) with the measured maximum error against the
-// direct integrator, and build times (issue 2's benchmark). Run: build/tests/bench/restitution_bench
+// direct integrator, and build times. Run: build/tests/bench/restitution_bench
 #include "roughgas/restitution/normal_table.hpp"
 #include "roughgas/restitution/tangential_table.hpp"
 
@@ -15,7 +15,8 @@ namespace {
 
 ContactPair ice_fig2c() {
     const double R = 0.01, m = 4.0 / 3.0 * std::numbers::pi * R * R * R * 1000.0;
-    Material mat{1e10, 0.3, 5.3e-5, std::sqrt(1e-3), 1e-3 * R / 2}; // seed Fig. 2c: zeta0 = 1e-3 R_eff, mu = sqrt(1e-3)
+    // Brilliantov et al. (1996) Fig. 2c: zeta0 = 1e-3 R_eff, mu = sqrt(1e-3)
+    Material mat{1e10, 0.3, 5.3e-5, std::sqrt(1e-3), 1e-3 * R / 2};
     return make_contact_pair(mat, {}, m, R, 0.4, m, R, 0.4);
 }
 

@@ -1,5 +1,5 @@
 // Collisions per second of several kernels, alternated in short slices within one process
-// (issue 5: the ratio targets). Run:
+// (for the ratio targets of scripts/bench_targets.py). Run:
 //
 //   build/tests/bench/slices_bench [--slice 0.25] [--rounds 30] NAME/N/T ...
 //
@@ -11,10 +11,10 @@
 // machine hits every gas alike over two rounds.
 //
 // Why: on the shared VMs of this project one benchmark's repetitions spread by up to +-25 % within
-// a Google Benchmark call, in episodes of seconds to minutes that slow every kernel alike (session
-// 12: constant rough 3.9-7.1e6/s). Google Benchmark runs each repetition for 2 s and builds a new
+// a Google Benchmark call, in episodes of seconds to minutes that slow every kernel alike
+// (measured: constant rough 3.9-7.1e6/s). Google Benchmark runs each repetition for 2 s and builds a new
 // gas for it; a ratio of two kernels then mixes episodes. Slices a quarter of a second apart see
-// the same episode: the ratio of two kernels' slices in one round cancels it (session 13: the
+// the same episode: the ratio of two kernels' slices in one round cancels it (measured: the
 // per-round smooth/rough ratio spreads by 5 %, each kernel's slices by 4 %, and successive slices
 // are uncorrelated, so the round's ratio is as good a sample as the machine gives).
 //

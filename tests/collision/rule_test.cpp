@@ -1,5 +1,5 @@
-// The collision rule of physics.md §3 (collision/rule.hpp), typed over every restitution policy
-// (style.md §2.8): random states of unequal grains (masses, radii, q), random restitution, and the
+// The collision rule of docs/model.md §3 (collision/rule.hpp), typed over every restitution
+// policy: random states of unequal grains (masses, radii, q), random restitution, and the
 // conservation laws and restitution identities checked per collision.
 #include "roughgas/collision/restitution_policy.hpp"
 #include "roughgas/collision/rule.hpp"
@@ -14,7 +14,8 @@
 namespace roughgas {
 namespace {
 
-// ---- fixtures: tables for the table policies (ice, seed 000 Fig. 2c: built once per binary) ----
+// ---- fixtures: tables for the table policies, built once per binary ----
+// Ice of Brilliantov et al. (1996) Fig. 2c.
 
 ContactPair ice_pair() {
     const double R = 0.01, m = 4.0 / 3.0 * std::numbers::pi * R * R * R * 1000.0;
@@ -111,7 +112,7 @@ Vec3 random_unit(Rng& r) {
     }
 }
 
-// Contact velocity of physics.md §1.
+// Contact velocity of docs/model.md §1.
 Vec3 contact_velocity(const Grain& i, const Grain& j, const Vec3& n) {
     return i.v - j.v - cross(i.R * i.w, n) - cross(j.R * j.w, n);
 }
@@ -185,7 +186,7 @@ TYPED_TEST(CollisionRuleTest, ConservesMomentumAndAngularMomentumAndRestitutes) 
         ASSERT_LE(norm(L1 - L0), 1e-13 * (angular_momentum_scale(i0, j0) + angular_momentum_scale(i, j)))
             << "trial " << trial;
 
-        // Energy: physics.md §3 with the pair's m_eff and kappa; measured from the states, whose
+        // Energy: docs/model.md §3 with the pair's m_eff and kappa; measured from the states, whose
         // energies carry round-off of order 1e-16 E, so the bound is relative to the pair's energy.
         const double m_eff = i.m * j.m / (i.m + j.m);
         const double kappa = 1.0 / (1.0 + m_eff * (1.0 / (i.q * i.m) + 1.0 / (j.q * j.m)));
@@ -242,7 +243,7 @@ TEST(CollisionRule, BetaMinusOneLeavesOmegaBitwiseUnchanged) {
 }
 
 TEST(CollisionRule, EqualSpheresMatchTheLiteratureForm) {
-    // physics.md §3: v_1' = v_1 - ((1+alpha)/2) g^N - (q(1+beta)/(2(1+q))) g^T for equal spheres.
+    // docs/model.md §3: v_1' = v_1 - ((1+alpha)/2) g^N - (q(1+beta)/(2(1+q))) g^T for equal spheres.
     const double m = 1.3, R = 0.7, q = 0.4, alpha = 0.8, beta = 0.3;
     Grain i{m, R, q, {0.3, -0.2, 0.5}, {1.0, 2.0, -0.5}}, j{m, R, q, {-0.4, 0.1, 0.2}, {-0.3, 0.4, 0.9}};
     const Vec3 n = (1.0 / std::sqrt(3.0)) * Vec3{1, 1, 1};

@@ -1,4 +1,5 @@
-// Tests of the normal contact integrator (seed 000 eqs. 24-26; physics.md §6) against closed forms,
+// Tests of the normal contact integrator (Brilliantov et al. (1996) eqs. 24-26; docs/model.md §6) against
+// closed forms,
 // published series coefficients and exact properties of the equations, never against numbers
 // produced by this code.
 #include "roughgas/contact/contact_integrator.hpp"
@@ -35,7 +36,7 @@ std::string label(ContactModel m) {
 }
 
 TEST(Hertz, ScaledDurationMatchesLiteral) {
-    // physics.md §6: S_c = 2 I (5/4)^{2/5} = 3.21806546...; the literal has 9 significant digits,
+    // docs/model.md §6: S_c = 2 I (5/4)^{2/5} = 3.21806546...; the literal has 9 significant digits,
     // so 1e-8 is the precision it can be checked to.
     EXPECT_NEAR(hertz::scaled_duration(), 3.21806546, 1e-8);
 }
@@ -56,7 +57,7 @@ TEST(NormalIntegrator, ElasticLimitIsHertz) {
 }
 
 TEST(NormalIntegrator, ElasticLimitInPhysicalUnits) {
-    // t_c = 3.21806546 rho^{-2/5} g^{-1/5} (physics.md §6) through the physical wrapper, for a pair
+    // t_c = 3.21806546 rho^{-2/5} g^{-1/5} (docs/model.md §6) through the physical wrapper, for a pair
     // of unequal glass-like spheres with A = 0; 1e-7 relative as above (the literal is good to 3e-9).
     Material glass{6.3e10, 0.23, 0.0, 0.0, 1e-6};
     const ContactPair pc = make_contact_pair(glass, {}, 2.0e-3, 4.0e-3, 0.4, 5.0e-4, 1.5e-3, 0.4);
@@ -72,7 +73,7 @@ TEST(NormalIntegrator, ElasticLimitInPhysicalUnits) {
 }
 
 TEST(NormalIntegrator, DependsOnlyOnW) {
-    // physics.md §6: the scaled equations contain w = g rho^2 tau^5 only, so two pairs of different
+    // docs/model.md §6: the scaled equations contain w = g rho^2 tau^5 only, so two pairs of different
     // materials, masses and radii at speeds with the same w have the same eps_n. The two runs
     // integrate the same scaled problem (u equal up to rounding), so with `tight` they agree to
     // ~1e-13; 1e-12 is the brief's requirement.
@@ -101,7 +102,7 @@ double c1_first_order() {
 }
 
 TEST(NormalIntegrator, SmallWSeriesOfSeparationEnd) {
-    // physics.md §6: eps = 1 - C1 u + C2 u^2 - ..., u = w^{1/5}, published C1 = 1.15344,
+    // docs/model.md §6: eps = 1 - C1 u + C2 u^2 - ..., u = w^{1/5}, published C1 = 1.15344,
     // C2 = 0.79826 (eq. 24, separation end). Least-squares fit of 1 - eps to u, u^2, ..., u^5 on 30
     // points in [1e-3, 3e-2]. Truncation: the u^6 term (coefficient O(1)) at u = 0.03 is 7e-10 and
     // the integration error is ~1e-13, which moves C1 by << 1e-5 and C2 by << 1e-3. Hence C1 is

@@ -1,6 +1,7 @@
-// Tests of the tangential contact integrator (seed 000 eqs. 33-38 made well-defined, physics.md §7)
+// Tests of the tangential contact integrator (Brilliantov et al. (1996) eqs. 33-38 made well-defined,
+// docs/model.md §7)
 // against exact properties of the equations, limits derived here, an independent fixed-step
-// integration, and the qualitative content of seed 000 Fig. 2.
+// integration, and the qualitative content of the paper's Fig. 2.
 #include "roughgas/contact/contact_integrator.hpp"
 #include "roughgas/contact/contact_pair.hpp"
 #include "roughgas/contact/hertz.hpp"
@@ -136,7 +137,7 @@ TEST(TangentialIntegrator, PropertiesOnRandomSample) {
 }
 
 TEST(TangentialIntegrator, TensionTransmitsNoTangentialForce) {
-    // Only a compressive normal force presses the asperities together (seed 000 eqs. 28-29:
+    // Only a compressive normal force presses the asperities together (Brilliantov et al. (1996) eqs. 28-29:
     // S^T = phi^T sigma^N S, f^T(0) = 0; contact_ode.hpp `compressive`). So the attractive phase of
     // a `separation` contact (after the force zero) leaves p unchanged, and eps_t is the `force`
     // contact's eps_t, whatever the strain does meanwhile. Both runs take the same steps up to the
@@ -197,7 +198,7 @@ TEST(TangentialIntegrator, LinearLimitMatchesIndependentIntegration) {
 }
 
 TEST(TangentialIntegrator, StiffeningAsperitySpringCanExceedPerfectReversal) {
-    // A property of the model (physics.md §7), not of the integrator: the spring p' = -k e,
+    // A property of the model (docs/model.md §7), not of the integrator: the spring p' = -k e,
     // e' = p/z with k = (mu/kappa)|X''| has H = p^2/2 + k z e^2/2 and dH/dS = k' z e^2/2, so it
     // gains energy while it stiffens under strain (loading) and loses it while it softens. With
     // e(0) = 0 and k(S_c) = 0 the balance is not signed: for an elastic normal motion and
@@ -288,7 +289,7 @@ TEST(TangentialIntegrator, CriticalRatioWithoutFriction) {
               std::numeric_limits<double>::infinity());
 }
 
-// Seed 000 Fig. 2 (b, c), ice: Y = 1e10 Pa, nu = 0.3, R = 1 cm, density 1000 kg/m^3, uniform
+// Brilliantov et al. (1996) Fig. 2 (b, c), ice: Y = 1e10 Pa, nu = 0.3, R = 1 cm, density 1000 kg/m^3, uniform
 // spheres (q = 2/5, kappa = 2/7), zeta0 = 1e-3 R_eff (c) or 2e-4 R_eff (b), mu = alpha sqrt(zeta0)
 // with alpha = 1 and zeta0 in metres (so mu = 2.2e-3 and 1.0e-3), and our choice A = 1e-5 s, which
 // gives eps_n = 0.79 at g_N = 1 cm/s (eq. 24, force end).

@@ -1,5 +1,5 @@
 // The DSMC engine (dsmc/engine.hpp) against exact statistics of the hard-sphere kernel
-// (physics.md §4) and the limits of the collision rule. Every stochastic assertion states its
+// (docs/model.md §4) and the limits of the collision rule. Every stochastic assertion states its
 // sample (N, collisions, replicas) and its tolerance in standard errors; seeds are fixed.
 #include "roughgas/collision/restitution_policy.hpp"
 #include "roughgas/dsmc/engine.hpp"
@@ -76,7 +76,7 @@ double elastic_rate_ratio(std::int64_t N, std::int64_t collisions, double step, 
 TEST(Engine, ElasticCollisionRateIsExact) {
     // N = 1e4, 60 collisions per particle (3e5 collisions) per replica, 16 replicas: the replica
     // spread (0.17% per replica) gives a standard error of about 0.045% on the mean, so a majorant
-    // that loses 0.25% of the collisions (issue 3) fails this 3-sigma test. Finite-N effects of the
+    // that loses 0.25% of the collisions fails this 3-sigma test. Finite-N effects of the
     // closed system (fixed energy and momentum) are O(1/N): measured +0.6% at N = 100, +0.1% at
     // N = 1e3, below 3e-4 at N = 1e4 (100 replicas: 0.99973 +- 0.00017).
     // With one speed class (the plain vmax_a + vmax_b bound) and with four (the default).
@@ -175,7 +175,7 @@ TEST(Engine, ImpactSpeedFollowsTheExactLaw) {
 }
 
 TEST(Engine, ElasticPerfectlyRoughConservesEnergyAndEquilibrates) {
-    // alpha = 1, beta = 1: every collision conserves the energy exactly (physics.md §3), so the total
+    // alpha = 1, beta = 1: every collision conserves the energy exactly (docs/model.md §3), so the total
     // changes by round-off only (1e5 ... 1e6 collisions of ~1e-16 relative each: < 1e-12). From
     // theta = 0.2 the gas relaxes to equipartition theta = 1 and to Maxwellians: N = 1e5, after 10
     // collisions per particle. With the total energy fixed, theta fluctuates by 2/sqrt(3N) = 0.37%
@@ -243,7 +243,7 @@ TEST(Engine, CumulantsDoNotDependOnTheStepLength) {
     // Homogeneous cooling, alpha = 0.5, beta = 0 (rough), after 4 collisions per particle: a20,
     // theta and the elapsed time with steps of 0.02 and 2 mean free times. 4 replicas each of
     // N = 1e5: a20 has a sampling error of ~0.006 per replica, so the 4-sigma band of the
-    // difference (~0.02) would see a20 halved (issue 3: what forbidding repeated collisions in a
+    // difference (~0.02) would see a20 halved (what forbidding repeated collisions in a
     // step does at alpha = 0.5).
     struct Result {
         std::vector<double> a20, theta, t;
@@ -273,7 +273,7 @@ TEST(Engine, CumulantsDoNotDependOnTheStepLength) {
 }
 
 TEST(Engine, SmoothSpheresFollowHaffsLaw) {
-    // alpha = 0.8, smooth. Maxwellian cooling rate (derived from physics.md §3 and §4): each collision
+    // alpha = 0.8, smooth. Maxwellian cooling rate (derived from docs/model.md §3 and §4): each collision
     // loses (m/4)(1 - alpha^2) g_n^2 with <g_n^2> = 4T/m over collisions (Rayleigh law above), so
     // dT/dt = -zeta T with zeta = (1 - alpha^2) nu/3, nu = 4 n sigma^2 sqrt(pi T/m); hence Haff's law
     // T = T0/(1 + t/t0)^2 with t0 = 2/zeta(T0). The Sonine correction to zeta is 3 a2/16 with
@@ -307,8 +307,8 @@ TEST(Engine, MixtureCollisionRatesAreExact) {
     // <g_ab> = sqrt((8/pi) T (1/m_a + 1/m_b)), P_ab the number of distinct pairs. 32 replicas of
     // N = 1e4 for 30 collisions per particle; each pair type within 3.5 standard errors: with the
     // error estimated from the replicas (Student t, 31 degrees of freedom) a correct engine fails one
-    // of the three in 0.4 % of the seeds. (With 8 replicas and 3 errors it was 6 %: 2 of 10 seeds
-    // failed when the collision streams changed in session 10, pooled over the 10: 0.9997 +- 0.0005.)
+    // of the three in 0.4 % of the seeds. (With 8 replicas and 3 errors it would be 6 %: with other
+    // collision streams 2 of 10 seeds failed; pooled over the 10: 0.9997 +- 0.0005.)
     SpeciesSpec A = unit_grain(), B = unit_grain();
     A.name = "A";
     A.fraction = 0.5;

@@ -260,8 +260,8 @@ TEST(Run, SummaryCountsCollisionStopsPassed) {
     }
 }
 
-// Ice grains in SI units (seed 000): R = 1 cm, 1000 kg/m^3, Y = 10 GPa, nu = 0.3, A = 1e-5 s,
-// zeta_0 = 1e-3 R_eff, mu = sqrt(1e-3); temperatures such that speeds are ~0.1 m/s.
+// Ice grains of Brilliantov et al. (1996) in SI units: R = 1 cm, 1000 kg/m^3, Y = 10 GPa, nu = 0.3,
+// A = 1e-5 s, zeta_0 = 1e-3 R_eff, mu = sqrt(1e-3); temperatures such that speeds are ~0.1 m/s.
 RunSpec ice(bool brilliantov, bool direct) {
     const double R = 0.01, m = 4.0 / 3.0 * std::numbers::pi * R * R * R * 1000.0;
     const Material mat{1e10, 0.3, 1e-5, std::sqrt(1e-3), 1e-3 * R / 2};

@@ -1,4 +1,4 @@
-// The random building blocks of the collision sampling: the impact direction (physics.md §4) and
+// The random building blocks of the collision sampling: the impact direction (docs/model.md §4) and
 // exact uniform indices. Chi-square statistics with a threshold at p = 1e-3 (each test can fail
 // by chance once in a thousand runs; the seeds are fixed, so a pass is reproducible).
 #include "roughgas/collision/sampling.hpp"

@@ -1,4 +1,4 @@
-// End to end (issue 6): real `roughgas run` processes killed with SIGKILL at random moments, or
+// End to end: real `roughgas run` processes killed with SIGKILL at random moments, or
 // stopped with SIGTERM/SIGINT, then continued with `roughgas run --resume DIR` (on another thread
 // count) give moments.csv, histograms.csv and steady.csv byte for byte as the run that was never
 // interrupted. Cases: a rough cooling run with 3 replicas on 2 threads (one replica waits for a

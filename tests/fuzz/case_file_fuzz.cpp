@@ -1,4 +1,4 @@
-// libFuzzer target for the case-file parser and validator (issue 6, item 4): any input must end in
+// libFuzzer target for the case-file parser and validator: any input must end in
 // either a valid CaseConfig or an InputError that names the file; nothing else (no other exception,
 // no crash, no sanitizer report). A valid case must also survive the round trip through its
 // resolved TOML (emit_case) unchanged, and turn into a RunSpec whose numbers are finite.

@@ -92,7 +92,7 @@ inline CommandResult run_roughgas(const std::string& args, const ScratchDir& dir
     return r;
 }
 
-// A complete, valid case that tabulates fast: ice of seed 000 on a 2 x 2 restitution grid.
+// A complete, valid case that tabulates fast: ice of Brilliantov et al. (1996) on a 2 x 2 restitution grid.
 inline std::string small_case() {
     return R"([run]
 particles = 1000

@@ -88,7 +88,7 @@ TEST(MomentsTable, NoSilentNaN) {
     EXPECT_THROW(table.check(r), NonFiniteValue);
 }
 
-TEST(MomentsTable, EveryColumnHasAMeaningAndTheReadmeTableListsIt) {
+TEST(MomentsTable, EveryColumnHasAMeaningAndTheGeneratedTableListsIt) {
     RunSpec mix;
     for (const char* name : {"x", "y", "z"}) { // (GCC 12 warns, wrongly, on name = "x": -Wrestrict)
         mix.species.emplace_back();

@@ -1,5 +1,5 @@
 // `roughgas run` (src/cli/run_command.cpp): moments.csv, determinism, replicas, invalid input,
-// and the homogeneous cooling state against the Maxwellian theory (issue 3).
+// and the homogeneous cooling state against the Maxwellian theory.
 #include "io_test_support.hpp"
 
 #include "roughgas/observables/theory.hpp"
@@ -231,7 +231,7 @@ TEST(RunCli, MixtureHasSpeciesColumnsAndTheory) {
          {"T_tr.a", "T_tr.a_err", "theta.b", "coll_rate.b", "T_tr.a/T_tr.b", "T_rot.a/T_rot.b_err",
           "T_tr_theory", "theta_theory", "T_tr_theory.a", "T_rot_theory.b", "theta_theory.b"})
         EXPECT_TRUE(m.col.count(c)) << c;
-    // The mixture's T is the number-weighted mean of the species' (physics.md §5); so is the theory's.
+    // The mixture's T is the number-weighted mean of the species' (docs/model.md §5); so is the theory's.
     for (std::size_t k = 0; k < m.rows; ++k) {
         EXPECT_NEAR(m["T_tr_theory"][k], 0.4 * m["T_tr_theory.a"][k] + 0.6 * m["T_tr_theory.b"][k], 1e-12);
         EXPECT_NEAR(m["T_tr"][k], 0.4 * m["T_tr.a"][k] + 0.6 * m["T_tr.b"][k], 1e-9 * m["T_tr"][k]);
@@ -364,7 +364,7 @@ TEST_P(RunInvalidInput, ExitsWithStatus2NamingFileKeyAndRangeAndWritesNothing) {
 INSTANTIATE_TEST_SUITE_P(RunCli, RunInvalidInput, ::testing::ValuesIn(bad_runs()),
                          [](const ::testing::TestParamInfo<BadRun>& info) { return info.param.name; });
 
-// --- the homogeneous cooling state against the Maxwellian theory (issue 3, "What must hold") ---
+// --- the homogeneous cooling state against the Maxwellian theory ---
 
 // Smooth spheres, alpha = 0.9: T_tr(t) follows Haff's law. N = 20000, 4 replicas, to 150 collisions
 // per particle (T falls to 1e-4). Statistics: one replica's T_tr has a relative error of
@@ -430,7 +430,7 @@ ThetaStats long_time_theta(const Moments& m, double from) {
 }
 
 // alpha = 0.9, beta = 1 (perfectly rough): the long-time theta agrees with the Maxwellian theory
-// (theta* = 1.1231) within 1 % (issue 3). N = 50000, 4 replicas, 150 collisions per particle, the
+// (theta* = 1.1231) within 1 %. N = 50000, 4 replicas, 150 collisions per particle, the
 // HCS taken from 40 on (theta relaxes within ~20): theta is measured to ~0.1 %.
 TEST(RunCli, PerfectlyRoughLongTimeThetaAgreesWithMaxwellianTheory) {
     const test::ScratchDir dir;

@@ -1,5 +1,5 @@
 // Persisted restitution tables: a table is reused only under its exact key, and a truncated or
-// corrupt cache file is rejected and rebuilt (issue 2).
+// corrupt cache file is rejected and rebuilt.
 #include "roughgas/io/table_cache_file.hpp"
 #include "roughgas/restitution/normal_table.hpp"
 

@@ -1,4 +1,4 @@
-// Moments of physics.md §5 (observables/moments.hpp) on configurations with exact values.
+// Moments of docs/model.md §5 (observables/moments.hpp) on configurations with exact values.
 #include "roughgas/observables/moments.hpp"
 
 #include "roughgas/core/rng.hpp"

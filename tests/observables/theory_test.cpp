@@ -1,6 +1,6 @@
 // The Maxwellian-approximation HCS theory (observables/theory.hpp): closed forms, limits,
 // conservation, the literature coefficients, and the collision averages against Monte Carlo
-// averages of the collision rule of physics.md §3.
+// averages of the collision rule of docs/model.md §3.
 #include "roughgas/observables/theory.hpp"
 
 #include <gtest/gtest.h>
@@ -51,7 +51,7 @@ TEST(HcsTheory, EqualSpheresReduceToTheLiteratureCoefficients) {
 }
 
 TEST(HcsTheory, CollisionFrequencyOfEqualSpheres) {
-    // 4 n sigma^2 sqrt(pi T/m) (physics.md §4, issue 3).
+    // 4 n sigma^2 sqrt(pi T/m) (docs/model.md §4).
     const HcsTheory th = one_species(0.9, 0.0, 0.4, 2.0, 0.5, 3.0);
     std::vector<double> T{1.3}, Tr{0.2};
     EXPECT_NEAR(th.exchange(0, 0, T, Tr).frequency, 4 * 3.0 * 1.0 * std::sqrt(std::numbers::pi * 1.3 / 2.0),
@@ -114,7 +114,7 @@ TEST(HcsTheory, ElasticPerfectlyRoughConservesEnergy) {
 
 TEST(HcsTheory, PairEnergyChangeIsTheAveragedEnergyLoss) {
     // <dE_i> + <dE_j> = (m_eff/2)(alpha^2 - 1) 2s + (kappa m_eff/2)(beta^2 - 1) 2(s + s_W)
-    // (physics.md §3 averaged, theory.hpp), for unequal species.
+    // (docs/model.md §3 averaged, theory.hpp), for unequal species.
     const HcsTheory th = mixture();
     const std::vector<double> T{1.3, 0.4}, Tr{0.7, 2.2};
     const std::vector<HcsSpecies>& sp = th.species();
@@ -132,7 +132,7 @@ TEST(HcsTheory, PairEnergyChangeIsTheAveragedEnergyLoss) {
     EXPECT_NEAR(sp[0].fraction * ab.frequency, sp[1].fraction * ba.frequency, 1e-13 * ab.frequency);
 }
 
-// Monte Carlo of the Boltzmann collision integral with the collision rule of physics.md §3
+// Monte Carlo of the Boltzmann collision integral with the collision rule of docs/model.md §3
 // (written out here, independent of src/): Maxwellian v and omega per species, n uniform on the
 // sphere, each sample weighted by the kernel |v_ij . n| on the approaching hemisphere.
 // Monte Carlo of the collision rule over Gaussian v and omega: each pair weighted by |v_ij.n| (hard
@@ -304,8 +304,8 @@ TEST(HcsTheory, LongTimeThetaIsTheClosedFormFixedPoint) {
     // Limits: perfectly rough elastic -> 1; smooth -> diverges (T_rot frozen).
     EXPECT_NEAR(theta_fixed_point(1.0, 1.0, 0.4), 1.0, 1e-15);
     EXPECT_TRUE(std::isinf(theta_fixed_point(0.9, -1.0, 0.4)));
-    // alpha = 0.9, beta = 1, q = 2/5 (the validation case of issue 3): theta* = 1.12312379718...,
-    // the root of B theta^2 + (C - A) theta - B = 0.
+    // alpha = 0.9, beta = 1, q = 2/5 (the validation case of tests/io/run_cli_test.cpp):
+    // theta* = 1.12312379718..., the root of B theta^2 + (C - A) theta - B = 0.
     const EqualSphereCoefficients c = equal_sphere_coefficients(0.9, 1.0, 0.4, 1, 1, 1);
     const double star = theta_fixed_point(0.9, 1.0, 0.4);
     EXPECT_NEAR(star, 1.1231237971808, 1e-12);

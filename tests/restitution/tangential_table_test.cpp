@@ -1,5 +1,5 @@
-// The eps^T table of one pair against the direct integrator (issue 2: <= 1e-4 absolute everywhere,
-// including near the onset of asperity breaking), on seed 000 Fig. 2c's ice parameters.
+// The eps^T table of one pair against the direct integrator (required: <= 1e-4 absolute everywhere,
+// including near the onset of asperity breaking), on Brilliantov et al. (1996) Fig. 2c's ice parameters.
 #include "roughgas/restitution/tangential_table.hpp"
 
 #include <gtest/gtest.h>
@@ -12,9 +12,9 @@
 namespace roughgas {
 namespace {
 
-// Ice (seed 000 sec. III): Y = 10 GPa, nu = 0.3, R = 1 cm, 1000 kg/m^3, q = 2/5; zeta_0 = 1e-3 R_eff
-// (Fig. 2c) and mu = sqrt(zeta_0/R_eff) (the seed's mu = alpha sqrt(zeta_0), alpha = 1, with zeta_0
-// in units of R_eff: this puts mu in the seed's interval [1e-2, 1]).
+// Ice (Brilliantov et al. (1996) sec. III): Y = 10 GPa, nu = 0.3, R = 1 cm, 1000 kg/m^3, q = 2/5;
+// zeta_0 = 1e-3 R_eff (Fig. 2c) and mu = sqrt(zeta_0/R_eff) (the paper's mu = alpha sqrt(zeta_0),
+// alpha = 1, with zeta_0 in units of R_eff: this puts mu in the paper's interval [1e-2, 1]).
 ContactPair ice_pair(double zeta0_over_R_eff, double A) {
     const double R = 0.01, m = 4.0 / 3.0 * std::numbers::pi * R * R * R * 1000.0;
     Material mat;
@@ -77,7 +77,7 @@ TEST(TangentialTable, KnowsTheOnsetOfBreaking) {
     const double g_n = 3.0;
     const TangentialParameters p = tangential_parameters(table.pair(), g_n);
     // Just below the onset nothing breaks and eps^T is the no-break (linear) value; at g_N = 3 m/s
-    // the asperity spring reverses the tangential motion there (eps^T < 0, seed Fig. 2c). Just above
+    // the asperity spring reverses the tangential motion there (eps^T < 0, the paper's Fig. 2c). Just above
     // the onset an asperity breaks as the motion stops: eps^T jumps to about 0.
     const double g_cr = table.critical_speed(g_n);
     EXPECT_NEAR(g_cr / g_n, critical_ratio(p), 1e-6 * critical_ratio(p));

@@ -1,4 +1,4 @@
-// Stress suite (issue 6, item 1; `ctest -L stress`): the solver at the extremes of its parameters.
+// Stress suite (`ctest -L stress`): the solver at the extremes of its parameters.
 // Every test asserts finite, physically admissible output: 0 <= eps^N <= 1, beta in [-1, 1] after the
 // policy, T > 0, theta >= 0, and no NaN or infinity in any row unless undefined by definition
 // (MomentsTable::check, the rule the CSV writer enforces).
@@ -129,8 +129,8 @@ TEST(Stress, NormalContactOverTwentyDecadesOfImpactSpeed) {
 TEST(Stress, OutsideTheQuasistaticRangeTheToolWarnsOnceAndWorks) {
     // `roughgas restitution` of the ice case on a grid from 1e-10 to 1e5 m/s (w over 15 decades, up
     // to 1e4 at 1e5 m/s): exit 0, every eps^N in [0, 1], and exactly one warning naming the range
-    // where seed 000's app. B fails (g_N > 0.1 c_t = 196 m/s here, or A/t_c > 1). The shipped grid
-    // (1e-4 .. 10 m/s) gives none.
+    // where Brilliantov et al. (1996), appendix B, fails (g_N > 0.1 c_t = 196 m/s here, or
+    // A/t_c > 1). The shipped grid (1e-4 .. 10 m/s) gives none.
     const test::ScratchDir dir;
     const std::string ice = std::string(ROUGHGAS_SOURCE_DIR) + "/cases/ice.toml";
     const std::string common = " --set restitution.g_t_points=2 --set contact.cache=false --force";
@@ -213,7 +213,7 @@ TEST(Stress, TinyAsperitiesAndHugeFrictionTakeBoundedTime) {
     // z = zeta_0/(g_N T) down to 1e-5 (up to ~3e6 asperity breaks in one contact) and mu/kappa up to
     // 1e3 (a stiff asperity spring: up to ~1e4 oscillations): every contact finishes, eps^T is finite,
     // and the break count follows the sliding distance (breaks ~ 1/z). Time per contact, measured on
-    // the development machine (README, Reliability): about 1.2 us per break plus, for an unbroken stiff
+    // the development machine (docs/reliability.md): about 1.2 us per break plus, for an unbroken stiff
     // spring, about 5e-5 s x sqrt(mu/(kappa z)); the step budget (src/contact/contact_driver.hpp)
     // bounds it.
     int previous_breaks = 0;
@@ -261,7 +261,7 @@ TEST(Stress, ViscoelasticCoolingFortyDecadesApproachesTheElasticTheta) {
     // elastic long-time value theta*(alpha = 1, beta = 0.5) of the Maxwellian theory (0.7095 for
     // q = 0.4), from far above it (theta ~ 2 while eps^N is small). Statistics: N = 4000, theta
     // averaged over the last 5 rows; sd of one row's theta ~ sqrt(4/(3N)) = 1.8 %; the Maxwellian
-    // theory is itself an approximation, off by ~2 % at moderate alpha (README). Tolerance 5 %.
+    // theory is itself an approximation, off by ~2 % at moderate alpha (docs/validation.md). Tolerance 5 %.
     const RunSpec s = viscoelastic_cooling(30.0, 4000, 1000);
     ReplicaSummary summary;
     const Rows rows = run(s, 0, &summary);

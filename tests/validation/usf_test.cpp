@@ -1,4 +1,4 @@
-// Uniform shear flow against what must hold (issue 4): symmetry and the steady energy balance,
+// Uniform shear flow against what must hold: symmetry and the steady energy balance,
 // the second order of the Strang splitting, and the elastic limit of the shear viscosity.
 // Every tolerance is stated in standard errors of the sample it runs (batch means over rows about
 // one collision per particle apart, or the spread of independent replicas); seeds are fixed.
@@ -205,9 +205,9 @@ TEST(UsfSplitting, SecondOrderInTheTimeStep) {
 // heating makes the state slowly unsteady, also O(a*^2); so each replica fits
 // eta*(a*) = eta0 + c a*^2 over its rows from a* = 0.22 down to 0.07 (a* falls with T^-1/2;
 // a*^-2 grows by ~0.53 per collision per particle), and eta0 is the mean over 24 replicas, its
-// error their standard error (23 degrees of freedom). With 8 replicas the standard error was ~0.006,
+// error their standard error (23 degrees of freedom). With 8 replicas the standard error is ~0.006,
 // the required resolution itself: over seeds 99, 7, 123 it came out 0.0027, 0.0046, 0.0079 (and
-// 0.0119, 0.0067, 0.0048 after the engine's trajectories changed in issue 5), so the test failed
+// 0.0119, 0.0067, 0.0048 with other engine trajectories), so the test would fail
 // by chance; 24 replicas bring it to ~0.0035. Tolerance: 4 standard errors plus 0.3% for
 // the a*^4 terms the fit leaves out (c a*^4 with |c| ~ 1 at the largest a* = 0.22: 0.25%).
 // The time step is h = 0.1 (splitting error of P*_xy ~0.04% at h = 0.1, measured at a* = 0.78).

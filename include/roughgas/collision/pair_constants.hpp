@@ -1,5 +1,5 @@
 #pragma once
-// Constants of one species pair (a, b), precomputed once per run (style.md §2.1): everything the
+// Constants of one species pair (a, b), precomputed once per run: everything the
 // collision rule and the collision sampling read, so the rule never sees a species.
 #include <cmath>
 #include <numbers>
@@ -9,12 +9,12 @@ namespace roughgas {
 struct GrainProperties {
     double mass = 1;      // m
     double radius = 0.5;  // R
-    double inertia = 0.4; // q = J/(m R^2), physics.md §1
+    double inertia = 0.4; // q = J/(m R^2), docs/model.md §1
 };
 
 struct PairConstants {
     double m_eff = 0;         // m_a m_b/(m_a + m_b)
-    double kappa = 0;         // 1/kappa = 1 + m_eff (1/(q_a m_a) + 1/(q_b m_b)), physics.md §1
+    double kappa = 0;         // 1/kappa = 1 + m_eff (1/(q_a m_a) + 1/(q_b m_b)), docs/model.md §1
     double sigma = 0;         // R_a + R_b: the collision diameter
     double cross_section = 0; // pi sigma^2
     double R_i = 0, R_j = 0;  // radii of the first (i, species a) and second (j, species b) grain

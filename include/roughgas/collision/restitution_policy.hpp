@@ -1,12 +1,12 @@
 #pragma once
 // Restitution policies: how (alpha, beta) follow from the impact (g_N, g_T) for one species pair.
-// Each is a small value type with compile-time traits the collision step reads (style.md §2.2):
+// Each is a small value type with compile-time traits the collision step reads:
 //   needs_rotation: false means beta = -1 always, so the step never loads, stores or updates omega;
 //   needs_g_t:      beta depends on |g^T| (else the rule skips nothing but the look-up).
 // A policy is a normal part (alpha) composed with a tangential part (beta); the run picks one per
 // species pair from dsmc/run_spec.hpp's PairRestitution, once per run.
 //
-// Sign conventions: physics.md §2 (beta = -eps^T: -1 smooth, +1 perfectly rough).
+// Sign conventions: docs/model.md §2 (beta = -eps^T: -1 smooth, +1 perfectly rough).
 #include "roughgas/collision/record.hpp"
 #include "roughgas/contact/contact_integrator.hpp"
 #include "roughgas/restitution/normal_table.hpp"
@@ -19,12 +19,12 @@ namespace roughgas {
 
 // A model's beta outside [-1, 1] is clamped to it (and reported).
 //
-// Physics note: the asperity model (physics.md §7) can return |eps^T| slightly above 1 for nearly
+// Physics note: the asperity model (docs/model.md §7) can return |eps^T| slightly above 1 for nearly
 // elastic normal motion: the tangential spring's stiffness grows with the normal force while it is
 // strained, so the spring is not passive and can hand energy back to the tangential motion
 // (tests/contact/tangential_integrator_test.cpp, StiffeningAsperitySpringCanExceedPerfectReversal:
 // eps^T = -1.24). The collision rule's tangential energy change is (kappa m_eff/2)(beta^2 - 1) g_T^2
-// (physics.md §3), which is positive for |beta| > 1: a collision would create energy. The rule
+// (docs/model.md §3), which is positive for |beta| > 1: a collision would create energy. The rule
 // therefore never applies |beta| > 1: it uses the nearest admissible value and counts the event,
 // so a run reports how often the model left its physical range (column beta_clamped).
 inline Coefficients clamp_beta(double alpha, double beta) {
@@ -42,7 +42,7 @@ struct ConstantNormal {
     double operator()(double /*g_n*/) const { return alpha; }
 };
 
-// Viscoelastic eps^N from the universal table at w = g_N rho^2 tau^5 (physics.md §6).
+// Viscoelastic eps^N from the universal table at w = g_N rho^2 tau^5 (docs/model.md §6).
 struct TableNormal {
     const NormalTable* table = nullptr;
     double w_per_speed = 0; // ContactPair::w_per_speed() of the pair
@@ -71,9 +71,9 @@ struct ConstantTangential {
     Coefficients operator()(double, double, double alpha) const { return {alpha, beta, false}; }
 };
 
-// Walton's friction-limited rough model. The impulse of physics.md §3 has the normal magnitude
+// Walton's friction-limited rough model. The impulse of docs/model.md §3 has the normal magnitude
 // P_N = m_eff (1 + alpha) g_N and the tangential magnitude P_T = kappa m_eff (1 + beta) g_T, with the
-// pair's kappa (physics.md §1, any masses, radii and q). Sticking (beta = beta0) is possible while
+// pair's kappa (docs/model.md §1, any masses, radii and q). Sticking (beta = beta0) is possible while
 // Coulomb's bound P_T <= mu P_N holds, i.e. kappa (1 + beta0) g_T <= mu (1 + alpha) g_N; otherwise the
 // contact slides with P_T = mu P_N exactly, which m_eff cancels from:
 //     beta = -1 + mu (1 + alpha) g_N / (kappa g_T)       (in [-1, beta0) on the sliding branch).
@@ -92,7 +92,7 @@ struct CoulombTangential {
     }
 };
 
-// beta = -eps^T(g_N, g_T) of the asperity model (physics.md §7) from the pair's table.
+// beta = -eps^T(g_N, g_T) of the asperity model (docs/model.md §7) from the pair's table.
 struct TableTangential {
     static constexpr bool needs_rotation = true;
     static constexpr bool needs_g_t = true;
@@ -139,8 +139,8 @@ struct Brilliantov : Restitution<TableNormal, TableTangential> {
     static constexpr std::string_view name = "brilliantov";
 };
 
-// Both coefficients from one integration of the contact per collision (seed 000; the reference
-// for the tables).
+// Both coefficients from one integration of the contact of Brilliantov et al. (1996) per collision (the
+// reference for the tables).
 struct BrilliantovDirect {
     static constexpr std::string_view name = "brilliantov (direct)";
     static constexpr bool needs_rotation = true;

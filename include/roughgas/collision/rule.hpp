@@ -1,5 +1,5 @@
 #pragma once
-// The collision rule of physics.md §3 as a pure function: two grain states, the unit normal n
+// The collision rule of docs/model.md §3 as a pure function: two grain states, the unit normal n
 // (pointing from j to i) and the pair's restitution policy in; the new states and a
 // CollisionRecord out. Unequal species are covered by the pair constants (m_eff, kappa, radii).
 //
@@ -44,7 +44,7 @@ template <class Policy>
     w_j += (pc.spin_j * (1.0 + c.beta)) * n_x_g;
 
     CollisionRecord r;
-    // Translational: sum of (m/2)(|v'|^2 - |v|^2) = P.g_c + |P|^2/(2 m_eff); the total is physics.md §3.
+    // Translational: sum of (m/2)(|v'|^2 - |v|^2) = P.g_c + |P|^2/(2 m_eff); the total is docs/model.md §3.
     r.dE_tr = pc.m_eff * (dot(p, g_c) + 0.5 * norm2(p));
     const double dE =
         0.5 * pc.m_eff *
@@ -59,7 +59,7 @@ template <class Policy>
 }
 
 // Smooth grains (beta = -1), given the normal part g^N = (g . n) n of the relative velocity: only the
-// normal impulse P = -m_eff (1 + alpha) g^N acts (physics.md §3), so n itself is never needed (the
+// normal impulse P = -m_eff (1 + alpha) g^N acts (docs/model.md §3), so n itself is never needed (the
 // hard-sphere kernel draws g^N directly, sampling.hpp). g_n = |g^N|; omega is neither read nor
 // written, and g_t is not evaluated (NaN in the record).
 template <class Policy>

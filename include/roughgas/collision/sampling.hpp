@@ -1,5 +1,5 @@
 #pragma once
-// Sampling of the impact direction (physics.md §4): given a colliding pair with relative velocity
+// Sampling of the impact direction (docs/model.md §4): given a colliding pair with relative velocity
 // g_c = v_i - v_j, the unit normal n (from j to i) lies on the approaching hemisphere g_c . n < 0
 // with density proportional to |g_c^ . n|.
 #include "roughgas/core/rng.hpp"
@@ -38,7 +38,7 @@ template <Generator64 G>
     }
 }
 
-// The normal part g^N = (g_c . n) n of the relative velocity (physics.md §1) at an impact drawn as
+// The normal part g^N = (g_c . n) n of the relative velocity (docs/model.md §1) at an impact drawn as
 // in sample_impact_normal, without forming n: with n = -(g^ + u)/|g^ + u|, g_c . n = -|g_c| |g^ + u|/2,
 // so g^N = (g_c + |g_c| u)/2. No square root and no division: what a smooth collision needs (it
 // acts along g^N only, rule.hpp), drawn from the same numbers as the normal (the test checks both).

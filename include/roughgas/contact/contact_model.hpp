@@ -1,17 +1,17 @@
 #pragma once
 // Which normal-force law and which end-of-contact criterion the contact integrator uses
-// (seed 000 eqs. 24-26; physics.md §6).
+// (Brilliantov et al. (1996) eqs. 24-26; docs/model.md §6).
 #include <array>
 #include <string_view>
 
 namespace roughgas {
 
-// Seed 000 eq. 24 (xi'' + rho (xi^{3/2} + (3/2) A xi^{1/2} xi') = 0) or
+// Brilliantov et al. (1996) eq. 24 (xi'' + rho (xi^{3/2} + (3/2) A xi^{1/2} xi') = 0) or
 // eq. 25 (xi'' + rho (xi + A xi')^{3/2} = 0).
 enum class NormalForm { eq24, eq25 };
 
-// physics.md §6: "force" ends the contact when the total normal force first reaches zero (default,
-// no attraction); "separation" ends it at xi = 0 (seed eq. 26 read literally).
+// docs/model.md §6: "force" ends the contact when the total normal force first reaches zero (default,
+// no attraction); "separation" ends it at xi = 0 (the paper's eq. 26 read literally).
 enum class ContactEnd { force, separation };
 
 struct ContactModel {

@@ -1,5 +1,6 @@
 #pragma once
-// Everything the contact of one species pair depends on, precomputed once (style.md §2.1).
+// Everything the contact of one species pair depends on, precomputed once. Equation numbers:
+// Brilliantov et al. (1996).
 #include "roughgas/contact/contact_model.hpp"
 #include "roughgas/contact/material.hpp"
 
@@ -8,18 +9,18 @@
 namespace roughgas {
 
 struct ContactPair {
-    double m_eff = 0;  // m_i m_j/(m_i + m_j), seed eq. 5 [kg]
-    double R_eff = 0;  // R_i R_j/(R_i + R_j), seed eq. 6 [m]
-    double kappa = 0;  // physics.md §1 (seed eq. 8): 2/7 for equal uniform spheres
-    double rho = 0;    // 2 Y sqrt(R_eff)/(3 m_eff (1 - nu^2)), physics.md §6 [m^{-1/2} s^{-2}]
+    double m_eff = 0;  // m_i m_j/(m_i + m_j), eq. 5 [kg]
+    double R_eff = 0;  // R_i R_j/(R_i + R_j), eq. 6 [m]
+    double kappa = 0;  // docs/model.md §1 (eq. 8): 2/7 for equal uniform spheres
+    double rho = 0;    // 2 Y sqrt(R_eff)/(3 m_eff (1 - nu^2)), docs/model.md §6 [m^{-1/2} s^{-2}]
     double A = 0;      // dissipative constant [s]
     double mu = 0;     // friction coefficient
     double zeta0 = 0;  // asperity scale [m]
     ContactModel model{};
 
-    // physics.md §6: tau = (3/2) A for eq. 24, tau = A for eq. 25.
+    // docs/model.md §6: tau = (3/2) A for eq. 24, tau = A for eq. 25.
     double tau() const { return model.form == NormalForm::eq24 ? 1.5 * A : A; }
-    // The single number eps^N depends on: w = g_N rho^2 tau^5 (physics.md §6).
+    // The single number eps^N depends on: w = g_N rho^2 tau^5 (docs/model.md §6).
     double w_per_speed() const { const double t = tau(); return rho * rho * t * t * t * t * t; }
     double w(double g_n) const { return g_n * w_per_speed(); }
     // Hertz time scale T = rho^{-2/5} g_N^{-1/5}: the elastic contact lasts 3.218... T.

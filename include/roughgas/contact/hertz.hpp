@@ -1,5 +1,5 @@
 #pragma once
-// Closed forms of the elastic (Hertz) contact, used by checks and tests (physics.md §6).
+// Closed forms of the elastic (Hertz) contact, used by checks and tests (docs/model.md §6).
 #include <boost/math/special_functions/beta.hpp>
 #include <cmath>
 

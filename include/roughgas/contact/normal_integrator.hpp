@@ -1,5 +1,5 @@
 #pragma once
-// Integrates the normal contact (seed 000 eqs. 24-26) in Hertz units with Boost.Odeint
+// Integrates the normal contact (Brilliantov et al. (1996) eqs. 24-26) in Hertz units with Boost.Odeint
 // (adaptive Dormand-Prince 5(4) with dense output) and locates the end of the contact as an event.
 #include "roughgas/contact/contact_model.hpp"
 #include "roughgas/contact/contact_result.hpp"

@@ -1,7 +1,8 @@
 #pragma once
-// Right-hand sides of the normal contact problem in Hertz units (physics.md §6).
+// Right-hand sides of the normal contact problem in Hertz units (docs/model.md §6).
 //
-// With xi = g_N T X, t = T S and T = rho^{-2/5} g_N^{-1/5}, both seed equations lose rho and g_N:
+// With xi = g_N T X, t = T S and T = rho^{-2/5} g_N^{-1/5}, both equations of
+// Brilliantov et al. (1996) lose rho and g_N:
 //   eq. 24:  X'' = -X^{1/2} (X + u X')          u = (3/2) A / T = w^{1/5}
 //   eq. 25:  X'' = -sgn(y)|y|^{3/2},  y = X + u X'   u = A / T = w^{1/5}
 // with X(0) = 0, X'(0) = 1. The normal force is proportional to -X''.

@@ -1,14 +1,14 @@
 #pragma once
-// Validity of the quasistatic contact (seed 000, appendix B): the viscoelastic force of eqs. 24-25
-// holds when
+// Validity of the quasistatic contact (Brilliantov et al. (1996), appendix B): the viscoelastic
+// force of eqs. 24-25 holds when
 //   (B11)  (g_N / c_t)^2 << 1,   c_t^2 = Y/(2 (1 + nu) rho_m)   (transverse speed of sound),
 //   (B12)  tau_vis / t_c << 1,   tau_vis ~ A (the material's viscous relaxation time),
 // with t_c the duration of the collision. We take t_c as Hertz's, 3.218 rho^{-2/5} g_N^{-1/5}
-// (physics.md §6; the dissipative contact is shorter, by at most a factor ~2 where B12 holds).
+// (docs/model.md §6; the dissipative contact is shorter, by at most a factor ~2 where B12 holds).
 // Thresholds: g_N/c_t > 0.1 fails B11 plainly (a tenth of the speed of sound). A stands in for
-// tau_vis only up to factors of order one (A = tau_vis times a function of nu, seed eq. 23), and any
+// tau_vis only up to factors of order one (A = tau_vis times a function of nu, the paper's eq. 23), and any
 // clearly inelastic collision has A/t_c ~ u/4.8 = 0.1 .. 1 (e.g. ice, eps^N = 0.5 at a few m/s, the
-// regime the seed fits), so B12 is called failed only where the contact is shorter than A itself
+// regime the paper fits), so B12 is called failed only where the contact is shorter than A itself
 // (A/t_c > 1, eps^N ~< 0.1). Outside, the model still integrates (and the tool says so once), but its
 // numbers are no longer physics.
 #include "roughgas/contact/contact_pair.hpp"

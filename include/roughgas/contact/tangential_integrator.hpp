@@ -1,11 +1,11 @@
 #pragma once
-// Tangential contact with the asperity model (seed 000 eq. 37 made well-defined, physics.md §7),
-// driven by the normal solution and integrated together with it, break to break.
+// Tangential contact with the asperity model (Brilliantov et al. (1996) eq. 37 made well-defined,
+// docs/model.md §7), driven by the normal solution and integrated together with it, break to break.
 //
 // Hertz units as for the normal problem, plus e = eta/zeta_0 (asperity strain) and p = zeta'/g_N:
 //   p' = (mu/kappa) X''(S) e,   e' = p / z,   z = zeta_0/(g_N T)
 //   p(0) = g_T/g_N,  e(0) = 0;  |e| = 1 breaks the asperity: e -> 0.
-// eps^T = p(S_c)/p(0) (seed eq. 38 with zeta' for zeta).
+// eps^T = p(S_c)/p(0) (the paper's eq. 38 with zeta' for zeta).
 // Only a compressive normal force (X'' < 0) loads the asperities: X'' is replaced by min(X'', 0),
 // which matters only in the attractive phase of a `separation` contact (src/contact/contact_ode.hpp,
 // `compressive`). Note that |eps^T| <= 1 is NOT guaranteed by this model: the asperity spring
@@ -26,7 +26,7 @@ struct TangentialParameters {
 
 struct TangentialResult {
     NormalResult normal;
-    double eps_t = 1; // seed convention; in [0, 1] while sliding (turning_points == 0), can leave
+    double eps_t = 1; // the paper's convention; in [0, 1] while sliding (turning_points == 0), can leave
                       // [-1, 1] otherwise (see the top of this file)
     int breaks = 0;
     // Sign changes of p during the contact. Between breaks e' = p/z, so every turning point is a

@@ -1,5 +1,5 @@
 #pragma once
-// Random streams keyed by what they are for, never by thread (style.md §2.10).
+// Random streams keyed by what they are for, never by thread.
 //
 // Boost.Random 1.74 has no counter-based engine, so each stream is a small engine, xoshiro256++
 // (Blackman & Vigna 2019: 256-bit state, period 2^256 - 1, passes BigCrush), whose state is
@@ -8,9 +8,9 @@
 // The engine is a UniformRandomBitGenerator (usable with Boost.Random and <random> distributions)
 // and streams its state with << and >> (what a bit-identical checkpoint needs).
 //
-// The collision loop draws about 20 words per collision, one at a time, and on this project's
-// machine the scalar generator's update was a fifth of that loop's time (issue 5: a throw-away
-// LCG in its place ran 16 % faster for rough and 27 % for smooth grains). Its streams are therefore
+// The collision loop draws about 20 words per collision, one at a time, and the scalar
+// generator's update is a fifth of that loop's time (measured: a throw-away LCG in its place ran
+// 16 % faster for rough and 27 % for smooth grains). Its streams are therefore
 // Xoshiro256ppX8: eight xoshiro256++ generators updated in lock-step (one SIMD instruction per
 // operation for all eight) whose outputs are buffered, so that a draw is a load and an increment.
 #include <array>

@@ -1,11 +1,11 @@
 #pragma once
-// The DSMC collision engine of the homogeneous gas: the hard-sphere kernel of physics.md §4
-// sampled exactly, with the collision rule of physics.md §3, for a store layout `Store`, one
+// The DSMC collision engine of the homogeneous gas: the hard-sphere kernel of docs/model.md §4
+// sampled exactly, with the collision rule of docs/model.md §3, for a store layout `Store`, one
 // restitution policy type `Policy` and, at compile time, one species or a mixture.
 //
 // Kernel. In a gas of number density n simulated by N particles (volume V = N/n), each unordered
 // pair (i, j) of species (a, b) collides at the rate pi sigma_ab^2 |v_i - v_j| / V, the direction n
-// having density proportional to |g^ . n| on the approaching hemisphere (physics.md §4).
+// having density proportional to |g^ . n| on the approaching hemisphere (docs/model.md §4).
 //
 // Exact majorant (sequential thinning). The particles of a species are split into blocks ("speed
 // classes") with a bound b on |v| of every grain in the block. For a pair of blocks (x, y),
@@ -38,7 +38,7 @@
 // statistics do not depend on the step length (tests/dsmc/engine_test.cpp). Each step draws from its
 // own streams (seed, collisions, replica, step, unit), one per group (unit = group index).
 //
-// Groups (issue 5: both cores for one run). With `groups` = G > 1 each step starts with a random
+// Groups (both cores for one run). With `groups` = G > 1 each step starts with a random
 // partition of the grains into G groups: grain i goes to group floor(G h_i / 2^64), h_i the i-th
 // output of a splitmix64 sequence keyed by (seed, partition, replica, step): independent of the
 // state and of everything else, so any two distinct grains share a group with probability 1/G
@@ -597,8 +597,8 @@ class Engine {
     // the trajectory is bitwise independent of the threads and of where run() pauses.
     // Flattened: everything it calls is inlined into it (but the stream's refill, which is marked
     // noinline), whatever else the translation unit holds. Without it GCC's unit-wide inlining budget
-    // decides: adding code for one policy (the flat table cells of session 8) once left the
-    // exponential draw of the constant rough loop out of line, 7 % slower (measured, N = 1e6).
+    // decides, and code added for one policy can move another's: the table policies' flat cells left
+    // the exponential draw of the constant rough loop out of line, 7 % slower (measured, N = 1e6).
     template <class Observer>
     [[gnu::noinline, gnu::flatten]] std::int64_t advance(Group& g, double t_limit, std::int64_t quota, Observer& obs) {
         std::int64_t done = 0;

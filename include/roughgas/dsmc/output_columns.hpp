@@ -1,6 +1,6 @@
 #pragma once
 // The contract between the solver and the writers: an ordered list of named columns with units
-// (interface.md "Output"), and one row of values per output time and replica.
+// (docs/reference.md "Output"), and one row of values per output time and replica.
 #include <functional>
 #include <span>
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 // Particle stores for the collision step. The hot loop picks two random grains per candidate pair,
-// so a store is laid out for one random access per grain (issue 5 item 2; style.md §2.11):
+// so a store is laid out for one random access per grain:
 //
 //   RoughPacked  48 bytes per grain, {v, omega} unpadded: half the grains straddle two lines
 //                (rough policies: default)

@@ -1,5 +1,5 @@
 #pragma once
-// One DSMC run of the homogeneous gas (issue 3): the columns it reports and the run itself.
+// One DSMC run of the homogeneous gas: the columns it reports and the run itself.
 #include "roughgas/dsmc/output_columns.hpp"
 #include "roughgas/dsmc/run_spec.hpp"
 #include "roughgas/observables/histograms.hpp"
@@ -24,7 +24,7 @@ struct HistogramSet {
 };
 using HistogramSink = std::function<void(const HistogramSet&)>;
 
-// Columns of moments.csv for this spec, in the order of interface.md: t, coll_per_particle, T_tr,
+// Columns of moments.csv for this spec, in the order of docs/reference.md: t, coll_per_particle, T_tr,
 // T_rot, theta, a20, a02, a11, A_cw, coll_rate, E_diss_rate, then per species X.NAME and ratios
 // (mixtures). Replica errors (X_err) and theory columns are added by the writer, not here.
 // Definitions (dsmc/run.cpp has the details): coll_per_particle = 2 x collisions / N; coll_rate =

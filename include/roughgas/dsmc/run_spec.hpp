@@ -1,6 +1,6 @@
 #pragma once
 // What one DSMC run needs, as plain values (built from the case file by io/run_spec_from_case.hpp).
-// The physics never sees the parser (style.md §2.4).
+// The physics never sees the parser.
 #include "roughgas/contact/contact_pair.hpp"
 #include "roughgas/contact/tolerance.hpp"
 
@@ -20,7 +20,7 @@ struct SpeciesSpec {
     double temperature = 1, rotational_temperature = 1; // initial T_tr, T_rot (k_B = 1)
 };
 
-// Restitution models of one species pair (interface.md [collision] model = ...).
+// Restitution models of one species pair (docs/reference.md [collision] model = ...).
 struct ConstantRestitution { double alpha = 1, beta = -1; };
 struct CoulombRestitution { double alpha = 1, beta0 = 1, mu = 0; };         // Walton's model
 struct ViscoelasticRestitution { ContactPair pair; double beta = -1; bool direct = false; };
@@ -28,7 +28,7 @@ struct BrilliantovRestitution { ContactPair pair; bool direct = false; };
 using PairRestitution = std::variant<ConstantRestitution, CoulombRestitution, ViscoelasticRestitution,
                                      BrilliantovRestitution>;
 
-// The collision kernel (physics.md §4): hard spheres (each pair at the rate pi sigma^2 |g.n|-weighted,
+// The collision kernel (docs/model.md §4): hard spheres (each pair at the rate pi sigma^2 |g.n|-weighted,
 // i.e. pi sigma^2 |g| in total, n with density |g^.n| on the approaching hemisphere), or the
 // Maxwell model: each pair of species (a, b) at the constant rate pi sigma_ab^2 u_ab/V, u_ab =
 // sqrt((8/pi)(T_a/m_a + T_b/m_b)) at the species' initial temperatures (the hard-sphere rate of
@@ -36,7 +36,7 @@ using PairRestitution = std::variant<ConstantRestitution, CoulombRestitution, Vi
 // closed linear ODEs exactly (observables/theory.hpp).
 enum class CollisionKernel { hard_sphere, maxwell };
 
-// Uniform shear flow u = a y x^ (issue 4, dsmc/shear.hpp).
+// Uniform shear flow u = a y x^ (dsmc/shear.hpp).
 struct ShearSpec {
     double rate = 1;        // a, 1/time
     double time_step = 0.2; // Strang step h in mean free times (at each output interval's start)

@@ -1,12 +1,12 @@
 #pragma once
-// Uniform shear flow u = a y x^ of the homogeneous gas (issue 4), in the frame that moves with the
+// Uniform shear flow u = a y x^ of the homogeneous gas, in the frame that moves with the
 // flow: the state is the peculiar velocities V = v - u(r). Between collisions each grain moves on
 // a straight line, so its peculiar velocity obeys dV_x/dt = -a V_y (the flow under it changes),
 // V_y, V_z and omega unchanged: the exact solution over a time s is V_x -> V_x - a s V_y
 // (stream_shear). Collisions act on V as in the homogeneous gas: in the dilute (Boltzmann) limit
 // the relative velocity of the colliding centres, V_i - V_j + a (y_i - y_j) x^ with
 // y_i - y_j = sigma n_y, is taken as V_i - V_j: the a sigma offset is neglected (it is of the
-// order a sigma/sqrt(T/m), the collisional transfer of a dense gas; README "Uniform shear flow").
+// order a sigma/sqrt(T/m), the collisional transfer of a dense gas; docs/model.md).
 //
 // Splitting (Strang). One step of length h is: stream h/2, collide over h, stream h/2. Consecutive
 // half-streams merge into one stream of h (exact: the streams form a one-parameter group), so a

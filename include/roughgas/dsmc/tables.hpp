@@ -21,7 +21,7 @@ struct TableBuildInfo {
     double seconds = 0;      // wall time of the build or load
 };
 
-// Where persisted tables come from: the physics library cannot read files (style.md §2.4), so the
+// Where persisted tables come from: the physics library cannot read files, so the
 // cache file (io/table_cache_file.hpp) is reached through this interface; io/run_tables.hpp adapts it.
 class TableCache {
   public:

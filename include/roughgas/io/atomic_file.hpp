@@ -1,5 +1,5 @@
 #pragma once
-// Output files appear complete or not at all (style.md §2.12): a crash, a full disk or a kill
+// Output files appear complete or not at all: a crash, a full disk or a kill
 // mid-write leaves the previous file (or none), never a truncated one.
 #include <filesystem>
 #include <string_view>

@@ -1,7 +1,7 @@
 #pragma once
-// The resolved case file as plain values (style.md §2.4): io/case_file.hpp fills these from TOML,
+// The resolved case file as plain values: io/case_file.hpp fills these from TOML,
 // validated and with every default applied, so nothing downstream ever sees the parser.
-// Keys, units, defaults and ranges are listed once, in io/case_schema.hpp (and the README table).
+// Keys, units, defaults and ranges are listed once, in io/case_schema.hpp (and docs/reference.md's table).
 #include "roughgas/contact/contact_model.hpp"
 #include "roughgas/contact/contact_pair.hpp"
 #include "roughgas/contact/material.hpp"
@@ -20,7 +20,7 @@
 namespace roughgas {
 
 // Each enum's names are defined once, next to it, so the schema's "allowed" lists and the
-// parser cannot drift apart (style.md §2.3).
+// parser cannot drift apart.
 enum class RunKind { cooling, shear };
 inline constexpr std::array<std::string_view, 2> run_kind_names{"cooling", "shear"};
 // Values of run.kernel, in the order of CollisionKernel (dsmc/run_spec.hpp).
@@ -81,7 +81,7 @@ struct SpeciesConfig {
     double mass = 0;                     // m (given, or from density)
     std::optional<double> density;      // material density, when the mass came from it
     double radius = 0;                   // R
-    double inertia = 0.4;                // q = J/(m R^2), physics.md §1
+    double inertia = 0.4;                // q = J/(m R^2), docs/model.md §1
     double fraction = 1.0;               // number fraction
     double temperature = 1.0;            // initial T_tr (k_B = 1, energy units)
     double rotational_temperature = 1.0; // initial T_rot
@@ -107,7 +107,8 @@ struct PairConfig {
     friend bool operator==(const PairConfig&, const PairConfig&) = default;
 };
 
-// [material] (SI). The dissipation is always resolved: given, or from eta1 and eta2 by seed eq. 23.
+// [material] (SI). The dissipation is always resolved: given, or from eta1 and eta2 by
+// Brilliantov et al. (1996) eq. 23.
 struct MaterialConfig {
     double young_modulus = 0;       // Y [Pa]
     double poisson_ratio = 0;       // nu

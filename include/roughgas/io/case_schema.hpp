@@ -1,7 +1,7 @@
 #pragma once
-// The one list of case-file keys: type, unit, default, allowed values, description (style.md §2.13).
-// The parser validates against it, the README's key table is generated from it
-// (`roughgas keys`), and tests/io/readme_test.cpp checks that the two agree.
+// The one list of case-file keys: type, unit, default, allowed values, description.
+// The parser validates against it, docs/reference.md's key table is generated from it
+// (`roughgas keys`), and tests/io/reference_test.cpp checks that the two agree.
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -63,7 +63,7 @@ const std::vector<KeySpec>& case_schema();
 const TableSpec* find_table(std::string_view name);
 const KeySpec* find_key(std::string_view path); // schema path, without array indices
 
-// Markdown table (one row per key, schema order) for the README's `## Case file keys` section.
+// Markdown table (one row per key, schema order) for the case-file keys of docs/reference.md.
 std::string case_keys_markdown();
 // Markdown table of the case file's tables.
 std::string case_tables_markdown();

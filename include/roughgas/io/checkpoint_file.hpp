@@ -1,5 +1,5 @@
 #pragma once
-// Checkpoint files of `roughgas run` (README "Checkpoints and restart"), in DIR/checkpoint/:
+// Checkpoint files of `roughgas run` (docs/running.md), in DIR/checkpoint/:
 //
 //   run.bin          the run: program version, the case as the user named it, the --set overrides,
 //                    the resolved case (emit_case: every default filled in), seed, replicas,

@@ -1,5 +1,5 @@
 #pragma once
-// CSV output (interface.md "Output"): '#' lines saying where the numbers came from, one header
+// CSV output (docs/reference.md "Output"): '#' lines saying where the numbers came from, one header
 // line, then rows at full precision ({:.17g}: reads back to the same double). Written atomically.
 #include <cstdint>
 #include <filesystem>

@@ -36,7 +36,7 @@ class HistogramsTable {
     std::vector<double> speed_x_, product_x_, speed_ref_, product_ref_;
 };
 
-// The README table of histograms.csv columns (`roughgas keys --output`).
+// The docs/reference.md table of histograms.csv columns (`roughgas keys --output`).
 std::string histograms_columns_markdown();
 
 } // namespace roughgas

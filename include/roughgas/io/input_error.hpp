@@ -1,5 +1,5 @@
 #pragma once
-// Invalid user input: the CLI maps it to exit status 2 (interface.md). One error may carry several
+// Invalid user input: the CLI maps it to exit status 2 (docs/reference.md). One error may carry several
 // issues, so a user fixing a case file sees every problem of a validation pass at once.
 #include <optional>
 #include <stdexcept>

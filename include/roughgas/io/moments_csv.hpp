@@ -1,5 +1,5 @@
 #pragma once
-// The rows of moments.csv (interface.md "Output"): the solver's columns (dsmc_columns), with
+// The rows of moments.csv (docs/reference.md "Output"): the solver's columns (dsmc_columns), with
 // replicas > 1 each followed by its standard error X_err, then, for constant-restitution runs, the
 // Maxwellian-approximation theory (observables/theory.hpp) at the row's t:
 //   T_tr_theory, T_rot_theory, theta_theory          (over all grains)
@@ -64,7 +64,7 @@ class MomentsTable {
     std::optional<HcsTrajectory> trajectory_;
 };
 
-// The README table of moments.csv columns (`roughgas keys --output`): every column the solver and
+// The docs/reference.md table of moments.csv columns (`roughgas keys --output`): every column the solver and
 // the writer can produce, with its unit (from the code) and meaning; mixture columns with the
 // placeholders NAME (a species) and A, B (two species, A before B).
 std::string moments_columns_markdown();

@@ -1,6 +1,6 @@
 #pragma once
-// The columns of `roughgas restitution`'s DIR/normal.csv and DIR/tangential.csv (interface.md:
-// extend, never rename). The README's column tables are generated from these lists.
+// The columns of `roughgas restitution`'s DIR/normal.csv and DIR/tangential.csv (docs/reference.md:
+// extend, never rename). docs/reference.md's column tables are generated from these lists.
 #include <array>
 #include <string>
 #include <string_view>
@@ -16,7 +16,7 @@ struct ColumnSpec {
 
 inline constexpr std::array<ColumnSpec, 5> normal_columns{{
     {"g_N", "m/s", "normal impact speed"},
-    {"w", "-", "the scaled impact speed w = g_N rho^2 tau^5 that eps_N depends on (physics.md §6)"},
+    {"w", "-", "the scaled impact speed w = g_N rho^2 tau^5 that eps_N depends on (docs/model.md §6)"},
     {"eps_N", "-", "normal restitution coefficient, (g^N)' = -eps_N g^N"},
     {"duration", "s", "contact duration t_c"},
     {"max_compression", "m", "largest compression xi during the contact"},
@@ -25,9 +25,9 @@ inline constexpr std::array<ColumnSpec, 5> normal_columns{{
 inline constexpr std::array<ColumnSpec, 5> tangential_columns{{
     {"g_N", "m/s", "normal impact speed"},
     {"g_T", "m/s", "tangential speed of the contact point before the collision"},
-    {"eps_T", "-", "tangential restitution coefficient of seed 000, (g^T)' = eps_T g^T"},
+    {"eps_T", "-", "tangential restitution coefficient of Brilliantov et al. 1996, (g^T)' = eps_T g^T"},
     {"beta", "-", "beta = -eps_T (the case file's convention: -1 smooth, +1 perfectly rough)"},
-    {"breaks", "-", "number of asperities broken during the contact (physics.md §7)"},
+    {"breaks", "-", "number of asperities broken during the contact (docs/model.md §7)"},
 }};
 
 // Appended when contact.cache = true: the cached tables' value at the same point, so the table error
@@ -44,7 +44,7 @@ template <std::size_t N> std::vector<std::string> column_names(const std::array<
     return names;
 }
 
-// Markdown tables of both files for the README's `## Output` section.
+// Markdown tables of both files for docs/reference.md.
 std::string restitution_columns_markdown();
 
 } // namespace roughgas

@@ -1,5 +1,5 @@
 #pragma once
-// Histograms of the reduced speeds and of the translation-rotation product (issue 3, item 5):
+// Histograms of the reduced speeds and of the translation-rotation product:
 //
 //   c* = |c| sqrt(m/(2 T_tr,s)),   w* = |omega| sqrt(J/(2 T_rot,s)),   c*.w* (the reduced vectors' dot product)
 //

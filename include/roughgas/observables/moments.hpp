@@ -1,5 +1,5 @@
 #pragma once
-// Temperatures and cumulants of physics.md §5, per species and over all particles (k_B = 1):
+// Temperatures and cumulants of docs/model.md §5, per species and over all particles (k_B = 1):
 //
 //   T_tr = (1/3) <m c^2>,  T_rot = (1/3) <J omega^2>,  theta = T_rot/T_tr,   c = v - u
 //   a20 = (4/15) <c*^4> - 1,  a02 = (4/15) <w*^4> - 1,  a11 = (4/9) <c*^2 w*^2> - 1
@@ -9,7 +9,7 @@
 // c* = c/sqrt(2 T_tr/m), w* = omega/sqrt(2 T_rot/J). Per species, T_tr and T_rot are the species'
 // own; over all particles of a mixture, c* = c sqrt(m/(2 T_tr)) with each particle's mass and the
 // mixture's T_tr (likewise w* with each J), and A_cw is taken over these reduced vectors:
-// A_cw = <(c*.w*)^2>/(<c*^2><w*^2>) - 1/3. For one species the reduced form is A_cw of physics.md §5
+// A_cw = <(c*.w*)^2>/(<c*^2><w*^2>) - 1/3. For one species the reduced form is A_cw of docs/model.md §5
 // exactly (the constant factors cancel); for a mixture it is the form that vanishes when every
 // species is Maxwellian at the mixture's temperatures, whatever their m and J (the raw c and omega
 // of light and heavy grains are correlated in size, which gave A_cw = 0.25 for a Maxwellian mixture).

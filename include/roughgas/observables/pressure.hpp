@@ -1,6 +1,6 @@
 #pragma once
 // The kinetic pressure tensor, the mean spin and the reduced quantities of uniform shear flow
-// (issue 4), in the convention of the USF literature (e.g. Montanero & Garzó, Granular Matter 4,
+// in the convention of the USF literature (e.g. Montanero & Garzó, Granular Matter 4,
 // 17 (2002); Santos, Garzó & Dufty, PRE 69, 061303 (2004)):
 //
 //   P_ij = (1/V) sum_k m_k V_k,i V_k,j            kinetic pressure tensor (dilute gas: no collisional part)
@@ -9,7 +9,7 @@
 //                                                  the first-Sonine elastic hard-sphere shear viscosity
 //   a* = a/nu,  P*_ij = P_ij/(n T),  eta* = -P*_xy/a*,  N1* = P*_xx - P*_yy,  N2* = P*_yy - P*_zz
 //
-// with T = T_tr (physics.md §5), p = n T. For equal spheres nu = (4/5) nu_c, nu_c = 4 n sigma^2
+// with T = T_tr (docs/model.md §5), p = n T. For equal spheres nu = (4/5) nu_c, nu_c = 4 n sigma^2
 // sqrt(pi T/m) the Maxwellian collision frequency. Mixtures: nu = (4/5) nu_c with nu_c the
 // Maxwellian collision frequency per grain, averaged over the species, all at the mixture's T:
 //   nu_c = sum_ab x_a x_b n sigma_ab^2 sqrt(8 pi T/m_ab),  m_ab = m_a m_b/(m_a + m_b),

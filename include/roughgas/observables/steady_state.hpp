@@ -1,6 +1,6 @@
 #pragma once
-// The steady part of a time series of output rows, and its averages with batch-means errors
-// (issue 4: "a run can start anywhere and report when it has reached the steady state").
+// The steady part of a time series of output rows, and its averages with batch-means errors, so
+// that a run can start anywhere and report when it has reached the steady state.
 //
 // Criterion (drift). For a candidate start row k0, the window [k0, n) is cut into two halves.
 // The second half's mean of every monitored quantity X gets a batch-means standard error se_2

@@ -1,11 +1,11 @@
 #pragma once
-// Homogeneous cooling with CONSTANT alpha, beta in the Maxwellian approximation (issue 3, item 7):
+// Homogeneous cooling with CONSTANT alpha, beta in the Maxwellian approximation:
 // each species s has a Maxwellian velocity distribution at T_tr,s and an independent Maxwellian
-// spin distribution at T_rot,s (zero mean velocity); the Boltzmann collision integral (physics.md §4)
-// with the collision rule of physics.md §3 then closes into 2S ODEs for the temperatures.
+// spin distribution at T_rot,s (zero mean velocity); the Boltzmann collision integral (docs/model.md §4)
+// with the collision rule of docs/model.md §3 then closes into 2S ODEs for the temperatures.
 //
 // Derivation (k_B = 1; 3-D; grains i of species a, j of species b). Let sigma = R_a + R_b,
-// m_eff = m_a m_b/(m_a + m_b), kappa of physics.md §1, n the unit normal, w = -(v_i - v_j).n > 0,
+// m_eff = m_a m_b/(m_a + m_b), kappa of docs/model.md §1, n the unit normal, w = -(v_i - v_j).n > 0,
 // V = the part of v_i - v_j normal to n, S = (R_a w_i + R_b w_j) x n. Then g^N = -w n,
 // g^T = V - S and the impulse on i is P = a_N w n - a_T g^T, a_N = m_eff (1 + alpha),
 // a_T = kappa m_eff (1 + beta). The energies of i change by
@@ -23,7 +23,7 @@
 //   <dE_tr,i>  = -2 (T_a/m_a)(a_N + a_T) + [a_N^2 s + a_T^2 (s + s_W)]/m_a
 //   <dE_rot,i> = [-2 a_T T_rot,a + a_T^2 (s + s_W)]/(q_a m_a)
 // (their sum over i and j is (m_eff/2)(alpha^2 - 1) 2s + (kappa m_eff/2)(beta^2 - 1) 2(s + s_W),
-// physics.md §3's Delta E averaged, which a test checks) and, with 3 degrees of freedom each,
+// docs/model.md §3's Delta E averaged, which a test checks) and, with 3 degrees of freedom each,
 //   (3/2) dT_tr,a/dt = sum_b nu_ab <dE_tr,i>,   (3/2) dT_rot,a/dt = sum_b nu_ab <dE_rot,i>.
 //
 // Equal spheres (m, sigma = 2R, q; eta = q(1 + beta)/(2(1 + q)), so a_N = m(1 + alpha)/2,
@@ -114,7 +114,7 @@ class HcsTheory {
     void rates(std::span<const double> T_tr, std::span<const double> T_rot, std::span<double> dT_tr,
                std::span<double> dT_rot) const;
 
-    // Mixture temperatures: T_tr = sum_s x_s T_tr,s (physics.md §5 over all grains), likewise T_rot.
+    // Mixture temperatures: T_tr = sum_s x_s T_tr,s (docs/model.md §5 over all grains), likewise T_rot.
     double mixture_T_tr(const HcsTemperatures& T) const;
     double mixture_T_rot(const HcsTemperatures& T) const;
 

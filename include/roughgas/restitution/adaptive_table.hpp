@@ -3,7 +3,7 @@
 // so smooth functions converge as h^5) and two (piecewise bilinear), refined by bisection until
 // the interpolant matches the function at check points within `tol`. A cell that still fails at the
 // maximum depth is marked `direct`: look-ups there return NaN, and the caller evaluates the
-// function itself. So a discontinuity (the jumps of eps^T, physics.md §7) is never interpolated
+// function itself. So a discontinuity (the jumps of eps^T, docs/model.md §7) is never interpolated
 // across: it ends up inside a thin band of direct cells.
 //
 // Build: level by level, all new sample points of a level are evaluated in one batch (the batch
@@ -56,7 +56,7 @@ static_assert(flat_bits < 8, "FlatEntry keeps the depth in 3 bits");
 // cell i (along one axis): that node spans 2^(flat_bits - depth) flat cells. Taken from the index
 // (exact but for the last bit), not as f 2^depth - floor(f 2^depth) after the flat index has been
 // read: only a mask, a conversion and a product wait for the load. The look-up's latency is the
-// collision loop's (issue 5).
+// collision loop's.
 inline double node_coordinate(std::size_t i, double tf, unsigned depth) {
     const unsigned up = static_cast<unsigned>(flat_bits) - depth;
     const double span_inv = std::bit_cast<double>(static_cast<std::uint64_t>(1023 - up) << 52); // 2^-up
@@ -81,7 +81,7 @@ public:
     // The flat cell covering x holds the quartic of its leaf re-expressed in the cell's own
     // coordinate (shifted_quartic in the .cpp), so a look-up is one load and a Horner evaluation; cells of
     // deeper leaves (and direct ones) hold NaN and go down the tree instead. The look-up's latency
-    // is the collision loop's (issue 5).
+    // is the collision loop's.
     double operator()(double x) const {
         const double F = (x - x_lo_) * flat_inv_;
         if (!(F >= 0.0) || F >= flat_n_) return std::numeric_limits<double>::quiet_NaN();
@@ -164,7 +164,7 @@ public:
     // look-up is one 16-byte load and the cell's own coordinates; cells of deeper leaves (and
     // direct ones) hold NaN and go down the tree. The corners are floats: a rounding of at most
     // 2^-24 of |eps^T| <= 1.3 (6e-8 absolute), 400 times below the table's tolerance, for a quarter
-    // of the cache a double would take (issue 5: the look-up's latency is the collision loop's).
+    // of the cache a double would take (the look-up's latency is the collision loop's).
     double operator()(double x, double y) const {
         const double Fx = (x - x_lo_) * flat_inv_x_, Fy = (y - y_lo_) * flat_inv_y_;
         if (!(Fx >= 0.0) || Fx >= flat_nx_d_ || !(Fy >= 0.0) || Fy > flat_ny_d_)

@@ -1,5 +1,5 @@
 #pragma once
-// The universal table eps^N(w) (physics.md §6): one table per (form, end) serves every material
+// The universal table eps^N(w) (docs/model.md §6): one table per (form, end) serves every material
 // and every species pair, since eps^N depends on w = g_N rho^2 tau^5 only.
 //
 // Grid: pseudo-logarithmic, read off the IEEE-754 bits of w. Each binade [2^e, 2^{e+1}) with

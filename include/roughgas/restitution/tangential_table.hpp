@@ -1,6 +1,6 @@
 #pragma once
-// eps^T(g_N, g_T) of one species pair (physics.md §7), tabulated so that it is never interpolated
-// across the onset of asperity breaking (seed 000 Fig. 2) nor across any other jump.
+// eps^T(g_N, g_T) of one species pair (docs/model.md §7), tabulated so that it is never interpolated
+// across the onset of asperity breaking (Brilliantov et al. (1996) Fig. 2) nor across any other jump.
 //
 // Below the onset, g_T < g_T,cr(g_N), no asperity breaks and the tangential motion is linear in g_T:
 // eps^T = eps_unbroken(g_N), a function of g_N alone. The onset g_T,cr = c(g_N) g_N, where
@@ -58,7 +58,7 @@ public:
         return std::isnan(v) ? direct_.eps_t(g_n, g_t) : v;
     }
     // NaN where the look-up would fall back to the direct integrator.
-    // The collision loop waits for this result (its latency is the loop's, issue 5), so the
+    // The collision loop waits for this result (its latency is the loop's), so the
     // division g_N/g_T runs beside the critical look-up instead of after it: y = g_T,cr/g_T is
     // c (g_N/g_T), and the band tests compare y (g_T < g_T,cr (1 - band) <=> y > 1/(1 - band)).
     // The 1-D tables read their cell off the bits of g_N (AdaptiveTable1D::at_speed): the critical

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Redraws the pictures in docs/ from the shipped cases, each with the command named in the doc
+# that shows it (about two minutes on two cores, most of it the ice cases' eps^T tables):
+#   docs/ice_normal.png        roughgas restitution cases/ice.toml, plot_restitution.py --bridges
+#   docs/fig2c_tangential.png  roughgas restitution cases/ice_fig2c.toml, plot_restitution.py
+#   docs/hcs_mixture.png       roughgas run cases/hcs_mixture.toml, plot.py
+#   docs/usf_rough.png         roughgas run cases/usf_rough.toml, plot_shear.py
+#   docs/usf_sweep_alpha.png   roughgas sweep of cases/usf_rough.toml over alpha, plot_shear.py --sweep
+# docs/accuracy.png is the work-precision study of docs/accuracy.md (scripts/bench_accuracy.py,
+# minutes of CPU): it is not redrawn here.
+# Usage: scripts/docs_figures.sh [WORK_DIR]   (default out/docs_figures; the build must exist)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+work="${1:-$root/out/docs_figures}"
+roughgas="${ROUGHGAS_BUILD_DIR:-$root/build}/roughgas"
+py="$root/scripts/python3"
+mkdir -p "$work"
+
+"$roughgas" restitution "$root/cases/ice.toml" --out "$work/ice" --force
+"$py" "$root/scripts/plot_restitution.py" "$work/ice" --bridges
+cp "$work/ice/normal.png" "$root/docs/ice_normal.png"
+
+"$roughgas" restitution "$root/cases/ice_fig2c.toml" --out "$work/ice_fig2c" --force
+"$py" "$root/scripts/plot_restitution.py" "$work/ice_fig2c"
+cp "$work/ice_fig2c/tangential.png" "$root/docs/fig2c_tangential.png"
+
+"$roughgas" run "$root/cases/hcs_mixture.toml" --out "$work/hcs_mixture" --force --quiet
+"$py" "$root/scripts/plot.py" "$work/hcs_mixture"
+cp "$work/hcs_mixture/moments.png" "$root/docs/hcs_mixture.png"
+
+"$roughgas" run "$root/cases/usf_rough.toml" --out "$work/usf_rough" --force --quiet
+"$py" "$root/scripts/plot_shear.py" "$work/usf_rough"
+cp "$work/usf_rough/moments_shear.png" "$root/docs/usf_rough.png"
+
+"$roughgas" sweep "$root/cases/usf_rough.toml" --param collision.alpha=0.5:0.95:10 --out "$work/usf_alpha" \
+    --force --quiet --set run.particles=20000 --set run.end=200 --set run.replicas=1 \
+    --set species.0.temperature=0.03 --set species.0.rotational_temperature=0.007
+"$py" "$root/scripts/plot_shear.py" --sweep "$work/usf_alpha"
+cp "$work/usf_alpha/sweep.png" "$root/docs/usf_sweep_alpha.png"
+
+echo "docs_figures: redrew docs/ice_normal.png, fig2c_tangential.png, hcs_mixture.png, usf_rough.png, usf_sweep_alpha.png"
