@@ -4,6 +4,10 @@
 // Order of work: validate the case and the output directory, compute everything, then create DIR
 // and write both files atomically, so invalid input or a failed integration writes nothing.
 #include "commands.hpp"
+
+#include "roughgas/core/available_cpus.hpp"
+
+#include <omp.h>
 #include "quasistatic_warning.hpp"
 
 #include "roughgas/contact/contact_integrator.hpp"
@@ -15,7 +19,6 @@
 #include "roughgas/restitution/tangential_table.hpp"
 
 #include <fmt/format.h>
-#include <omp.h>
 
 #include <cmath>
 #include <exception>
@@ -151,7 +154,7 @@ int run_restitution(const RestitutionOptions& o) {
     const RestitutionGridConfig& gc = cfg.restitution;
     const std::vector<double> g_n = grid(gc.g_n_min, gc.g_n_max, gc.g_n_points, gc.spacing);
     const std::vector<double> g_t = grid(gc.g_t_min, gc.g_t_max, gc.g_t_points, gc.spacing);
-    const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
+    const int threads = o.threads > 0 ? o.threads : default_threads();
     omp_set_num_threads(threads); // the table builds use the same threads
     warn_if_not_quasistatic(cfg, i, j, g_n, "[restitution] grid", std::cerr);
 

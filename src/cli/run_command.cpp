@@ -15,6 +15,10 @@
 // out byte for byte as from the run without a stop. SIGINT/SIGTERM (stop_signals.hpp) stop every
 // replica at its next boundary with a checkpoint, write the CSV so far and exit 128 + the signal.
 #include "commands.hpp"
+
+#include "roughgas/core/available_cpus.hpp"
+
+#include <omp.h>
 #include "output_dir_lock.hpp"
 #include "progress.hpp"
 #include "quasistatic_warning.hpp"
@@ -32,7 +36,6 @@
 #include "roughgas/io/steady_csv.hpp"
 
 #include <fmt/format.h>
-#include <omp.h>
 
 #include <algorithm>
 #include <atomic>
@@ -156,7 +159,8 @@ int run_run(const RunOptions& o, const CLI::App& app) {
     } catch (const std::invalid_argument& e) { // a valid case the solver cannot run
         throw std::runtime_error(e.what());
     }
-    spec.threads = o.threads > 0 ? o.threads : omp_get_max_threads();
+    spec.threads = o.threads > 0 ? o.threads : default_threads();
+    omp_set_num_threads(spec.threads); // the table builds use the same threads
     // The contact model's range at the start (the hottest moment of a cooling run): the rms impact
     // speed of each pair with a contact model, sqrt(3 (T_a/m_a + T_b/m_b)), and three times it (the tail).
     if (!o.quiet) {

@@ -14,6 +14,8 @@
 // no sweep.csv is written (a summary with points missing would read as the whole sweep), and the
 // exit status is 128 + the signal's number. A sweep has no checkpoints: run it again to redo it.
 #include "commands.hpp"
+
+#include "roughgas/core/available_cpus.hpp"
 #include "output_dir_lock.hpp"
 #include "stop_signals.hpp"
 
@@ -26,7 +28,6 @@
 #include "roughgas/io/steady_csv.hpp"
 
 #include <fmt/format.h>
-#include <omp.h>
 
 #include <algorithm>
 #include <charconv>
@@ -160,7 +161,7 @@ int run_sweep(const SweepOptions& o) {
     lock.lock(dir);
 
     const int threads =
-        std::min<int>(o.threads > 0 ? o.threads : omp_get_max_threads(), static_cast<int>(s.count));
+        std::min<int>(o.threads > 0 ? o.threads : default_threads(), static_cast<int>(s.count));
     std::vector<PointResult> results(values.size());
     std::vector<char> done(values.size(), 0);
     std::exception_ptr error;

@@ -183,17 +183,16 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
     std::vector<Vec3> spin; // shear: omega - Omega, so that T_rot is about the mean spin
     // On the replica's threads (the engine's): a row streams the whole store from memory twice,
     // which takes as long as the collisions between two rows where rows are dense.
-    const int threads = std::max(1, spec.threads);
+    WorkerTeam* const team = spec.threads > 1 ? &engine.team() : nullptr;
     const auto moments_now = [&](Vec3& Omega) {
         if (!spec.shear)
-            return compute_moments(engine.store().velocities(), engine.store().angular_velocities(), slices,
-                                   threads);
+            return compute_moments(engine.store().velocities(), engine.store().angular_velocities(), slices, team);
         const Vec3Column w = engine.store().angular_velocities();
         Omega = mean_spin(w, slices);
         spin.resize(N);
         for (std::size_t i = 0; i < N; ++i)
             spin[i] = w[i] - Omega;
-        return compute_moments(engine.store().velocities(), column_of(spin.data(), 0), slices, threads);
+        return compute_moments(engine.store().velocities(), column_of(spin.data(), 0), slices, team);
     };
 
     const auto emit = [&] {

@@ -1,5 +1,7 @@
 #include "roughgas/observables/moments.hpp"
 
+#include "roughgas/core/worker_team.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -87,18 +89,32 @@ Vec3 weighted_mean(Vec3Column x, std::span<const SpeciesSlice> species, double S
 }
 
 Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesSlice> species, int threads) {
+    if (threads <= 1)
+        return compute_moments(v, omega, species, nullptr);
+    WorkerTeam team(threads);
+    return compute_moments(v, omega, species, &team);
+}
+
+Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesSlice> species, WorkerTeam* team) {
     Moments m;
     m.species.resize(species.size());
     const std::vector<Chunk> chunks = chunks_of(species);
-    const auto K = static_cast<std::ptrdiff_t>(chunks.size());
-    const bool parallel = threads > 1 && K > 1;
+    const std::size_t K = chunks.size();
+    // Each chunk writes its own sums, combined in chunk order: the same bits on any team.
+    const auto for_chunks = [&](auto&& f) {
+        if (team) {
+            team->for_each(K, f);
+        } else {
+            for (std::size_t k = 0; k < K; ++k)
+                f(k);
+        }
+    };
 
     // Pass 1, per chunk: its sum of v, its sum of |v - mean|^2 about its own mean (a second loop
     // over the chunk, in cache) and its sum of |omega|^2.
     std::vector<FirstSums> first(chunks.size());
-#pragma omp parallel for schedule(static) num_threads(threads) if (parallel)
-    for (std::ptrdiff_t k = 0; k < K; ++k) {
-        const Chunk& ch = chunks[static_cast<std::size_t>(k)];
+    for_chunks([&](std::size_t k) {
+        const Chunk& ch = chunks[k];
         FirstSums f;
         for (std::size_t i = ch.begin; i < ch.end; ++i) {
             f.sum += v[i];
@@ -107,8 +123,8 @@ Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesS
         const Vec3 mean = (1.0 / static_cast<double>(ch.end - ch.begin)) * f.sum;
         for (std::size_t i = ch.begin; i < ch.end; ++i)
             f.m2 += norm2(v[i] - mean);
-        first[static_cast<std::size_t>(k)] = f;
-    }
+        first[k] = f;
+    });
 
     // The centre-of-mass velocity u (mass-weighted), then each species' sum of |v - u|^2 from its
     // chunks' (Chan, Golub & LeVeque 1979): sum over a chunk of |v - u|^2 = m2 + n |mean - u|^2.
@@ -170,9 +186,8 @@ Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesS
                      rot_all ? std::sqrt(sp.moment_of_inertia / (2.0 * m.all.T_rot)) : 0.0};
     }
     std::vector<Sums> own_of(chunks.size()), all_of(chunks.size());
-#pragma omp parallel for schedule(static) num_threads(threads) if (parallel)
-    for (std::ptrdiff_t k = 0; k < K; ++k) {
-        const Chunk& ch = chunks[static_cast<std::size_t>(k)];
+    for_chunks([&](std::size_t k) {
+        const Chunk& ch = chunks[k];
         const Scales& f = scales[ch.species];
         Sums own, all;
         for (std::size_t i = ch.begin; i < ch.end; ++i) {
@@ -181,9 +196,9 @@ Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesS
             add(own, f.sc * c, f.sw * w);
             add(all, f.sc_all * c, f.sw_all * w);
         }
-        own_of[static_cast<std::size_t>(k)] = own;
-        all_of[static_cast<std::size_t>(k)] = all;
-    }
+        own_of[k] = own;
+        all_of[k] = all;
+    });
     std::vector<Sums> own(species.size());
     Sums all;
     for (std::size_t k = 0; k < chunks.size(); ++k) {

@@ -88,6 +88,7 @@
 #include "roughgas/core/huge_page_buffer.hpp"
 #include "roughgas/core/prefetch.hpp"
 #include "roughgas/core/rng.hpp"
+#include "roughgas/core/worker_team.hpp"
 #include "roughgas/dsmc/species.hpp"
 
 #include <boost/random/exponential_distribution.hpp>
@@ -99,6 +100,7 @@
 #include <cstdint>
 #include <exception>
 #include <limits>
+#include <memory>
 #include <new>
 #include <numbers>
 #include <stdexcept>
@@ -115,7 +117,7 @@ struct EngineOptions {
     std::uint64_t replica = 0;
     int speed_classes = 2; // blocks per species, 1 .. 6 (no influence on the statistics)
     int groups = 1;        // per-step random partition into groups (1: none); results depend on it
-    int threads = 1;       // OpenMP threads over the groups: no influence on the results
+    int threads = 1;       // threads over the groups and chunks (WorkerTeam): no influence on the results
 };
 
 enum class StopReason { collisions, time, stalled };
@@ -217,6 +219,7 @@ class Engine {
             throw std::invalid_argument("Engine: groups must be in 1 .. 4096");
         if (opt_.threads < 1)
             throw std::invalid_argument("Engine: threads must be >= 1");
+        team_ = std::make_unique<WorkerTeam>(opt_.threads);
         volume_ = static_cast<double>(n) / opt_.density;
         K_ = static_cast<std::size_t>(opt_.speed_classes);
         G_ = static_cast<std::size_t>(opt_.groups);
@@ -331,12 +334,16 @@ class Engine {
             g.t_next = t_;
     }
 
-    // OpenMP threads over the groups (no influence on the results).
+    // Threads over the groups and chunks (no influence on the results).
     void set_threads(int threads) {
         if (threads < 1)
             throw std::invalid_argument("Engine: threads must be >= 1");
+        if (threads != opt_.threads)
+            team_ = std::make_unique<WorkerTeam>(threads);
         opt_.threads = threads;
     }
+    // The replica's threads, for other passes over its grains (the rows' moments).
+    WorkerTeam& team() { return *team_; }
 
     double time() const { return t_; }
     std::int64_t collisions() const {
@@ -765,19 +772,11 @@ class Engine {
                 advance(groups_[g], t_phase, std::numeric_limits<std::int64_t>::max(), obs_of(g));
             return;
         }
-        std::exception_ptr error;
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-        for (std::int64_t g = 0; g < G; ++g) {
-            try {
-                advance(groups_[g], t_phase, std::numeric_limits<std::int64_t>::max(), obs_of(g));
-            } catch (...) {
-#pragma omp critical(roughgas_engine_error)
-                if (!error)
-                    error = std::current_exception();
-            }
-        }
-        if (error)
-            std::rethrow_exception(error);
+        // Units claimed dynamically: a thread that is waiting for a time slice holds no group
+        // and delays nothing (core/worker_team.hpp).
+        team_->for_each(static_cast<std::size_t>(G), [&](std::size_t g) {
+            advance(groups_[g], t_phase, std::numeric_limits<std::int64_t>::max(), obs_of(g));
+        });
     }
 
     // The position in block b that 32 random bits u give by multiply-shift, without Lemire's
@@ -950,6 +949,17 @@ class Engine {
         g.inv_rate = total > 0 ? 1.0 / total : std::numeric_limits<double>::infinity();
     }
 
+    // f(ch) for every chunk ch in [0, C): on the team's threads (each chunk writes only its own
+    // outputs, combined in chunk order afterwards, so the results do not depend on the threads).
+    template <class F> void for_chunks(std::size_t C, F&& f) {
+        if (opt_.threads > 1 && C > 1) {
+            team_->for_each(C, f);
+        } else {
+            for (std::size_t ch = 0; ch < C; ++ch)
+                f(ch);
+        }
+    }
+
     // Refreshes the partition, the classes, bounds and frame, sets the step length, and starts the
     // groups' streams. Pass 1 reads every grain once (statistics, bucket sizes, each grain's bucket
     // (group, class) into a 16-bit key per grain); pass 2 writes the positions (perm_) bucket by
@@ -982,12 +992,10 @@ class Engine {
             cmax2_.assign(C * B, 0.0);
             csum2_.assign(C, 0.0);
             cps_.assign(C, Vec3{});
-            const int threads = C > 1 ? opt_.threads : 1;
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-            for (std::int64_t ch = 0; ch < static_cast<std::int64_t>(C); ++ch) {
-                const std::size_t lo = sp.offset + static_cast<std::size_t>(ch) * chunk_grains;
+            for_chunks(C, [&](std::size_t ch) {
+                const std::size_t lo = sp.offset + ch * chunk_grains;
                 const std::size_t hi = std::min(lo + chunk_grains, sp.offset + n_s);
-                std::uint32_t* count = &ccount_[static_cast<std::size_t>(ch) * B];
+                std::uint32_t* count = &ccount_[ch * B];
                 double* max2 = &cmax2_[static_cast<std::size_t>(ch) * B];
                 double sum2 = 0;
                 Vec3 ps{};
@@ -1010,9 +1018,9 @@ class Engine {
                     sum2 += v2;
                     ps += v;
                 }
-                csum2_[static_cast<std::size_t>(ch)] = sum2;
-                cps_[static_cast<std::size_t>(ch)] = ps;
-            }
+                csum2_[ch] = sum2;
+                cps_[ch] = ps;
+            });
             std::fill(count_.begin(), count_.end(), 0);
             std::fill(max2_.begin(), max2_.end(), 0.0);
             double sum2 = 0;
@@ -1042,11 +1050,10 @@ class Engine {
                 b.bound2 = max2_[q];
                 b.bound = sqrt_nonneg(max2_[q]);
             }
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-            for (std::int64_t ch = 0; ch < static_cast<std::int64_t>(C); ++ch) {
-                const std::size_t lo = sp.offset + static_cast<std::size_t>(ch) * chunk_grains;
+            for_chunks(C, [&](std::size_t ch) {
+                const std::size_t lo = sp.offset + ch * chunk_grains;
                 const std::size_t hi = std::min(lo + chunk_grains, sp.offset + n_s);
-                std::uint32_t* next = &ccount_[static_cast<std::size_t>(ch) * B];
+                std::uint32_t* next = &ccount_[ch * B];
                 if (B > 1) {
                     // Each bucket's positions are written in increasing order, one stream per bucket
                     // (G K of them, 64 at N = 1e6): too many for the hardware prefetchers, so each
@@ -1066,7 +1073,7 @@ class Engine {
                     for (std::size_t i = lo; i < hi; ++i)
                         perm_[i] = static_cast<std::uint32_t>(i);
                 }
-            }
+            });
             mv2_[s] = sp.grain.mass * sum2;
             mv2_all += mv2_[s];
             momentum += sp.grain.mass * ps;
@@ -1145,6 +1152,7 @@ class Engine {
     std::vector<double> thermal_speed_; // per species: sqrt(<v^2>/3) at the last step start
     std::vector<double> maxwell_speed_; // per species pair: u_ab of the Maxwell kernel
     std::vector<Group> groups_;
+    std::unique_ptr<WorkerTeam> team_; // the threads of this replica (opt_.threads - 1 workers)
     // perm_[p]: the grain at position p. Blocks are ranges of positions; the grains stay where they are.
     // On huge pages: stage 1 of the prefetch (take_candidate) reads random entries of it.
     HugePageBuffer<std::uint32_t> perm_;

@@ -29,6 +29,8 @@
 
 namespace roughgas {
 
+class WorkerTeam;
+
 // Species s occupies the index range [offset, offset + count) of the columns.
 struct SpeciesSlice {
     std::size_t offset = 0, count = 0;
@@ -52,9 +54,10 @@ struct Moments {
 // moment_of_inertia: the mean spin); 0 when the weights sum to 0.
 Vec3 weighted_mean(Vec3Column x, std::span<const SpeciesSlice> species, double SpeciesSlice::*weight);
 
-// Two passes over the grains, in fixed chunks: with `threads` > 1 the chunks are summed on that many
-// OpenMP threads; the result does not depend on it (bitwise).
+// Two passes over the grains, in fixed chunks: with `threads` > 1 (or a team) the chunks are
+// summed on that many threads; the result does not depend on it (bitwise).
 Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesSlice> species,
                         int threads = 1);
+Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesSlice> species, WorkerTeam* team);
 
 } // namespace roughgas

@@ -1,0 +1,74 @@
+#pragma once
+// A team of threads for the parallel loops of one replica: `for_each(units, fn)` calls fn(u) once
+// for every work unit u in [0, units), on the calling thread and the team's workers, and returns
+// when every unit is done.
+//
+// Why not an OpenMP parallel region. On a machine shared with other processes (a compile, a
+// second run, a browser) a thread of ours is often waiting for a time slice. An OpenMP region ends
+// when every thread has *arrived* at its barrier, and libgomp's waiting threads spin by default:
+// a run on two threads beside one busy process took 10x its one-thread time (measured, N = 1e5,
+// a row per collision per particle; docs/performance.md). Here:
+//  - units are claimed dynamically, and a job is complete when every *unit* is done: a worker that
+//    has not been scheduled yet holds no unit and delays nothing (the caller does its share);
+//  - a thread with nothing to do spins only briefly, then yields and sleeps on a futex
+//    (std::atomic::wait), so it leaves its core to whoever needs it.
+// Which thread runs a unit never matters for the results: callers give each unit its own outputs
+// (and random streams keyed by the unit), combined in unit order.
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <type_traits>
+#include <vector>
+
+namespace roughgas {
+
+class WorkerTeam {
+  public:
+    // `threads` - 1 workers (none for threads <= 1: for_each then runs every unit in the caller).
+    explicit WorkerTeam(int threads);
+    ~WorkerTeam();
+    WorkerTeam(const WorkerTeam&) = delete;
+    WorkerTeam& operator=(const WorkerTeam&) = delete;
+
+    int threads() const { return static_cast<int>(workers_.size()) + 1; }
+
+    // Calls fn(u) for u in [0, units), each once, on any of the team's threads; returns when all
+    // are done. The first exception thrown by fn is rethrown here (the other units still run).
+    // Not reentrant: fn must not call for_each of the same team.
+    template <class F> void for_each(std::size_t units, F&& fn) {
+        if (units == 0)
+            return;
+        if (workers_.empty() || units == 1) {
+            for (std::size_t u = 0; u < units; ++u)
+                fn(u);
+            return;
+        }
+        using Fn = std::remove_reference_t<F>;
+        run_job(
+            units, [](void* f, std::size_t u) { (*static_cast<Fn*>(f))(u); },
+            const_cast<void*>(static_cast<const void*>(std::addressof(fn))));
+    }
+
+  private:
+    using Call = void (*)(void*, std::size_t);
+    void run_job(std::size_t units, Call call, void* ctx);
+    void work(std::uint64_t generation); // claims and runs units of the given job
+    void worker_loop();
+
+    // The job: published by storing its claim word (generation, units, next unit 0; worker_team.cpp).
+    std::atomic<Call> call_{nullptr};
+    std::atomic<void*> ctx_{nullptr};
+    std::atomic<std::uint64_t> claim_{0};
+    std::atomic<std::uint64_t> generation_{0}; // the latest job; workers sleep on it
+    std::atomic<std::size_t> done_{0};         // units of the current job completed
+    std::atomic<bool> stop_{false};
+    std::mutex error_mutex_;
+    std::exception_ptr error_;
+    std::vector<std::thread> workers_;
+};
+
+} // namespace roughgas

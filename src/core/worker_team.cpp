@@ -1,0 +1,123 @@
+#include "roughgas/core/worker_team.hpp"
+
+#include <stdexcept>
+#include <utility>
+
+namespace roughgas {
+
+namespace {
+
+// A short spin before sleeping: a job of the collision loop follows the previous one within
+// microseconds when the machine is idle (a futex wake costs a few microseconds more), and a spin
+// this short costs a shared core nothing noticeable.
+constexpr int spin_iterations = 2000;
+
+inline void cpu_relax() {
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#endif
+}
+
+// Waits until `a` differs from `old`: spins briefly, yields a few times (a thread of another
+// process on this core gets it), then sleeps on a futex.
+template <class T> void wait_while_equal(const std::atomic<T>& a, T old) {
+    for (int i = 0; i < spin_iterations; ++i) {
+        if (a.load(std::memory_order_acquire) != old)
+            return;
+        cpu_relax();
+    }
+    for (int i = 0; i < 4; ++i) {
+        if (a.load(std::memory_order_acquire) != old)
+            return;
+        std::this_thread::yield();
+    }
+    while (a.load(std::memory_order_acquire) == old)
+        a.wait(old, std::memory_order_acquire);
+}
+
+} // namespace
+
+WorkerTeam::WorkerTeam(int threads) {
+    for (int t = 1; t < threads; ++t)
+        workers_.emplace_back([this] { worker_loop(); });
+}
+
+WorkerTeam::~WorkerTeam() {
+    stop_.store(true, std::memory_order_release);
+    generation_.fetch_add(1, std::memory_order_acq_rel);
+    generation_.notify_all();
+    for (std::thread& w : workers_)
+        w.join();
+}
+
+// The claim word: generation (24 bits) | units (20 bits) | next unit (20 bits). A claim is valid
+// only for the job it names, and a job's call and context are read after a successful claim, when
+// the job cannot have ended (its claimed unit is not done), so they are that job's.
+namespace {
+constexpr std::uint64_t unit_bits = 20;
+constexpr std::uint64_t unit_mask = (std::uint64_t{1} << unit_bits) - 1;
+std::uint64_t claim_word(std::uint64_t generation, std::uint64_t units) {
+    return ((generation & 0xffffffULL) << (2 * unit_bits)) | (units << unit_bits);
+}
+} // namespace
+
+void WorkerTeam::work(std::uint64_t generation) {
+    std::uint64_t c = claim_.load(std::memory_order_acquire);
+    for (;;) {
+        const std::uint64_t units = (c >> unit_bits) & unit_mask, next = c & unit_mask;
+        // A claim of another job (this worker woke late) or past the end: nothing to do here.
+        if ((c >> (2 * unit_bits)) != (generation & 0xffffffULL) || next >= units)
+            return;
+        if (!claim_.compare_exchange_weak(c, c + 1, std::memory_order_acq_rel, std::memory_order_acquire))
+            continue;
+        const Call call = call_.load(std::memory_order_acquire);
+        void* const ctx = ctx_.load(std::memory_order_acquire);
+        try {
+            call(ctx, static_cast<std::size_t>(next));
+        } catch (...) {
+            const std::lock_guard<std::mutex> lock(error_mutex_);
+            if (!error_)
+                error_ = std::current_exception();
+        }
+        if (done_.fetch_add(1, std::memory_order_acq_rel) + 1 == units)
+            done_.notify_one();
+        c = claim_.load(std::memory_order_acquire);
+    }
+}
+
+void WorkerTeam::worker_loop() {
+    std::uint64_t seen = 0;
+    for (;;) {
+        wait_while_equal(generation_, seen);
+        seen = generation_.load(std::memory_order_acquire);
+        if (stop_.load(std::memory_order_acquire))
+            return;
+        work(seen);
+    }
+}
+
+void WorkerTeam::run_job(std::size_t units, Call call, void* ctx) {
+    if (units > unit_mask)
+        throw std::length_error("WorkerTeam: more than 2^20 - 1 units in one job");
+    const std::uint64_t generation = generation_.load(std::memory_order_relaxed) + 1;
+    call_.store(call, std::memory_order_relaxed);
+    ctx_.store(ctx, std::memory_order_relaxed);
+    done_.store(0, std::memory_order_relaxed);
+    claim_.store(claim_word(generation, units), std::memory_order_release);
+    generation_.store(generation, std::memory_order_release);
+    generation_.notify_all();
+    work(generation);
+    // Every unit is claimed; wait for those still running on a worker.
+    for (std::size_t d = done_.load(std::memory_order_acquire); d != units; d = done_.load(std::memory_order_acquire))
+        wait_while_equal(done_, d);
+    if (error_) {
+        std::exception_ptr e;
+        {
+            const std::lock_guard<std::mutex> lock(error_mutex_);
+            e = std::exchange(error_, nullptr);
+        }
+        std::rethrow_exception(e);
+    }
+}
+
+} // namespace roughgas

@@ -1,0 +1,75 @@
+// WorkerTeam: every unit of every job runs exactly once, whatever thread runs it and however the
+// threads are scheduled; exceptions reach the caller; a job ends when its units are done, not when
+// every thread has arrived.
+#include "roughgas/core/worker_team.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+namespace roughgas {
+namespace {
+
+TEST(WorkerTeam, EveryUnitOfEveryJobRunsOnce) {
+    for (const int threads : {1, 2, 3, 5}) {
+        WorkerTeam team(threads);
+        EXPECT_EQ(team.threads(), threads);
+        std::vector<std::atomic<int>> runs(257);
+        // Many short jobs back to back (where a late worker could meet the next job) and a few
+        // large ones; unit counts 1, 2, ..., 257.
+        for (int job = 0; job < 4000; ++job) {
+            const std::size_t units = 1 + static_cast<std::size_t>(job) % runs.size();
+            for (std::size_t u = 0; u < units; ++u)
+                runs[u].store(0, std::memory_order_relaxed);
+            team.for_each(units, [&](std::size_t u) { runs[u].fetch_add(1, std::memory_order_relaxed); });
+            for (std::size_t u = 0; u < units; ++u)
+                ASSERT_EQ(runs[u].load(), 1) << "threads " << threads << ", job " << job << ", unit " << u;
+        }
+    }
+}
+
+TEST(WorkerTeam, TheFirstExceptionReachesTheCallerAndTheTeamGoesOn) {
+    WorkerTeam team(2);
+    std::atomic<int> ran{0};
+    EXPECT_THROW(team.for_each(16,
+                               [&](std::size_t u) {
+                                   ran.fetch_add(1);
+                                   if (u == 7)
+                                       throw std::runtime_error("unit 7");
+                               }),
+                 std::runtime_error);
+    EXPECT_EQ(ran.load(), 16); // the other units still ran
+    ran = 0;
+    team.for_each(16, [&](std::size_t) { ran.fetch_add(1); });
+    EXPECT_EQ(ran.load(), 16);
+}
+
+// A unit that takes long on one thread does not hold up the rest: the other threads take every
+// other unit meanwhile (dynamic claiming), so the job takes about the long unit's time.
+TEST(WorkerTeam, UnitsAreClaimedDynamically) {
+    WorkerTeam team(2);
+    std::vector<std::thread::id> who(41);
+    team.for_each(who.size(), [&](std::size_t u) {
+        if (u == 0)
+            std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        else
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        who[u] = std::this_thread::get_id();
+    });
+    int with_unit_0 = 0;
+    for (std::size_t u = 1; u < who.size(); ++u)
+        with_unit_0 += who[u] == who[0];
+    EXPECT_LE(with_unit_0, 5) << "the thread with the 200 ms unit also ran " << with_unit_0 << " of the 2 ms units";
+}
+
+TEST(WorkerTeam, RefusesMoreUnitsThanItCanCount) {
+    WorkerTeam team(2);
+    EXPECT_THROW(team.for_each(std::size_t{1} << 20, [](std::size_t) {}), std::length_error);
+}
+
+} // namespace
+} // namespace roughgas
