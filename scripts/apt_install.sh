@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
 # Installs the given Debian packages that are missing (apt-get; sudo when not root). Quiet and
 # idempotent. `--base` adds what every roughgas build needs (the list is kept here only).
+# Usage: scripts/apt_install.sh [--base] [PACKAGE]...
 set -euo pipefail
+for a in "$@"; do
+  case "$a" in -h | --help) sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0"; exit 0 ;; esac
+done
 base=(g++ cmake make ninja-build pkg-config libeigen3-dev libfftw3-dev libboost-dev libboost-math-dev
       libgtest-dev libbenchmark-dev libtomlplusplus-dev libcli11-dev libfmt-dev
       python3-numpy python3-matplotlib)

@@ -9,9 +9,11 @@ import resource
 import subprocess
 import time
 
-# Idle OpenMP threads sleep instead of spinning: on a machine shared with other work a spinning
-# thread takes CPU from the thread it waits for (measured: 2 threads 3x slower than 1 at load 4 on
-# 2 cores with libgomp's default spinning; same CPU time per collision as 1 thread when passive).
+# Idle OpenMP threads (roughgas's loops over replicas, sweep points and table builds; a replica's
+# own threads always wait passively) sleep instead of spinning: on a machine shared with other work
+# a spinning thread takes CPU from the thread it waits for (measured with OpenMP threads inside a
+# replica: 2 threads 3x slower than 1 at load 4 on 2 cores with libgomp's default spinning; same
+# CPU time per collision as 1 thread when passive).
 BENCH_ENV = {**os.environ, "OMP_WAIT_POLICY": os.environ.get("OMP_WAIT_POLICY", "passive")}
 
 
@@ -136,3 +138,8 @@ def run_roughgas(roughgas, case, out, sets=(), threads=1):
     cpu = (usage1.ru_utime + usage1.ru_stime) - (usage0.ru_utime + usage0.ru_stime)
     return {"seconds": float(m.group(1)), "cpu_seconds": cpu, "process_seconds": wall, "load_before": load0,
             "load_after": load1, "stdout": r.stdout}
+
+
+if __name__ == "__main__":
+    # A module, not a command: run directly (with or without -h/--help) it prints what it holds.
+    print(__doc__)

@@ -3,6 +3,7 @@
 # the errors and "NAME: build failed (full log: LOG)" on stderr and exits 1. Used by setup.sh,
 # sanitize.sh and fuzz.sh.
 set -euo pipefail
+case "${1:-}" in -h | --help) sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0"; exit 0 ;; esac
 name="$1" log="$2"
 shift 2
 mkdir -p "$(dirname "$log")"

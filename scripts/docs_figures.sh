@@ -10,6 +10,10 @@
 # minutes of CPU): it is not redrawn here.
 # Usage: scripts/docs_figures.sh [WORK_DIR]   (default out/docs_figures; the build must exist)
 set -euo pipefail
+case "${1:-}" in
+  -h | --help) sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0"; exit 0 ;;
+  -*) echo "docs_figures.sh: unknown option $1 (usage: scripts/docs_figures.sh [WORK_DIR])" >&2; exit 2 ;;
+esac
 root=$(cd "$(dirname "$0")/.." && pwd)
 work="${1:-$root/out/docs_figures}"
 roughgas="${ROUGHGAS_BUILD_DIR:-$root/build}/roughgas"

@@ -86,6 +86,9 @@ def fit(log_w, eps, c_ref, a_ref):
 
 
 def main(argv):
+    if "-h" in argv[1:] or "--help" in argv[1:]:
+        print(__doc__)
+        return 0
     args = [a for a in argv[1:] if not a.startswith("--")]
     roughgas = os.environ.get("ROUGHGAS", os.path.join(ROOT, "build", "roughgas"))
     if "--roughgas" in argv:

@@ -4,7 +4,11 @@
 # "fuzz", build dir build-fuzz/). The seed corpus is cases/*.toml, copied to a scratch directory
 # (the inputs libFuzzer adds go there, never into cases/). Exit 0: no crash, no sanitizer report.
 # Prints the corpus size and the number of runs (docs/reliability.md quotes them).
+# Usage: scripts/fuzz.sh [SECONDS]
 set -euo pipefail
+for a in "$@"; do
+  case "$a" in -h | --help) sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0"; exit 0 ;; esac
+done
 root=$(cd "$(dirname "$0")/.." && pwd)
 seconds="${1:-60}"
 "$root/scripts/apt_install.sh" --base clang libclang-rt-14-dev libomp-14-dev

@@ -134,7 +134,10 @@ def main(argv):
             opts[a] = True
         else:
             args.append(a)
-    if len(args) != 1 or opts.get("--x") not in (None, "t", "coll") or "--help" in opts:
+    if "--help" in opts or "-h" in args:
+        print(__doc__)
+        return 0
+    if len(args) != 1 or opts.get("--x") not in (None, "t", "coll"):
         print(__doc__, file=sys.stderr)
         return 2
     csv_path = args[0]

@@ -26,6 +26,9 @@ STYLES = ["-", "--", ":", "-."]
 
 
 def main(argv):
+    if "-h" in argv or "--help" in argv:
+        print(__doc__)
+        return 0
     args = [a for a in argv if not a.startswith("--")]
     check = "--check" in argv
     out = None
@@ -83,4 +86,4 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    main(sys.argv[1:])
+    sys.exit(main(sys.argv[1:]))

@@ -149,7 +149,10 @@ def main(argv):
             opts[a] = True
         else:
             args.append(a)
-    if len(args) != 1 or "--help" in opts:
+    if "--help" in opts or "-h" in args:
+        print(__doc__)
+        return 0
+    if len(args) != 1:
         print(__doc__, file=sys.stderr)
         return 2
     sweep = "--sweep" in opts

@@ -29,7 +29,7 @@ def species_names(d):
 
 
 def main(argv):
-    parser = argparse.ArgumentParser(description="Print columns of one row of a roughgas CSV with their errors.")
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("csv", help="a CSV written by roughgas (moments.csv, steady.csv, sweep.csv, ...)")
     parser.add_argument("columns", nargs="+", help="column names")
     parser.add_argument("--row", type=int, default=-1, help="row index (default -1: the last)")

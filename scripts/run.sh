@@ -6,7 +6,11 @@
 #  - every case: `roughgas run` (the DSMC, cooling or shear) writes moments.csv (and steady.csv for
 #    shear) and scripts/plot.py (cooling) or scripts/plot_shear.py (shear) draws it.
 # Results go to out/<case>/ (or $ROUGHGAS_OUT); earlier results there are replaced.
+# Usage: scripts/run.sh [CASE]
 set -euo pipefail
+for a in "$@"; do
+  case "$a" in -h | --help) sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0"; exit 0 ;; esac
+done
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/setup.sh"
 case_file="${1:-$root/cases/ice.toml}"

@@ -13,7 +13,9 @@
 # 165-196 s); they are spread over five files that compile on both cores (src/dsmc/drive_*.cpp).
 # ROUGHGAS_SANITIZE_PRESET=sanitize-address builds AddressSanitizer only (build-sanitize-address/):
 # .ci/run chooses it on a machine too slow for both sanitizers within its 20 minutes.
+# Usage: scripts/sanitize.sh [CTEST_ARGS]   (extra arguments go to ctest)
 set -euo pipefail
+case "${1:-}" in -h | --help) sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0"; exit 0 ;; esac
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/apt_install.sh" --base
 cd "$root"

@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
 # Installs what roughgas needs from Debian's packages (only what is missing) and builds Release into build/.
 # Idempotent and quiet when everything is already there.
+# Usage: scripts/setup.sh
 set -euo pipefail
+for a in "$@"; do
+  case "$a" in -h | --help) sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0"; exit 0 ;; esac
+done
 root=$(cd "$(dirname "$0")/.." && pwd)
 
 "$root/scripts/apt_install.sh" --base

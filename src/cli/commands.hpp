@@ -18,10 +18,15 @@ Subcommand add_run_command(CLI::App& parent);
 Subcommand add_check_command(CLI::App& parent);
 Subcommand add_restitution_command(CLI::App& parent);
 Subcommand add_sweep_command(CLI::App& parent);
+Subcommand add_merge_command(CLI::App& parent);
 Subcommand add_keys_command(CLI::App& parent); // prints the generated tables of docs/reference.md
 
 // The tables of command-line options of `root` and each of its subcommands (docs/reference.md).
 std::string cli_options_markdown(const CLI::App& root);
+
+// `roughgas run --resume DIR` (run_command.cpp): continues the run stored in DIR/checkpoint, or,
+// when every replica there has finished, only writes its CSVs.
+int resume_finished_run(const std::string& dir, int threads, bool quiet);
 
 // `--set KEY=VALUE`, repeatable, one value per occurrence (so it cannot swallow CASE.toml).
 inline CLI::Option* add_set_option(CLI::App& app, std::vector<std::string>& sets) {

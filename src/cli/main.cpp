@@ -17,7 +17,7 @@ int run_cli(int argc, char** argv) {
     app.require_subcommand(1);
     const std::vector<Subcommand> commands = {add_run_command(app), add_check_command(app),
                                               add_restitution_command(app), add_sweep_command(app),
-                                              add_keys_command(app)};
+                                              add_merge_command(app), add_keys_command(app)};
     // The options are in --help; everything else a user scripts against is in the reference.
     const std::string footer = "Reference (commands, options, case-file keys, output columns, exit codes): "
                                "docs/reference.md in the roughgas sources.";

@@ -212,7 +212,7 @@ Subcommand add_restitution_command(CLI::App& parent) {
     app->add_option("--out", o->out, "output directory (normal.csv, tangential.csv)")->required();
     add_set_option(*app, o->sets);
     app->add_flag("--force", o->force, "overwrite normal.csv and tangential.csv in an existing DIR");
-    app->add_option("--threads", o->threads, "OpenMP threads (default: all)")->check(CLI::PositiveNumber);
+    app->add_option("--threads", o->threads, "threads (default: the CPUs this process may use)")->check(CLI::PositiveNumber);
     return {app, [o] { return run_restitution(*o); }};
 }
 

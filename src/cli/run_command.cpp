@@ -68,7 +68,40 @@ struct RunOptions {
     bool force = false;
     double checkpoint_every = 0;
     std::string resume;
+    std::string replicas; // --replicas FROM:TO
+    bool seed_given = false, checkpoint_every_given = false;
 };
+
+// --replicas FROM:TO: the replicas FROM, FROM + 1, ..., TO - 1 of run.replicas (0-based).
+std::pair<std::uint64_t, std::uint64_t> replica_range(const std::string& text, std::uint64_t replicas) {
+    const auto refuse = [&] {
+        return InputError("", "--replicas",
+                          fmt::format("--replicas {}: give FROM:TO with 0 <= FROM < TO <= run.replicas = {} "
+                                      "(the replicas FROM .. TO - 1)",
+                                      text, replicas));
+    };
+    const std::size_t colon = text.find(':');
+    if (colon == std::string::npos)
+        throw refuse();
+    std::uint64_t from = 0, to = 0;
+    try {
+        std::size_t used = 0;
+        const std::string a = text.substr(0, colon), b = text.substr(colon + 1);
+        if (a.empty() || b.empty() || a[0] == '-' || b[0] == '-')
+            throw refuse();
+        from = std::stoull(a, &used);
+        if (used != a.size())
+            throw refuse();
+        to = std::stoull(b, &used);
+        if (used != b.size())
+            throw refuse();
+    } catch (const std::logic_error&) {
+        throw refuse();
+    }
+    if (!(from < to && to <= replicas))
+        throw refuse();
+    return {from, to};
+}
 
 // Never overwrite earlier results by accident: that is an input error, reported before any work.
 // A checkpoint of an earlier run counts too: it is continued with --resume, or replaced with --force.
@@ -107,11 +140,11 @@ struct RunSetup {
     OutputDirLock lock; // held from the first check of the directory to the end of the run
 };
 
-RunSetup new_run(const RunOptions& o, const CLI::App& app) {
+RunSetup new_run(const RunOptions& o) {
     if (o.case_file.empty() || o.out.empty())
         throw InputError("", "", "roughgas run: give CASE.toml and --out DIR, or --resume DIR");
     std::vector<std::string> sets = o.sets;
-    if (app.count("--seed") > 0)
+    if (o.seed_given)
         sets.push_back("run.seed=" + std::to_string(o.seed)); // --seed is --set run.seed=S
     RunSetup s;
     s.cfg = load_case(o.case_file, sets, CaseUse::run); // invalid input: exit 2
@@ -126,10 +159,14 @@ RunSetup new_run(const RunOptions& o, const CLI::App& app) {
                       static_cast<std::uint64_t>(s.cfg.run.replicas),
                       static_cast<std::uint64_t>(s.cfg.run.particles)};
     s.manifest.checkpoint_every = o.checkpoint_every;
+    s.manifest.replica_from = 0;
+    s.manifest.replica_to = s.manifest.run.replicas;
+    if (!o.replicas.empty())
+        std::tie(s.manifest.replica_from, s.manifest.replica_to) = replica_range(o.replicas, s.manifest.run.replicas);
     return s;
 }
 
-RunSetup resume_run(const RunOptions& o, const CLI::App& app) {
+RunSetup resume_run(const RunOptions& o) {
     RunSetup s;
     s.lock.lock_if_exists(o.resume, "--resume"); // the run may still be going on in another process
     ResumedRun r = read_resumable_run(o.resume); // refusals: exit 2, nothing written
@@ -138,17 +175,17 @@ RunSetup resume_run(const RunOptions& o, const CLI::App& app) {
     s.manifest = std::move(r.manifest);
     s.resuming = true;
     s.resumed = std::move(r.replicas);
-    if (app.count("--checkpoint-every") > 0 && o.checkpoint_every != s.manifest.checkpoint_every) {
+    if (o.checkpoint_every_given && o.checkpoint_every != s.manifest.checkpoint_every) {
         s.manifest.checkpoint_every = o.checkpoint_every;
         s.manifest_changed = true;
     }
     return s;
 }
 
-int run_run(const RunOptions& o, const CLI::App& app) {
+int run_run(const RunOptions& o) {
     // First: the signals are blocked in every thread started from here on (the OpenMP pool too).
     const StopSignals signals("run", "stopping at the next step, writing a checkpoint and the CSV so far");
-    RunSetup setup = o.resume.empty() ? new_run(o, app) : resume_run(o, app);
+    RunSetup setup = o.resume.empty() ? new_run(o) : resume_run(o);
     const CaseConfig& cfg = setup.cfg;
     const fs::path& dir = setup.dir;
     const double checkpoint_every = setup.manifest.checkpoint_every;
@@ -177,6 +214,12 @@ int run_run(const RunOptions& o, const CLI::App& app) {
             }
     }
     const int K = spec.replicas;
+    // The replicas this process runs: all, or the range of --replicas (a part of an ensemble whose
+    // replica files `roughgas merge` combines; no CSV here: its rows are not the ensemble's).
+    const int from = static_cast<int>(setup.manifest.replica_from);
+    const int to = setup.manifest.replica_to > 0 ? static_cast<int>(setup.manifest.replica_to) : K;
+    const bool partial = from > 0 || to < K;
+    const auto in_range = [&](int r) { return r >= from && r < to; };
 
     MomentsTable table(spec);
     // Nothing here may differ between a run and its resumption (the CSVs must be byte-identical):
@@ -234,7 +277,7 @@ int run_run(const RunOptions& o, const CLI::App& app) {
         fs::remove_all(checkpoint_dir(dir), ec);
     }
     CheckpointWriter checkpoints(dir, setup.manifest, setup.resuming && !setup.manifest_changed);
-    if (checkpoint_every > 0) // a kill before the first replica checkpoint still leaves a resumable run
+    if (checkpoint_every > 0 || partial) // a kill before the first replica checkpoint still leaves a resumable run
         checkpoints.write_manifest_once();
     const fs::path path = dir / output_file;
     const fs::path hpath = dir / histograms_file;
@@ -310,19 +353,19 @@ int run_run(const RunOptions& o, const CLI::App& app) {
                                  std::move(state));
     };
 
-    ProgressLine progress(o.quiet ? nullptr : &std::cerr, K, ::isatty(STDERR_FILENO) == 1);
+    ProgressLine progress(o.quiet ? nullptr : &std::cerr, to - from, ::isatty(STDERR_FILENO) == 1);
     std::vector<ReplicaSummary> summaries(static_cast<std::size_t>(K));
     std::vector<char> final_saved(static_cast<std::size_t>(K), 0);
-    for (int r = 0; r < K; ++r)
+    for (int r = from; r < to; ++r)
         if (finished[static_cast<std::size_t>(r)]) {
             final_saved[static_cast<std::size_t>(r)] = 1; // its file says so already
-            progress.update(r, cfg.run.end, cfg.run.end, 0);
+            progress.update(r - from, cfg.run.end, cfg.run.end, 0);
         }
     std::atomic<bool> cancel{false};
     std::exception_ptr error;
     // --threads T is shared: min(T, K) replicas at a time, each with T/min(T, K) threads over the
     // groups of its steps (dsmc/engine.hpp). Neither changes the results.
-    const int threads = std::min(spec.threads, K);
+    const int threads = std::min(spec.threads, to - from);
     spec.threads = std::max(1, spec.threads / threads);
     if (threads > 1 && spec.threads > 1)
         omp_set_max_active_levels(2);
@@ -332,8 +375,8 @@ int run_run(const RunOptions& o, const CLI::App& app) {
         try {
             if (cancel)
                 throw Cancelled{};
-            if (finished[k] || signals.requested()) // done in an earlier run; or stopped before it started
-                continue;
+            if (!in_range(r) || finished[k] || signals.requested()) // another process's; done in an
+                continue;                                        // earlier run; or stopped before it started
             const RowSink sink = [&, r](std::span<const double> row) {
                 if (cancel)
                     throw Cancelled{};
@@ -343,7 +386,7 @@ int run_run(const RunOptions& o, const CLI::App& app) {
                 flush(false);
             };
             const ProgressSink report = [&, r](double done, double end, double coll) {
-                progress.update(r, done, end, coll);
+                progress.update(r - from, done, end, coll);
             };
             HistogramSink hsink;
             if (htable) {
@@ -371,7 +414,7 @@ int run_run(const RunOptions& o, const CLI::App& app) {
             }
             if (end == ReplicaEnd::finished) {
                 finished[k] = 1;
-                if (checkpoint_every > 0) { // a resume will not run it again
+                if (checkpoint_every > 0 || partial) { // a resume (or merge) will not run it again
                     save_replica(r, {});
                     final_saved[k] = 1;
                 }
@@ -399,13 +442,13 @@ int run_run(const RunOptions& o, const CLI::App& app) {
                 fmt::format("{}; the {} rows before it are in {}", e.what(), on_disk, path.string()));
         }
     }
-    if (std::find(finished.begin(), finished.end(), 0) != finished.end()) {
+    if (std::find(finished.begin() + from, finished.begin() + to, 0) != finished.begin() + to) {
         // Stopped by a signal: the running replicas saved their states; the finished ones save their
         // rows now, so that a resume runs neither again (not-started ones start afresh).
         checkpoints.write_manifest_once();
-        if (on_disk == 0)
+        if (on_disk == 0 && !partial)
             csv.write(path); // the header, even when no row is complete yet: the run's file exists
-        for (int r = 0; r < K; ++r)
+        for (int r = from; r < to; ++r)
             if (finished[static_cast<std::size_t>(r)] && !final_saved[static_cast<std::size_t>(r)])
                 save_replica(r, {});
         std::cerr << fmt::format("roughgas run: stopped by {}: {} complete rows in {}; checkpoint in {}; "
@@ -413,6 +456,12 @@ int run_run(const RunOptions& o, const CLI::App& app) {
                                  signals.name(), csv.rows(), path.string(), checkpoint_dir(dir).string(),
                                  dir.string());
         return 128 + signals.signal();
+    }
+    if (partial) {
+        std::cout << fmt::format("roughgas run: replicas {} .. {} of {} finished: {} (combine the ranges with "
+                                 "roughgas merge DIR... --out DIR)\n",
+                                 from, to - 1, K, checkpoint_dir(dir).string());
+        return exit_ok;
     }
 
     std::string steady_note;
@@ -479,7 +528,7 @@ Subcommand add_run_command(CLI::App& parent) {
     CLI::Option* seed = app->add_option("--seed", o->seed, "random seed (overrides run.seed)");
     app->add_option(
            "--threads", o->threads,
-           "threads for the replicas and within each replica (default: all; results do not depend on it)")
+           "threads for the replicas and within each replica (default: the CPUs this process may use; results do not depend on it)")
         ->check(CLI::PositiveNumber);
     app->add_flag("--quiet", o->quiet, "no progress output");
     CLI::Option* force = app->add_flag(
@@ -487,14 +536,26 @@ Subcommand add_run_command(CLI::App& parent) {
     app->add_option("--checkpoint-every", o->checkpoint_every,
                     "save each replica's state to DIR/checkpoint every X collisions per particle")
         ->check(CLI::PositiveNumber);
-    app->add_option("--resume", o->resume,
-                    "continue the run in DIR from DIR/checkpoint (its case, seed, --set)")
-        ->excludes(case_opt)
-        ->excludes(out)
-        ->excludes(set)
-        ->excludes(seed)
-        ->excludes(force);
-    return {app, [o, app] { return run_run(*o, *app); }};
+    CLI::Option* resume = app->add_option("--resume", o->resume,
+                                          "continue the run in DIR from DIR/checkpoint (its case, seed, --set)");
+    resume->excludes(case_opt)->excludes(out)->excludes(set)->excludes(seed)->excludes(force);
+    app->add_option("--replicas", o->replicas,
+                    "run only the replicas FROM .. TO-1 of run.replicas (0-based), writing DIR/checkpoint "
+                    "for `roughgas merge` instead of the CSVs")
+        ->excludes(resume);
+    return {app, [o, app] {
+                o->seed_given = app->count("--seed") > 0;
+                o->checkpoint_every_given = app->count("--checkpoint-every") > 0;
+                return run_run(*o);
+            }};
+}
+
+int resume_finished_run(const std::string& dir, int threads, bool quiet) {
+    RunOptions o;
+    o.resume = dir;
+    o.threads = threads;
+    o.quiet = quiet;
+    return run_run(o);
 }
 
 } // namespace roughgas::cli

@@ -263,7 +263,7 @@ Subcommand add_sweep_command(CLI::App& parent) {
     app->add_option("--out", o->out, "output directory")->required();
     add_set_option(*app, o->sets);
     app->add_option("--threads", o->threads,
-                    "threads over the points (default: all; results do not depend on it)")
+                    "threads over the points (default: the CPUs this process may use; results do not depend on it)")
         ->check(CLI::PositiveNumber);
     app->add_flag("--quiet", o->quiet, "no progress output");
     app->add_flag("--force", o->force, "overwrite an existing output directory");

@@ -142,7 +142,11 @@ std::string checkpoint_difference(const CheckpointRun& f, const CheckpointRun& e
 }
 
 std::string encode_checkpoint(const RunCheckpoint& c) {
-    return encode(Kind::run, c.run, 0, [&](ByteWriter& w) { w.f64(c.checkpoint_every); });
+    return encode(Kind::run, c.run, 0, [&](ByteWriter& w) {
+        w.f64(c.checkpoint_every);
+        w.u64(c.replica_from);
+        w.u64(c.replica_to);
+    });
 }
 
 std::string encode_checkpoint(const ReplicaCheckpoint& c) {
@@ -168,7 +172,11 @@ std::string encode_checkpoint(const ReplicaCheckpoint& c) {
 
 RunCheckpoint decode_run_checkpoint(std::string_view bytes) {
     return decode<RunCheckpoint>(bytes, Kind::run,
-                                 [](ByteReader& r, RunCheckpoint& c) { c.checkpoint_every = r.f64(); });
+                                 [](ByteReader& r, RunCheckpoint& c) {
+                                     c.checkpoint_every = r.f64();
+                                     c.replica_from = r.u64();
+                                     c.replica_to = r.u64();
+                                 });
 }
 
 ReplicaCheckpoint decode_replica_checkpoint(std::string_view bytes) {

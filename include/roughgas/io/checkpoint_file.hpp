@@ -44,6 +44,9 @@ std::string checkpoint_difference(const CheckpointRun& file, const CheckpointRun
 struct RunCheckpoint {
     CheckpointRun run;
     double checkpoint_every = 0; // collisions per particle; 0: checkpoints only on a stop
+    // The replicas this directory runs, [replica_from, replica_to) (`roughgas run --replicas`); a
+    // range that is not all of them writes no CSV (`roughgas merge` combines the ranges). 0, 0: all.
+    std::uint64_t replica_from = 0, replica_to = 0;
 };
 
 struct ReplicaCheckpoint {
@@ -59,7 +62,7 @@ struct CheckpointError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-inline constexpr std::uint64_t checkpoint_format_version = 3;
+inline constexpr std::uint64_t checkpoint_format_version = 4;
 
 std::string encode_checkpoint(const RunCheckpoint& c);
 std::string encode_checkpoint(const ReplicaCheckpoint& c);

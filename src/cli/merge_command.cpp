@@ -1,0 +1,144 @@
+// roughgas merge DIR... --out OUT: combines the replica ranges of one run (`roughgas run --replicas
+// FROM:TO`, each in its own directory: a Slurm job array, GNU parallel, several machines) into the
+// files one run of all replicas writes, byte for byte.
+//
+// Every DIR's checkpoint must belong to the same run (program version, case, overrides, seed,
+// replicas, particles), its range must have finished, and the ranges must cover every replica
+// exactly once: anything else is refused with exit 2 before anything is written. OUT/checkpoint
+// then holds the run and every finished replica's file, and the CSVs are written as
+// `roughgas run --resume OUT` writes them for a run whose replicas have all finished (the rows of
+// each replica, combined in replica order: the same bytes as the run in one process).
+#include "commands.hpp"
+
+#include "output_dir_lock.hpp"
+
+#include "roughgas/io/atomic_file.hpp"
+#include "roughgas/io/checkpoint_file.hpp"
+#include "roughgas/io/input_error.hpp"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <system_error>
+#include <vector>
+
+namespace roughgas::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct MergeOptions {
+    std::vector<std::string> dirs;
+    std::string out;
+    int threads = 0;
+    bool quiet = false;
+    bool force = false;
+};
+
+RunCheckpoint read_run(const fs::path& dir) {
+    const fs::path file = run_checkpoint_path(dir);
+    try {
+        return decode_run_checkpoint(read_checkpoint_bytes(file));
+    } catch (const std::exception& e) {
+        throw InputError(file.string(), "merge", fmt::format("{}: cannot merge: {}", file.string(), e.what()));
+    }
+}
+
+int run_merge(const MergeOptions& o) {
+    // Every range: the same run, finished, each replica once.
+    std::vector<RunCheckpoint> runs;
+    for (const std::string& d : o.dirs)
+        runs.push_back(read_run(d));
+    const CheckpointRun& run = runs[0].run;
+    const std::uint64_t K = run.replicas;
+    std::vector<int> owner(K, -1);
+    std::vector<std::string> replica_bytes(K);
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        const fs::path dir = o.dirs[i];
+        if (const std::string d = checkpoint_difference(runs[i].run, run); !d.empty())
+            throw InputError(dir.string(), "merge",
+                             fmt::format("{}: another run than {} ({})", dir.string(), o.dirs[0], d));
+        const std::uint64_t from = runs[i].replica_from, to = runs[i].replica_to > 0 ? runs[i].replica_to : K;
+        for (std::uint64_t r = from; r < to; ++r) {
+            if (owner[r] >= 0)
+                throw InputError(dir.string(), "merge",
+                                 fmt::format("replica {} is in both {} and {}", r, o.dirs[owner[r]], dir.string()));
+            const fs::path file = replica_checkpoint_path(dir, r);
+            ReplicaCheckpoint c;
+            try {
+                replica_bytes[r] = read_checkpoint_bytes(file);
+                c = decode_replica_checkpoint(replica_bytes[r]);
+            } catch (const std::exception& e) {
+                throw InputError(file.string(), "merge",
+                                 fmt::format("{}: cannot merge: {} (continue that range with roughgas run "
+                                             "--resume {})",
+                                             file.string(), e.what(), dir.string()));
+            }
+            if (const std::string d = checkpoint_difference(c.run, run); !d.empty() || c.replica != r)
+                throw InputError(file.string(), "merge",
+                                 fmt::format("{}: not replica {} of this run ({})", file.string(), r,
+                                             d.empty() ? fmt::format("replica {}", c.replica) : d));
+            if (!c.state.empty())
+                throw InputError(file.string(), "merge",
+                                 fmt::format("{}: replica {} has not finished (continue it with roughgas run "
+                                             "--resume {})",
+                                             file.string(), r, dir.string()));
+            owner[r] = static_cast<int>(i);
+        }
+    }
+    std::vector<std::string> missing;
+    for (std::uint64_t r = 0; r < K; ++r)
+        if (owner[r] < 0)
+            missing.push_back(std::to_string(r));
+    if (!missing.empty())
+        throw InputError(o.dirs[0], "merge",
+                         fmt::format("replica{} {} of {} in none of the directories (run them with roughgas "
+                                     "run --replicas FROM:TO)",
+                                     missing.size() > 1 ? "s" : "", fmt::join(missing, ", "), K));
+
+    // OUT: a checkpoint of the whole run with every replica finished; then its CSVs.
+    const fs::path out = o.out;
+    {
+        OutputDirLock lock;
+        lock.lock_if_exists(out);
+        if (fs::exists(out) && !fs::is_directory(out))
+            throw InputError(out.string(), "--out", "--out " + out.string() + ": exists and is not a directory");
+        for (const fs::path p : {checkpoint_dir(out), out / "moments.csv"})
+            if (!o.force && fs::exists(p))
+                throw InputError(out.string(), "--out",
+                                 fmt::format("--out {}: {} exists (use --force to overwrite)", out.string(),
+                                             p.string()));
+        fs::create_directories(checkpoint_dir(out));
+        lock.lock(out);
+        for (const auto& e : fs::directory_iterator(checkpoint_dir(out))) // --force: no stale replica files
+            fs::remove(e.path());
+        RunCheckpoint whole = runs[0];
+        whole.replica_from = 0;
+        whole.replica_to = K;
+        whole.checkpoint_every = 0;
+        write_file_atomically(run_checkpoint_path(out), encode_checkpoint(whole));
+        for (std::uint64_t r = 0; r < K; ++r)
+            write_file_atomically(replica_checkpoint_path(out, r), replica_bytes[r]);
+    } // the lock is released: the resume below takes it again
+    return resume_finished_run(out.string(), o.threads, o.quiet);
+}
+
+} // namespace
+
+Subcommand add_merge_command(CLI::App& parent) {
+    auto o = std::make_shared<MergeOptions>();
+    CLI::App* app = parent.add_subcommand(
+        "merge", "combine the replica ranges of one run (roughgas run --replicas FROM:TO, one directory each) "
+                 "into the files one run of all replicas writes");
+    app->add_option("DIR", o->dirs, "the directories of the ranges (their checkpoint/)")->required();
+    app->add_option("--out", o->out, "output directory (moments.csv, histograms.csv, steady.csv, checkpoint/)")
+        ->required();
+    app->add_option("--threads", o->threads, "threads (default: the CPUs this process may use)")->check(CLI::PositiveNumber);
+    app->add_flag("--quiet", o->quiet, "no progress output");
+    app->add_flag("--force", o->force, "overwrite an earlier merge or run in the output directory");
+    return {app, [o] { return run_merge(*o); }};
+}
+
+} // namespace roughgas::cli
