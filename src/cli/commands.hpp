@@ -3,6 +3,7 @@
 // returns what to run once the command line is parsed; CLI11 is used in src/cli/ only.
 #include <CLI/CLI.hpp>
 
+#include <exception>
 #include <functional>
 #include <string>
 #include <vector>
@@ -35,6 +36,25 @@ inline CLI::Option* add_set_option(CLI::App& app, std::vector<std::string>& sets
                     "override a case-file key before validation, e.g. collision.alpha=0.7 "
                     "or species.0.radius=0.5 (repeatable)")
         ->allow_extra_args(false);
+}
+
+// A number > 0, with a message a user can read (CLI::PositiveNumber prints its bound, DBL_MAX, in
+// full): "--checkpoint-every: must be a number > 0, got -1".
+inline CLI::Validator positive() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            double v = 0;
+            try {
+                std::size_t used = 0;
+                v = std::stod(text, &used);
+                if (used != text.size())
+                    return "must be a number > 0, got " + text;
+            } catch (const std::exception&) {
+                return "must be a number > 0, got " + text;
+            }
+            return v > 0 ? std::string() : "must be a number > 0, got " + text;
+        },
+        "POSITIVE");
 }
 
 // Exit statuses (docs/reference.md); a stop by SIGINT or SIGTERM exits with 128 + the signal.

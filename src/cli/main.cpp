@@ -4,11 +4,39 @@
 
 #include "roughgas/io/csv_writer.hpp"
 #include "roughgas/io/input_error.hpp"
+#include "roughgas/io/nearest_word.hpp"
 
+#include <algorithm>
 #include <exception>
+#include <optional>
+#include <string>
+#include <vector>
 #include <iostream>
 
 namespace {
+
+// After a parse error: "did you mean --threads?" for each word of the command line that looks like
+// an option (--word) but is none of the chosen command's.
+void suggest_options(const CLI::App& app, int argc, char** argv) {
+    const CLI::App* command = &app;
+    for (const CLI::App* sub : app.get_subcommands({}))
+        if (argc > 1 && sub->get_name() == argv[1])
+            command = sub;
+    std::vector<std::string> names;
+    for (const CLI::Option* o : command->get_options())
+        for (const std::string& n : o->get_lnames())
+            names.push_back("--" + n);
+    for (int i = 1; i < argc; ++i) {
+        std::string word = argv[i];
+        if (word.rfind("--", 0) != 0)
+            continue;
+        word = word.substr(0, word.find('='));
+        if (std::find(names.begin(), names.end(), word) != names.end())
+            continue;
+        if (const std::optional<std::string> near = roughgas::nearest(word, names))
+            std::cerr << word << ": did you mean " << *near << "?\n";
+    }
+}
 
 int run_cli(int argc, char** argv) {
     using namespace roughgas::cli;
@@ -28,7 +56,10 @@ int run_cli(int argc, char** argv) {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         // --help and --version are "errors" with status 0; a malformed command line is invalid input.
-        return app.exit(e) == 0 ? exit_ok : exit_invalid;
+        const int status = app.exit(e);
+        if (status != 0)
+            suggest_options(app, argc, argv);
+        return status == 0 ? exit_ok : exit_invalid;
     }
     for (const Subcommand& c : commands) {
         if (c.app->parsed()) {

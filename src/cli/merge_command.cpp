@@ -135,7 +135,7 @@ Subcommand add_merge_command(CLI::App& parent) {
     app->add_option("DIR", o->dirs, "the directories of the ranges (their checkpoint/)")->required();
     app->add_option("--out", o->out, "output directory (moments.csv, histograms.csv, steady.csv, checkpoint/)")
         ->required();
-    app->add_option("--threads", o->threads, "threads (default: the CPUs this process may use)")->check(CLI::PositiveNumber);
+    app->add_option("--threads", o->threads, "threads (default: the CPUs this process may use)")->check(positive());
     app->add_flag("--quiet", o->quiet, "no progress output");
     app->add_flag("--force", o->force, "overwrite an earlier merge or run in the output directory");
     return {app, [o] { return run_merge(*o); }};

@@ -6,6 +6,7 @@
 #include "commands.hpp"
 
 #include "roughgas/core/available_cpus.hpp"
+#include "roughgas/dsmc/run_spec.hpp"
 
 #include <omp.h>
 #include "quasistatic_warning.hpp"
@@ -120,11 +121,14 @@ CachedTables load_or_build_tables(const CaseConfig& cfg, const ContactPair& pc) 
                                      cache->rejected());
     }
     TableCacheFile* file = cache ? &*cache : nullptr;
+    // Exactly the tables a DSMC run of this case uses (dsmc/tables.cpp: the run's g_N range, the
+    // tables' own options), so that `roughgas run` finds them in the cache file instead of building
+    // them again; grid points outside that range are integrated directly by the table, as in a run.
     const NormalTableOptions nopt{};
+    const RunSpec run_defaults{};
     TangentialTableOptions topt;
-    topt.g_min = cfg.restitution.g_n_min;
-    topt.g_max = cfg.restitution.g_n_max;
-    topt.tol = cfg.contact.tolerance;
+    topt.g_min = run_defaults.table_g_min;
+    topt.g_max = run_defaults.table_g_max;
     bool loaded_n = false, loaded_t = false;
     NormalTable normal = load_or_build<NormalTable>(
         file, NormalTable::key_for(pc.model, nopt), [&] { return NormalTable::build(pc.model, nopt); },
@@ -212,7 +216,7 @@ Subcommand add_restitution_command(CLI::App& parent) {
     app->add_option("--out", o->out, "output directory (normal.csv, tangential.csv)")->required();
     add_set_option(*app, o->sets);
     app->add_flag("--force", o->force, "overwrite normal.csv and tangential.csv in an existing DIR");
-    app->add_option("--threads", o->threads, "threads (default: the CPUs this process may use)")->check(CLI::PositiveNumber);
+    app->add_option("--threads", o->threads, "threads (default: the CPUs this process may use)")->check(positive());
     return {app, [o] { return run_restitution(*o); }};
 }
 

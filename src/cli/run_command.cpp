@@ -529,13 +529,13 @@ Subcommand add_run_command(CLI::App& parent) {
     app->add_option(
            "--threads", o->threads,
            "threads for the replicas and within each replica (default: the CPUs this process may use; results do not depend on it)")
-        ->check(CLI::PositiveNumber);
+        ->check(positive());
     app->add_flag("--quiet", o->quiet, "no progress output");
     CLI::Option* force = app->add_flag(
         "--force", o->force, "overwrite the CSVs and checkpoint of an earlier run in the output directory");
     app->add_option("--checkpoint-every", o->checkpoint_every,
                     "save each replica's state to DIR/checkpoint every X collisions per particle")
-        ->check(CLI::PositiveNumber);
+        ->check(positive());
     CLI::Option* resume = app->add_option("--resume", o->resume,
                                           "continue the run in DIR from DIR/checkpoint (its case, seed, --set)");
     resume->excludes(case_opt)->excludes(out)->excludes(set)->excludes(seed)->excludes(force);

@@ -264,7 +264,7 @@ Subcommand add_sweep_command(CLI::App& parent) {
     add_set_option(*app, o->sets);
     app->add_option("--threads", o->threads,
                     "threads over the points (default: the CPUs this process may use; results do not depend on it)")
-        ->check(CLI::PositiveNumber);
+        ->check(positive());
     app->add_flag("--quiet", o->quiet, "no progress output");
     app->add_flag("--force", o->force, "overwrite an existing output directory");
     return {app, [o] { return run_sweep(*o); }};

@@ -160,6 +160,31 @@ TEST(Cli, MalformedCommandLineIsInvalidInput) {
     EXPECT_EQ(run_roughgas("--help", dir).status, 0);
 }
 
+// Readable command-line messages: a range in words (not the bound DBL_MAX in 309 digits), a
+// "did you mean" for a mistyped option, and every command in --help.
+TEST(Cli, CommandLineMessagesAUserCanRead) {
+    const test::ScratchDir dir;
+    const fs::path f = dir.write("ok.toml", small_case());
+    const std::string run = "run '" + f.string() + "' --out '" + (dir / "out").string() + "' ";
+    test::CommandResult r = run_roughgas(run + "--checkpoint-every -1", dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--checkpoint-every: must be a number > 0, got -1"), std::string::npos) << r.err;
+    EXPECT_LT(r.err.size(), 200U) << r.err;
+    r = run_roughgas(run + "--threads 0", dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--threads: must be a number > 0, got 0"), std::string::npos) << r.err;
+    r = run_roughgas(run + "--thread 2", dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--thread: did you mean --threads?"), std::string::npos) << r.err;
+    r = run_roughgas("sweep '" + f.string() + "' --parm run.end=1:2:2 --out x", dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--parm: did you mean --param?"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "out"));
+    r = run_roughgas("--help", dir);
+    for (const char* command : {"run", "sweep", "merge", "restitution", "check", "keys"})
+        EXPECT_NE(r.out.find(std::string("  ") + command), std::string::npos) << command << " not in --help";
+}
+
 TEST(Cli, ResumeWithoutACheckpointAndBadSweepsFailFirst) {
     const test::ScratchDir dir;
     const fs::path f = dir.write("ok.toml", small_case());
