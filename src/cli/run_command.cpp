@@ -57,6 +57,7 @@ namespace fs = std::filesystem;
 constexpr const char* output_file = "moments.csv";
 constexpr const char* histograms_file = "histograms.csv";
 constexpr const char* steady_file = "steady.csv";
+constexpr const char* scaled_file = "scaled.csv";
 
 struct RunOptions {
     std::string case_file;
@@ -116,8 +117,9 @@ void check_output_dir(const fs::path& dir, bool force, bool histograms, bool she
                          fmt::format("--out {}: {} exists (continue that run with --resume {}, or start "
                                      "over with --force)",
                                      dir.string(), checkpoint_dir(dir).string(), dir.string()));
-    for (const char* file : {output_file, histograms_file, steady_file}) {
-        if ((file == histograms_file && !histograms) || (file == steady_file && !shear))
+    for (const char* file : {output_file, histograms_file, steady_file, scaled_file}) {
+        if ((file == histograms_file && !histograms) || (file == steady_file && !shear) ||
+            (file == scaled_file && shear))
             continue;
         if (fs::exists(dir / file))
             throw InputError(
@@ -464,25 +466,43 @@ int run_run(const RunOptions& o) {
         return exit_ok;
     }
 
-    std::string steady_note;
-    if (spec.shear) { // the steady state and its averages: DIR/steady.csv (io/steady_csv.hpp)
+    // The steady state of a shear run (DIR/steady.csv), the scaled homogeneous cooling state of a
+    // cooling run (DIR/scaled.csv): the same detector and batch means (io/steady_csv.hpp), over the
+    // rows averaged over the replicas.
+    std::string steady_note, scaled_headline;
+    {
         const std::vector<std::string> names = table.names();
-        const SteadyResult st = steady_summary(names, table_rows, true);
+        const bool shear = spec.shear.has_value();
+        const SteadyResult st = steady_summary(names, table_rows, shear);
+        const char* file = shear ? steady_file : scaled_file;
         CsvProvenance sp = prov;
         sp.units.clear();
-        sp.notes.push_back("steady-state summary of moments.csv: drift criterion and batch means "
-                           "(observables/steady_state.hpp); X_err = batch-means standard error");
+        sp.notes.push_back(std::string(shear ? "steady-state" : "scaled-state (late-time)") +
+                           " summary of moments.csv: drift criterion on " + fmt::format("{}", fmt::join(st.monitored, ", ")) +
+                           "; batch means (observables/steady_state.hpp); X_err = batch-means standard error");
         CsvWriter steady(steady_csv_columns(st), sp);
         steady.add_row(steady_csv_row(st, names, table_rows));
-        steady.write(dir / steady_file);
+        steady.write(dir / file);
         const auto cpp = std::find(names.begin(), names.end(), "coll_per_particle") - names.begin();
+        const char* what = shear ? "steady" : "scaled state";
         steady_note = st.reached
-                          ? fmt::format("; steady from {:.4g} collisions per particle ({} rows averaged): {}",
+                          ? fmt::format("; {} from {:.4g} collisions per particle ({} rows averaged): {}", what,
                                         table_rows[st.first_row][static_cast<std::size_t>(cpp)], st.rows,
-                                        (dir / steady_file).string())
-                          : fmt::format("; steady state NOT reached (drift of T or P*_ij resolved); {} holds "
-                                        "the second half's averages",
-                                        (dir / steady_file).string());
+                                        (dir / file).string())
+                          : fmt::format("; {} NOT reached (a drift of {} resolved); {} holds the second half's "
+                                        "averages",
+                                        what, fmt::join(st.monitored, ", "), (dir / file).string());
+        if (!shear && !o.quiet) { // the headline numbers of the scaled state, last on stderr
+            std::vector<std::string> parts;
+            for (const SteadyValue& v : st.values)
+                if (std::find(st.monitored.begin(), st.monitored.end(), v.name) != st.monitored.end())
+                    parts.push_back(fmt::format("{} = {:.5g} +- {:.2g}", v.name, v.mean, v.err));
+            scaled_headline = fmt::format("roughgas run: scaled state{}: {}\n",
+                                          st.reached ? fmt::format(" from {:.4g} collisions per particle",
+                                                                   table_rows[st.first_row][static_cast<std::size_t>(cpp)])
+                                                     : " NOT reached (second half)",
+                                          fmt::join(parts, ", "));
+        }
     }
     double collisions = 0, seconds = progress.seconds();
     std::int64_t overshoots = 0;
@@ -512,6 +532,8 @@ int run_run(const RunOptions& o) {
     if (hcsv)
         std::cout << fmt::format("roughgas run: wrote {} ({} histogram times x {} bins)\n", hpath.string(),
                                  sets_written, spec.histogram_bins);
+    std::cout.flush();
+    std::cerr << scaled_headline;
     return exit_ok;
 }
 

@@ -61,7 +61,8 @@ SteadyResult find_steady_state(const std::vector<std::string>& names,
     // Row 0 is the initial state (its rates are undefined): never part of the window.
     std::size_t k0 = std::min<std::size_t>(1, n);
     const std::size_t stride = std::max<std::size_t>(1, n / 100);
-    for (; k0 + std::max<std::size_t>(o.min_rows, 4) <= n && k0 <= n / 2; k0 += stride) {
+    const auto last_start = static_cast<std::size_t>(o.max_start * static_cast<double>(n));
+    for (; k0 + std::max<std::size_t>(o.min_rows, 4) <= n && k0 <= last_start; k0 += stride) {
         const std::size_t mid = k0 + (n - k0) / 2;
         bool steady = true;
         for (std::size_t j : mon) {
@@ -78,6 +79,30 @@ SteadyResult find_steady_state(const std::vector<std::string>& names,
             if (!(std::abs(B.mean - A.mean) <= o.threshold * se + slack)) {
                 steady = false;
                 break;
+            }
+            if (o.head_rows > 0) {
+                const std::vector<double> head = series(j, k0, std::min(k0 + o.head_rows, mid));
+                double mean_h = 0;
+                for (double v : head)
+                    mean_h += v;
+                mean_h /= static_cast<double>(head.size());
+                const double se_h =
+                    B.err * std::sqrt(1.0 + static_cast<double>(b.size()) / static_cast<double>(head.size()));
+                if (std::isfinite(mean_h) && !(std::abs(B.mean - mean_h) <= o.threshold * se_h + slack)) {
+                    steady = false;
+                    break;
+                }
+                // With replicas, each of those rows against the late mean within its own error.
+                if (const std::size_t e = index_of(names, names[j] + "_err"); e < names.size()) {
+                    for (std::size_t k = k0; k < std::min(k0 + o.head_rows, mid) && steady; ++k) {
+                        const double x = rows[k][j], ex = rows[k][e];
+                        if (std::isfinite(x) && std::isfinite(ex) &&
+                            !(std::abs(x - B.mean) <= o.threshold * std::sqrt(ex * ex + B.err * B.err) + slack))
+                            steady = false;
+                    }
+                    if (!steady)
+                        break;
+                }
             }
         }
         if (steady) {
@@ -99,14 +124,39 @@ SteadyResult find_steady_state(const std::vector<std::string>& names,
     return r;
 }
 
-std::vector<std::string> steady_monitored(const std::vector<std::string>& names, bool shear) {
-    const std::vector<std::string> want =
-        shear ? std::vector<std::string>{"T_tr", "T_rot", "P_xx_star", "P_yy_star", "P_zz_star", "P_xy_star"}
-              : std::vector<std::string>{"theta", "a20", "a02"};
+std::vector<std::string> steady_monitored(const std::vector<std::string>& names, bool shear,
+                                          const std::vector<std::vector<double>>* rows) {
+    const auto has = [&](const std::string& n) { return std::find(names.begin(), names.end(), n) != names.end(); };
     std::vector<std::string> out;
-    for (const std::string& w : want)
-        if (std::find(names.begin(), names.end(), w) != names.end())
-            out.push_back(w);
+    if (shear) {
+        for (const std::string w : {"T_tr", "T_rot", "P_xx_star", "P_yy_star", "P_zz_star", "P_xy_star"})
+            if (has(w))
+                out.push_back(w);
+        return out;
+    }
+    // Smooth grains: T_rot the same in every row (no collision changes a spin).
+    bool spins_change = true;
+    if (rows && !rows->empty() && has("T_rot")) {
+        const auto k = static_cast<std::size_t>(std::find(names.begin(), names.end(), "T_rot") - names.begin());
+        spins_change = std::any_of(rows->begin(), rows->end(),
+                                   [&](const std::vector<double>& r) { return r[k] != rows->front()[k]; });
+    }
+    const auto rotational = [](const std::string& n) {
+        return n.rfind("theta", 0) == 0 || n.rfind("a02", 0) == 0 || n.rfind("a11", 0) == 0 ||
+               n.rfind("T_rot", 0) == 0;
+    };
+    for (const std::string& n : names) {
+        if (n.size() > 4 && n.compare(n.size() - 4, 4, "_err") == 0)
+            continue;
+        const std::string base = n.substr(0, n.find('.'));
+        const bool ratio = n.find('/') != std::string::npos && (base == "T_tr" || base == "T_rot");
+        const bool scale_free = n == "theta" || n == "a20" || n == "a02" || n == "a11" ||
+                                (base == "theta" && n != "theta" && n.find("_theory") == std::string::npos &&
+                                 n.find('/') == std::string::npos) ||
+                                ratio;
+        if (scale_free && (spins_change || !rotational(n)))
+            out.push_back(n);
+    }
     return out;
 }
 

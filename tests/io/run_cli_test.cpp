@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -158,7 +160,8 @@ TEST(RunCli, WritesMomentsWithHeaderUnitsAndTheory) {
     std::vector<std::string> files;
     for (const auto& e : fs::directory_iterator(out))
         files.push_back(e.path().filename().string());
-    EXPECT_EQ(files, std::vector<std::string>{"moments.csv"}); // no temporary file left
+    std::sort(files.begin(), files.end());
+    EXPECT_EQ(files, (std::vector<std::string>{"moments.csv", "scaled.csv"})); // no temporary file left
 }
 
 TEST(RunCli, ProgressLineUnlessQuiet) {

@@ -8,11 +8,11 @@
 // same variance per row (a transient in it would inflate its own batch error and hide itself).
 // The window is steady when, for every monitored X,
 //     |mean_2(X) - mean_1(X)| <= threshold se_2 sqrt(1 + n_2/n_1),
-// i.e. no drift of X is resolved by the data. The steady start is the first such k0 (scanned
-// upwards, over at most the first half of the rows, with at least `min_rows` rows in the window).
-// Monitored: T_tr, T_rot and P*_xx, P*_yy, P*_zz, P*_xy for shear runs; the scale-free theta, a20
-// (and a02 where defined) for cooling runs, whose steady state is the scaled (homogeneous
-// cooling) state.
+// i.e. no drift of X is resolved by the data (with `head_rows` > 0, the same test for the mean of
+// the window's first `head_rows` rows against the second half's). The steady start is the first such k0 (scanned
+// upwards, over the first `max_start` of the rows, with at least `min_rows` rows in the window).
+// Monitored (steady_monitored): T_tr, T_rot and P*_xx, P*_yy, P*_zz, P*_xy for shear runs; the
+// scale-free ratios for cooling runs, whose steady state is the scaled (homogeneous cooling) state.
 //
 // Averages. Every other quantity is averaged over the steady window with the batch-means error:
 // the window cut into `batches` consecutive batches of equal length, se = sd(batch means)/sqrt(B).
@@ -31,6 +31,11 @@ struct SteadyOptions {
     int batches = 10;
     double threshold = 3;
     std::size_t min_rows = 20;
+    // The window's first row among the first `max_start` of the rows (a fraction).
+    double max_start = 0.5;
+    // > 0: also the mean of the window's first `head_rows` rows against the second half's, so that
+    // a transient of a few rows at the window's start, diluted in the first half's mean, is seen.
+    std::size_t head_rows = 0;
 };
 
 struct SteadyValue {
@@ -43,6 +48,7 @@ struct SteadyResult {
     std::size_t first_row = 0;       // the window's first row (reached or not: the last candidate tried)
     std::size_t rows = 0;            // rows in the window
     std::vector<SteadyValue> values; // every column but the skipped ones, in column order
+    std::vector<std::string> monitored; // what the criterion watched
 };
 
 // Mean and batch-means standard error of x (B batches of equal length; the first len % B values
@@ -54,7 +60,13 @@ SteadyResult find_steady_state(const std::vector<std::string>& names,
                                const std::vector<std::vector<double>>& rows, const SteadyOptions& options,
                                const std::vector<std::string>& skip = {"t"});
 
-// The monitored quantities above for a run of the given kind, among `names`.
-std::vector<std::string> steady_monitored(const std::vector<std::string>& names, bool shear);
+// The monitored quantities above for a run of the given kind, among `names`. Shear: T_tr, T_rot
+// and the reduced stresses. Cooling (the scaled homogeneous cooling state, whose temperatures keep
+// falling): the scale-free ratios theta, a20, a02, a11, each species' theta and the species'
+// temperature ratios. With `rows`, rotational columns (theta, a02, a11, T_rot ratios) are left out
+// of a cooling run whose T_rot never changes: smooth grains keep their spins bit for bit, so theta
+// grows as T_tr falls and has no scaled value.
+std::vector<std::string> steady_monitored(const std::vector<std::string>& names, bool shear,
+                                          const std::vector<std::vector<double>>* rows = nullptr);
 
 } // namespace roughgas

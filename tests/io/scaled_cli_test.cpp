@@ -1,0 +1,112 @@
+// The late-time summary of a cooling run (DIR/scaled.csv): the scaled homogeneous cooling state
+// found by the steady-state detector, which watches the species' temperature ratio, so that its
+// window starts only once the ratio has relaxed; its values are the window's averages.
+#include "io_test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace roughgas {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A CSV written by roughgas: column name -> values.
+std::map<std::string, std::vector<double>> read_csv(const fs::path& p) {
+    std::istringstream in(test::read_file(p));
+    std::map<std::string, std::vector<double>> cols;
+    std::vector<std::string> names;
+    for (std::string line; std::getline(in, line);) {
+        if (line.empty() || line[0] == '#')
+            continue;
+        std::istringstream fields(line);
+        std::vector<std::string> f;
+        for (std::string x; std::getline(fields, x, ',');)
+            f.push_back(x);
+        if (names.empty()) {
+            names = f;
+            continue;
+        }
+        for (std::size_t j = 0; j < f.size() && j < names.size(); ++j)
+            cols[names[j]].push_back(std::stod(f[j]));
+    }
+    return cols;
+}
+
+// A binary mixture of smooth spheres, alpha = 0.9, mass ratio 2, equal sizes and fractions: the
+// species' temperature ratio relaxes over ~10 collisions per particle while theta (smooth grains
+// keep their spins) grows without end.
+TEST(ScaledCli, MixtureTemperatureRatioWithItsErrorAfterItHasRelaxed) {
+    const test::ScratchDir dir;
+    const fs::path f = dir.write("mix.toml", R"([run]
+particles = 20000
+replicas = 4
+end = 100.0
+output_every = 1.0
+seed = 11
+[[species]]
+name = "light"
+mass = 1.0
+radius = 0.5
+fraction = 0.5
+[[species]]
+name = "heavy"
+mass = 2.0
+radius = 0.5
+fraction = 0.5
+[collision]
+model = "constant"
+alpha = 0.9
+beta = -1.0
+)");
+    const test::CommandResult r = test::run_roughgas("run '" + f.string() + "' --out '" + (dir / "out").string() + "'", dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    // The headline numbers on stderr's last line: the ratio, not theta (undefined as a scaled value here).
+    const std::string last = r.err.substr(r.err.rfind("roughgas run: scaled state"));
+    EXPECT_NE(last.find("T_tr.light/T_tr.heavy = "), std::string::npos) << r.err;
+    EXPECT_EQ(last.find("theta"), std::string::npos) << last;
+
+    const auto s = read_csv(dir / "out" / "scaled.csv");
+    const auto m = read_csv(dir / "out" / "moments.csv");
+    const std::string ratio = "T_tr.light/T_tr.heavy";
+    ASSERT_EQ(s.at("steady").at(0), 1.0);
+    const double from = s.at("steady_from").at(0), value = s.at(ratio).at(0), err = s.at(ratio + "_err").at(0);
+    ASSERT_GT(err, 0.0);
+
+    // A hand-made late-time average of the same rows: from 40 collisions per particle on, where the
+    // ratio is surely relaxed; its error from the rows' scatter (rows 1 collision per particle apart
+    // are nearly independent in the ratio, as the batch means assume).
+    double sum = 0, sum2 = 0;
+    int n = 0;
+    const std::vector<double>& cpp = m.at("coll_per_particle");
+    const std::vector<double>& x = m.at(ratio);
+    for (std::size_t k = 0; k < x.size(); ++k)
+        if (cpp[k] >= 40) {
+            sum += x[k];
+            sum2 += x[k] * x[k];
+            ++n;
+        }
+    ASSERT_GE(n, 50);
+    const double hand = sum / n, hand_err = std::sqrt((sum2 / n - hand * hand) / (n - 1));
+    EXPECT_LT(std::abs(value - hand), 4 * std::sqrt(err * err + hand_err * hand_err))
+        << "scaled " << value << " +- " << err << ", hand " << hand << " +- " << hand_err;
+    // The ratio at 1 collision per particle is still far from relaxed (the light grains are hotter
+    // by a few per cent more): the window must start later, at a row whose ratio has relaxed.
+    EXPECT_GT(from, 1.5) << "the window starts before the ratio has relaxed";
+    std::size_t k0 = 0;
+    while (k0 < cpp.size() && cpp[k0] < from)
+        ++k0;
+    ASSERT_LT(k0, cpp.size());
+    const double at_start_err = m.at(ratio + "_err").at(k0);
+    EXPECT_LT(std::abs(x[k0] - hand), 4 * std::sqrt(at_start_err * at_start_err + hand_err * hand_err))
+        << "the ratio at the window's start (" << from << " collisions per particle) " << x[k0] << " +- "
+        << at_start_err << " has not relaxed to " << hand;
+}
+
+} // namespace
+} // namespace roughgas
