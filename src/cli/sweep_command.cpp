@@ -232,9 +232,9 @@ int run_sweep(const SweepOptions& o) {
     prov.resolved_case = emit_case(cases[0]);
     prov.notes = {
         fmt::format("sweep of {} from {} to {} ({} points); one row per point: the steady state "
-                    "(shear: of T and P*_ij; cooling: the scaled state of theta, a20, a02), batch means "
+                    "(shear: of T and P*_ij; cooling: the scaled state, drift criterion on {}), batch means "
                     "(io/steady_csv.hpp); each point's rows in point_K/moments.csv",
-                    s.key, s.from, s.to, s.count)};
+                    s.key, s.from, s.to, s.count, fmt::join(results[0].steady.monitored, ", "))};
     CsvWriter csv(columns, prov);
     for (std::size_t k = 0; k < results.size(); ++k) {
         if (steady_csv_columns(results[k].steady) != steady_cols)
@@ -246,6 +246,38 @@ int run_sweep(const SweepOptions& o) {
         csv.add_row(row);
     }
     csv.write(dir / "sweep.csv");
+    if (!o.quiet) { // the headline quantities of every point, compact, on stderr
+        std::vector<std::string> headline;
+        const bool shear = cases[0].run.kind == RunKind::shear;
+        std::vector<std::string> wanted = {"a_star", "eta_star", "theta", "N1_star"};
+        if (!shear) { // the species' temperature ratios first, then theta and the cumulants
+            wanted = results[0].steady.monitored;
+            std::stable_partition(wanted.begin(), wanted.end(),
+                                  [](const std::string& c) { return c.find('/') != std::string::npos; });
+        }
+        for (const std::string& c : wanted)
+            for (const SteadyValue& v : results[0].steady.values)
+                if (v.name == c && headline.size() < 6)
+                    headline.push_back(c);
+        std::string table = fmt::format("roughgas sweep: {:>12} {:>7}", s.key, "from");
+        for (const std::string& h : headline)
+            table += fmt::format(" {:>22}", h);
+        table += "\n";
+        for (std::size_t k = 0; k < results.size(); ++k) {
+            const SteadyResult& st = results[k].steady;
+            const auto cpp = std::find(results[k].names.begin(), results[k].names.end(), "coll_per_particle") -
+                             results[k].names.begin();
+            table += fmt::format("roughgas sweep: {:>12.6g} {:>7}", values[k],
+                                 st.reached ? fmt::format("{:.3g}", results[k].rows[st.first_row][static_cast<std::size_t>(cpp)])
+                                            : std::string("none"));
+            for (const std::string& h : headline)
+                for (const SteadyValue& v : st.values)
+                    if (v.name == h)
+                        table += fmt::format(" {:>22}", fmt::format("{:.5g} +- {:.2g}", v.mean, v.err));
+            table += "\n";
+        }
+        std::cerr << table;
+    }
     std::cout << fmt::format("roughgas sweep: wrote {} ({} points, {} columns)\n",
                              (dir / "sweep.csv").string(), results.size(), columns.size());
     return exit_ok;

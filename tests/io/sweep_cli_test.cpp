@@ -47,6 +47,24 @@ std::vector<std::string> data_lines(const std::string& text) {
     return out;
 }
 
+// At the end, a compact table on stderr: per point the swept value, where the steady window
+// starts and the headline quantities (shear: a*, eta*, theta, N1*) with their errors.
+TEST(SweepCli, EndsWithACompactTableOfThePoints) {
+    const test::ScratchDir dir;
+    const fs::path f = dir.write("usf.toml", shear_case());
+    const test::CommandResult r = run_roughgas(
+        "sweep '" + f.string() + "' --param collision.alpha=0.8:0.9:2 --out '" + (dir / "s").string() + "'", dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::size_t head = r.err.find("collision.alpha");
+    ASSERT_NE(head, std::string::npos) << r.err;
+    const std::string table = r.err.substr(r.err.rfind('\n', head) + 1);
+    for (const char* column : {"from", "a_star", "eta_star", "theta", "N1_star"})
+        EXPECT_NE(table.find(column), std::string::npos) << column << " not in\n" << table;
+    for (const char* value : {"roughgas sweep:          0.8 ", "roughgas sweep:          0.9 "})
+        EXPECT_NE(table.find(value), std::string::npos) << value << " not in\n" << table;
+    EXPECT_NE(table.find(" +- "), std::string::npos) << table;
+}
+
 TEST(SweepCli, OneRowPerPointIdenticalWhateverTheThreads) {
     const test::ScratchDir dir;
     const fs::path f = dir.write("usf.toml", shear_case());
