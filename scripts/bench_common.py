@@ -17,6 +17,24 @@ import time
 BENCH_ENV = {**os.environ, "OMP_WAIT_POLICY": os.environ.get("OMP_WAIT_POLICY", "passive")}
 
 
+def rough_case(n, end, every, replicas=1):
+    """The text of a case file: a rough gas (alpha 0.9, beta 0.5) of n particles, `end` and `every`
+    in collisions per particle; the gas the run-level benchmarks time."""
+    return f"""[run]
+particles = {n}
+end = {end}
+output_every = {every}
+replicas = {replicas}
+[[species]]
+mass = 1.0
+radius = 0.5
+[collision]
+model = "constant"
+alpha = 0.9
+beta = 0.5
+"""
+
+
 def loadavg():
     """The 1-minute load average (/proc/loadavg)."""
     with open("/proc/loadavg") as f:

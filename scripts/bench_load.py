@@ -28,27 +28,13 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_common import commit, loadavg, machine, stolen_since, cpu_times  # noqa: E402
-
-CASE = """[run]
-particles = {n}
-end = {end}
-output_every = {every}
-replicas = {replicas}
-[[species]]
-mass = 1.0
-radius = 0.5
-[collision]
-model = "constant"
-alpha = 0.9
-beta = 0.5
-"""
+from bench_common import commit, cpu_times, loadavg, machine, rough_case, stolen_since  # noqa: E402
 
 
 def write_case(out, name, n, end, every, replicas=1):
     path = os.path.join(out, name + ".toml")
     with open(path, "w") as f:
-        f.write(CASE.format(n=n, end=end, every=every, replicas=replicas))
+        f.write(rough_case(n, end, every, replicas))
     return path
 
 

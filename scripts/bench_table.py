@@ -31,7 +31,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_common import BENCH_ENV, benchmark_iterations, loadavg, machine, pair_rate, single_rate  # noqa: E402
+from bench_common import BENCH_ENV, benchmark_iterations, loadavg, machine, pair_rate, rough_case, single_rate  # noqa: E402
 
 CASES = [
     ("SmoothConstant", "constant, smooth (alpha 0.9)"),
@@ -76,18 +76,7 @@ def fmt_rate(x):
 
 def peak_memory(roughgas, n, threads):
     """Max RSS of `roughgas run` of a rough constant case with n particles, 0.5 collisions per particle."""
-    case = f"""[run]
-particles = {n}
-end = 0.5
-output_every = 0.5
-[[species]]
-mass = 1.0
-radius = 0.5
-[collision]
-model = "constant"
-alpha = 0.9
-beta = 0.5
-"""
+    case = rough_case(n, 0.5, 0.5)
     with tempfile.TemporaryDirectory() as d:
         path = os.path.join(d, "case.toml")
         with open(path, "w") as f:

@@ -18,20 +18,6 @@ namespace roughgas::cli {
 
 namespace {
 
-// A table cell: '|' would end the cell.
-std::string cell(std::string s) {
-    std::string out;
-    for (char c : s) {
-        if (c == '|')
-            out += "\\|";
-        else if (c == '\n')
-            out += ' ';
-        else
-            out += c;
-    }
-    return out;
-}
-
 // What an option takes: "-" for a flag, else its value's name, "(repeatable)" when it may be given
 // more than once.
 std::string value_text(const CLI::Option& o) {
@@ -46,14 +32,14 @@ std::string value_text(const CLI::Option& o) {
 }
 
 std::string options_table(const CLI::App& app, const std::string& command) {
-    std::string md = fmt::format("`{}`: {}\n\n", command, cell(app.get_description()));
+    std::string md = fmt::format("`{}`: {}\n\n", command, markdown_cell(app.get_description()));
     md += "| Option | Value | Required | Description |\n|--------|-------|----------|-------------|\n";
     for (const CLI::Option* o : app.get_options()) {
         std::string name = o->get_name();
         if (o->get_positional() && o->get_lnames().empty() && o->get_snames().empty())
             name = o->get_name(true, false);
-        md += fmt::format("| `{}` | {} | {} | {} |\n", name, cell(value_text(*o)), o->get_required() ? "yes" : "no",
-                          cell(o->get_description()));
+        md += fmt::format("| `{}` | {} | {} | {} |\n", name, markdown_cell(value_text(*o)), o->get_required() ? "yes" : "no",
+                          markdown_cell(o->get_description()));
     }
     return md;
 }

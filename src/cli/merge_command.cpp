@@ -105,7 +105,7 @@ int run_merge(const MergeOptions& o) {
         lock.lock_if_exists(out);
         if (fs::exists(out) && !fs::is_directory(out))
             throw InputError(out.string(), "--out", "--out " + out.string() + ": exists and is not a directory");
-        for (const fs::path p : {checkpoint_dir(out), out / "moments.csv"})
+        for (const fs::path& p : {checkpoint_dir(out), out / "moments.csv"})
             if (!o.force && fs::exists(p))
                 throw InputError(out.string(), "--out",
                                  fmt::format("--out {}: {} exists (use --force to overwrite)", out.string(),

@@ -183,7 +183,7 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
     std::vector<Vec3> spin; // shear: omega - Omega, so that T_rot is about the mean spin
     // On the replica's threads (the engine's): a row streams the whole store from memory twice,
     // which takes as long as the collisions between two rows where rows are dense.
-    WorkerTeam* const team = spec.threads > 1 ? &engine.team() : nullptr;
+    WorkerTeam& team = engine.team();
     const auto moments_now = [&](Vec3& Omega) {
         if (!spec.shear)
             return compute_moments(engine.store().velocities(), engine.store().angular_velocities(), slices, team);

@@ -333,6 +333,8 @@ std::string quoted(std::string_view s) {
     return fmt::format("\"{}\"", s);
 }
 
+} // namespace
+
 std::string markdown_cell(std::string s) {
     // A '|' would split the cell.
     std::string out;
@@ -341,8 +343,6 @@ std::string markdown_cell(std::string s) {
     }
     return out;
 }
-
-} // namespace
 
 std::string toml_real(double x) {
     std::string s = fmt::format("{}", x);

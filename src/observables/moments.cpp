@@ -89,26 +89,17 @@ Vec3 weighted_mean(Vec3Column x, std::span<const SpeciesSlice> species, double S
 }
 
 Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesSlice> species, int threads) {
-    if (threads <= 1)
-        return compute_moments(v, omega, species, nullptr);
-    WorkerTeam team(threads);
-    return compute_moments(v, omega, species, &team);
+    WorkerTeam team(threads); // no thread started for threads <= 1
+    return compute_moments(v, omega, species, team);
 }
 
-Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesSlice> species, WorkerTeam* team) {
+Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesSlice> species, WorkerTeam& team) {
     Moments m;
     m.species.resize(species.size());
     const std::vector<Chunk> chunks = chunks_of(species);
     const std::size_t K = chunks.size();
     // Each chunk writes its own sums, combined in chunk order: the same bits on any team.
-    const auto for_chunks = [&](auto&& f) {
-        if (team) {
-            team->for_each(K, f);
-        } else {
-            for (std::size_t k = 0; k < K; ++k)
-                f(k);
-        }
-    };
+    const auto for_chunks = [&](auto&& f) { team.for_each(K, f); };
 
     // Pass 1, per chunk: its sum of v, its sum of |v - mean|^2 about its own mean (a second loop
     // over the chunk, in cache) and its sum of |omega|^2.

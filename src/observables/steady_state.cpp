@@ -82,10 +82,7 @@ SteadyResult find_steady_state(const std::vector<std::string>& names,
             }
             if (o.head_rows > 0) {
                 const std::vector<double> head = series(j, k0, std::min(k0 + o.head_rows, mid));
-                double mean_h = 0;
-                for (double v : head)
-                    mean_h += v;
-                mean_h /= static_cast<double>(head.size());
+                const double mean_h = batch_mean(head, 1).mean;
                 const double se_h =
                     B.err * std::sqrt(1.0 + static_cast<double>(b.size()) / static_cast<double>(head.size()));
                 if (std::isfinite(mean_h) && !(std::abs(B.mean - mean_h) <= o.threshold * se_h + slack)) {

@@ -951,14 +951,7 @@ class Engine {
 
     // f(ch) for every chunk ch in [0, C): on the team's threads (each chunk writes only its own
     // outputs, combined in chunk order afterwards, so the results do not depend on the threads).
-    template <class F> void for_chunks(std::size_t C, F&& f) {
-        if (opt_.threads > 1 && C > 1) {
-            team_->for_each(C, f);
-        } else {
-            for (std::size_t ch = 0; ch < C; ++ch)
-                f(ch);
-        }
-    }
+    template <class F> void for_chunks(std::size_t C, F&& f) { team_->for_each(C, f); }
 
     // Refreshes the partition, the classes, bounds and frame, sets the step length, and starts the
     // groups' streams. Pass 1 reads every grain once (statistics, bucket sizes, each grain's bucket

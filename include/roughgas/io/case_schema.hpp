@@ -64,6 +64,9 @@ const TableSpec* find_table(std::string_view name);
 const KeySpec* find_key(std::string_view path); // schema path, without array indices
 
 // Markdown table (one row per key, schema order) for the case-file keys of docs/reference.md.
+// A table cell of the generated Markdown: '|' escaped, which would split the cell.
+std::string markdown_cell(std::string s);
+
 std::string case_keys_markdown();
 // Markdown table of the case file's tables.
 std::string case_tables_markdown();

@@ -58,6 +58,6 @@ Vec3 weighted_mean(Vec3Column x, std::span<const SpeciesSlice> species, double S
 // summed on that many threads; the result does not depend on it (bitwise).
 Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesSlice> species,
                         int threads = 1);
-Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesSlice> species, WorkerTeam* team);
+Moments compute_moments(Vec3Column v, Vec3Column omega, std::span<const SpeciesSlice> species, WorkerTeam& team);
 
 } // namespace roughgas
