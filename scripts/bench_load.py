@@ -2,19 +2,20 @@
 """Wall times of `roughgas run` on a shared machine: threads against one thread, idle and under load.
 
     scripts/python3 scripts/bench_load.py [--build build] [--rounds 5] [--out out/bench_load]
+                                          [--only idle,dense,busy,two,mpi]
 
 Each comparison runs its two sides alternately (A B, then B A in the next round, so that a drift of
 the machine's speed hits both alike) and reports, per side, the median and the range of the wall
 times over the rounds, and the median of the per-round ratios. The cases (a rough gas, alpha 0.9,
 beta 0.5) are written to --out:
 
-  idle, N = 1e6           --threads 2 against --threads 1: the speed-up (t1/t2)
-  idle, N = 1e5, dense    the same with a row per collision per particle (100 rows)
-  beside a busy core      the default thread count against --threads 1 while another process
+  idle (idle, N = 1e6)    --threads 2 against --threads 1: the speed-up (t1/t2)
+  dense (N = 1e5)         the same with a row per collision per particle (100 rows)
+  busy (beside a core)    the default thread count against --threads 1 while another process
                           keeps one core busy (a shell loop): t_default/t1
-  two runs at once        two default runs started together against two --threads 1 runs started
+  two (runs at once)      two default runs started together against two --threads 1 runs started
                           together: the slower run's time, t_default/t1
-  mpirun -np 2, 8 replicas  (when mpirun and a roughgas built with MPI exist) one rank against two
+  mpi (mpirun -np 2, 8 replicas)  (when mpirun and a roughgas built with MPI exist) one rank against two
                           ranks with one thread each: t_np1/t_np2
 
 The machine, date, commit and load average are printed with the table (docs/performance.md).
@@ -73,12 +74,19 @@ def main():
     ap.add_argument("--build", default="build")
     ap.add_argument("--rounds", type=int, default=5)
     ap.add_argument("--out", default="out/bench_load")
+    ap.add_argument("--only", default="idle,dense,busy,two,mpi",
+                    help="the comparisons to run, comma-separated (default: all)")
     a = ap.parse_args()
+    only = set(a.only.split(","))
+    unknown = only - {"idle", "dense", "busy", "two", "mpi"}
+    if unknown:
+        sys.exit(f"bench_load: --only {a.only}: unknown {', '.join(sorted(unknown))} "
+                 "(choose from idle, dense, busy, two, mpi)")
     roughgas = os.path.abspath(os.path.join(a.build, "roughgas"))
     os.makedirs(a.out, exist_ok=True)
     big = write_case(a.out, "n1e6", 1000000, 20.0, 5.0)
     dense = write_case(a.out, "n1e5_dense", 100000, 100.0, 1.0)
-    ens = write_case(a.out, "n1e5_8replicas", 100000, 40.0, 5.0, replicas=8)
+    ens = write_case(a.out, "n1e5_8replicas", 100000, 100.0, 5.0, replicas=8)
 
     def run(case, tag, *extra):
         return [roughgas, "run", case, "--out", os.path.join(a.out, tag), "--force", "--quiet", *extra]
@@ -86,27 +94,32 @@ def main():
     rows = []
     print(machine(), file=sys.stderr)
     load0, steal0 = loadavg(), cpu_times()
-    rows.append(compare("idle, N = 1e6, 2 threads vs 1",
-                        lambda: timed([run(big, "a", "--threads", "1")]),
-                        lambda: timed([run(big, "b", "--threads", "2")]), a.rounds, "t1/t2"))
-    rows.append(compare("idle, N = 1e5, a row per collision per particle, 2 threads vs 1",
-                        lambda: timed([run(dense, "a", "--threads", "1")]),
-                        lambda: timed([run(dense, "b", "--threads", "2")]), a.rounds, "t1/t2"))
-    busy = subprocess.Popen(["sh", "-c", "while :; do :; done"])
+    if "idle" in only:
+        rows.append(compare("idle, N = 1e6, 2 threads vs 1",
+                            lambda: timed([run(big, "a", "--threads", "1")]),
+                            lambda: timed([run(big, "b", "--threads", "2")]), a.rounds, "t1/t2"))
+    if "dense" in only:
+        rows.append(compare("idle, N = 1e5, a row per collision per particle, 2 threads vs 1",
+                            lambda: timed([run(dense, "a", "--threads", "1")]),
+                            lambda: timed([run(dense, "b", "--threads", "2")]), a.rounds, "t1/t2"))
+    busy = subprocess.Popen(["sh", "-c", "while :; do :; done"]) if "busy" in only else None
     try:
-        time.sleep(0.5)
-        rows.append(compare("beside a busy core, N = 1e5 dense: default threads vs 1",
-                            lambda: timed([run(dense, "a")]),
-                            lambda: timed([run(dense, "b", "--threads", "1")]), a.rounds, "t_default/t1"))
+        if busy:
+            time.sleep(0.5)
+            rows.append(compare("beside a busy core, N = 1e5 dense: default threads vs 1",
+                                lambda: timed([run(dense, "a")]),
+                                lambda: timed([run(dense, "b", "--threads", "1")]), a.rounds, "t_default/t1"))
     finally:
-        busy.kill()
-        busy.wait()
-    rows.append(compare("two runs at once, N = 1e5 dense: default threads vs 1 each",
-                        lambda: timed([run(dense, "a1"), run(dense, "a2")]),
-                        lambda: timed([run(dense, "b1", "--threads", "1"), run(dense, "b2", "--threads", "1")]),
-                        a.rounds, "t_default/t1"))
+        if busy:
+            busy.kill()
+            busy.wait()
+    if "two" in only:
+        rows.append(compare("two runs at once, N = 1e5 dense: default threads vs 1 each",
+                            lambda: timed([run(dense, "a1"), run(dense, "a2")]),
+                            lambda: timed([run(dense, "b1", "--threads", "1"), run(dense, "b2", "--threads", "1")]),
+                            a.rounds, "t_default/t1"))
     mpirun = shutil.which("mpirun")
-    if mpirun and subprocess.run([roughgas, "--version"], capture_output=True, text=True).stdout.find("MPI") >= 0:
+    if "mpi" in only and mpirun and subprocess.run([roughgas, "--version"], capture_output=True, text=True).stdout.find("MPI") >= 0:
         env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
         def mpi(np, tag):
             return [mpirun, "--oversubscribe", "--bind-to", "none", "-np", str(np), *run(ens, tag, "--threads", "1")]

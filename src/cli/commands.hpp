@@ -1,6 +1,8 @@
 #pragma once
 // The subcommands of the roughgas executable. Each file registers one subcommand with CLI11 and
 // returns what to run once the command line is parsed; CLI11 is used in src/cli/ only.
+#include "roughgas/parallel/communicator.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <exception>
@@ -15,10 +17,11 @@ struct Subcommand {
     std::function<int()> run; // returns the exit status (throws InputError for invalid input)
 };
 
-Subcommand add_run_command(CLI::App& parent);
+// run and sweep spread their work over the ranks of `comm` (one process: a world of one).
+Subcommand add_run_command(CLI::App& parent, const Communicator& comm);
 Subcommand add_check_command(CLI::App& parent);
 Subcommand add_restitution_command(CLI::App& parent);
-Subcommand add_sweep_command(CLI::App& parent);
+Subcommand add_sweep_command(CLI::App& parent, const Communicator& comm);
 Subcommand add_merge_command(CLI::App& parent);
 Subcommand add_keys_command(CLI::App& parent); // prints the generated tables of docs/reference.md
 

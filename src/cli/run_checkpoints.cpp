@@ -148,7 +148,7 @@ void remove_stale_temporaries(const fs::path& dir) {
             const std::string name = e.path().filename().string();
             const bool ours = name.starts_with("moments.csv.tmp.") ||
                               name.starts_with("histograms.csv.tmp.") ||
-                              name.starts_with("steady.csv.tmp.") ||
+                              name.starts_with("steady.csv.tmp.") || name.starts_with("scaled.csv.tmp.") ||
                               (d != dir && name.find(".bin.tmp.") != std::string::npos);
             if (ours && e.is_regular_file())
                 fs::remove(e.path(), ec);

@@ -14,7 +14,15 @@
 // io/checkpoint_file.hpp), and `roughgas run --resume DIR` continues from those files: the CSVs come
 // out byte for byte as from the run without a stop. SIGINT/SIGTERM (stop_signals.hpp) stop every
 // replica at its next boundary with a checkpoint, write the CSV so far and exit 128 + the signal.
+//
+// Under an MPI launcher (mpirun -np R, srun; parallel/communicator.hpp) each rank runs a contiguous
+// share of the replicas on its own threads and sends their rows and histograms to rank 0, which
+// alone writes the files: the same bytes as one process, since every replica's streams derive from
+// the seed and its index and the rows are combined in replica order. Rank 0 writes the CSVs when
+// the ranks have finished (or stopped); each rank writes its own replicas' checkpoint files, so
+// DIR must be on a file system every rank sees for --checkpoint-every, --resume and stops.
 #include "commands.hpp"
+#include "rank_errors.hpp"
 
 #include "roughgas/core/available_cpus.hpp"
 
@@ -34,6 +42,7 @@
 #include "roughgas/io/run_spec_from_case.hpp"
 #include "roughgas/io/run_tables.hpp"
 #include "roughgas/io/steady_csv.hpp"
+#include "roughgas/core/bytes.hpp"
 
 #include <fmt/format.h>
 
@@ -142,7 +151,9 @@ struct RunSetup {
     OutputDirLock lock; // held from the first check of the directory to the end of the run
 };
 
-RunSetup new_run(const RunOptions& o) {
+// `root`: this process checks and locks the output directory (rank 0 of the ranks; the others would
+// find it locked by rank 0).
+RunSetup new_run(const RunOptions& o, bool root) {
     if (o.case_file.empty() || o.out.empty())
         throw InputError("", "", "roughgas run: give CASE.toml and --out DIR, or --resume DIR");
     std::vector<std::string> sets = o.sets;
@@ -151,8 +162,10 @@ RunSetup new_run(const RunOptions& o) {
     RunSetup s;
     s.cfg = load_case(o.case_file, sets, CaseUse::run); // invalid input: exit 2
     s.dir = o.out;
-    s.lock.lock_if_exists(s.dir); // before its files are checked: another run may be writing them
-    check_output_dir(s.dir, o.force, s.cfg.run.histogram_every > 0, s.cfg.run.kind == RunKind::shear);
+    if (root) {
+        s.lock.lock_if_exists(s.dir); // before its files are checked: another run may be writing them
+        check_output_dir(s.dir, o.force, s.cfg.run.histogram_every > 0, s.cfg.run.kind == RunKind::shear);
+    }
     s.manifest.run = {roughgas_version(),
                       o.case_file,
                       sets,
@@ -168,9 +181,10 @@ RunSetup new_run(const RunOptions& o) {
     return s;
 }
 
-RunSetup resume_run(const RunOptions& o) {
+RunSetup resume_run(const RunOptions& o, bool root) {
     RunSetup s;
-    s.lock.lock_if_exists(o.resume, "--resume"); // the run may still be going on in another process
+    if (root)
+        s.lock.lock_if_exists(o.resume, "--resume"); // the run may still be going on in another process
     ResumedRun r = read_resumable_run(o.resume); // refusals: exit 2, nothing written
     s.cfg = std::move(r.cfg);
     s.dir = o.resume;
@@ -184,25 +198,33 @@ RunSetup resume_run(const RunOptions& o) {
     return s;
 }
 
-int run_run(const RunOptions& o) {
+int run_run(const RunOptions& o, const Communicator& comm) {
     // First: the signals are blocked in every thread started from here on (the OpenMP pool too).
     const StopSignals signals("run", "stopping at the next step, writing a checkpoint and the CSV so far");
-    RunSetup setup = o.resume.empty() ? new_run(o) : resume_run(o);
+    const bool root = comm.is_root();
+    const bool quiet = o.quiet || !root; // the progress and the report are rank 0's
+    // The setup, on every rank alike (rank_errors.hpp): the case or checkpoint, the tables.
+    std::optional<RunSetup> prepared;
+    RunSpec spec;
+    std::shared_ptr<const RestitutionTables> tables;
+    agree_on_setup(comm, [&] {
+        prepared.emplace(o.resume.empty() ? new_run(o, root) : resume_run(o, root));
+        try {
+            spec = run_spec_from_case(prepared->cfg);
+        } catch (const std::invalid_argument& e) { // a valid case the solver cannot run
+            throw std::runtime_error(e.what());
+        }
+        spec.threads = o.threads > 0 ? o.threads : default_threads();
+        omp_set_num_threads(spec.threads); // the table builds use the same threads
+        tables = build_run_tables(spec); // before anything is written: a failure writes nothing
+    });
+    RunSetup& setup = *prepared;
     const CaseConfig& cfg = setup.cfg;
     const fs::path& dir = setup.dir;
     const double checkpoint_every = setup.manifest.checkpoint_every;
-
-    RunSpec spec;
-    try {
-        spec = run_spec_from_case(cfg);
-    } catch (const std::invalid_argument& e) { // a valid case the solver cannot run
-        throw std::runtime_error(e.what());
-    }
-    spec.threads = o.threads > 0 ? o.threads : default_threads();
-    omp_set_num_threads(spec.threads); // the table builds use the same threads
     // The contact model's range at the start (the hottest moment of a cooling run): the rms impact
     // speed of each pair with a contact model, sqrt(3 (T_a/m_a + T_b/m_b)), and three times it (the tail).
-    if (!o.quiet) {
+    if (!quiet) {
         bool warned = false;
         for (std::size_t a = 0; a < cfg.species.size() && !warned; ++a)
             for (std::size_t b = a; b < cfg.species.size() && !warned; ++b) {
@@ -221,7 +243,10 @@ int run_run(const RunOptions& o) {
     const int from = static_cast<int>(setup.manifest.replica_from);
     const int to = setup.manifest.replica_to > 0 ? static_cast<int>(setup.manifest.replica_to) : K;
     const bool partial = from > 0 || to < K;
-    const auto in_range = [&](int r) { return r >= from && r < to; };
+    // This rank's share of them (all of them in one process).
+    const Share share = share_of(to - from, comm.rank(), comm.size());
+    const int mine_from = from + static_cast<int>(share.first), mine_to = from + static_cast<int>(share.last);
+    const auto in_range = [&](int r) { return r >= mine_from && r < mine_to; };
 
     MomentsTable table(spec);
     // Nothing here may differ between a run and its resumption (the CSVs must be byte-identical):
@@ -259,8 +284,7 @@ int run_run(const RunOptions& o) {
         hcsv.emplace(htable->names(), hprov);
     }
 
-    const auto tables = build_run_tables(spec); // before anything is written: a failure writes nothing
-    if (!o.quiet) {
+    if (!quiet) {
         if (!tables->cache_rejected().empty())
             std::cerr << fmt::format("roughgas: cache file {} rejected ({}): rebuilt\n",
                                      spec.cache_file.string(), tables->cache_rejected());
@@ -269,24 +293,32 @@ int run_run(const RunOptions& o) {
                                      i.from_cache ? fmt::format("loaded from {}", spec.cache_file.string())
                                                   : fmt::format("built in {:.2f} s", i.seconds));
     }
-    fs::create_directories(dir);
-    setup.lock.lock(dir); // a new directory (an existing one is locked already)
-    if (setup.resuming) {
-        remove_stale_temporaries(dir);
-    } else {
-        // --force (checked above): an earlier run's checkpoint must not be resumed into this one.
-        std::error_code ec;
-        fs::remove_all(checkpoint_dir(dir), ec);
-    }
-    CheckpointWriter checkpoints(dir, setup.manifest, setup.resuming && !setup.manifest_changed);
-    if (checkpoint_every > 0 || partial) // a kill before the first replica checkpoint still leaves a resumable run
-        checkpoints.write_manifest_once();
+    // Rank 0 prepares the directory; the other ranks' replica files come after its run.bin (several
+    // ranks write one at a stop even without --checkpoint-every: theirs must belong to a resumable run).
+    CheckpointWriter checkpoints(dir, setup.manifest, !root || (setup.resuming && !setup.manifest_changed));
+    agree_on_setup(comm, [&] {
+        if (!root)
+            return;
+        fs::create_directories(dir);
+        setup.lock.lock(dir); // a new directory (an existing one is locked already)
+        if (setup.resuming) {
+            remove_stale_temporaries(dir);
+        } else {
+            // --force (checked above): an earlier run's checkpoint must not be resumed into this one.
+            std::error_code ec;
+            fs::remove_all(checkpoint_dir(dir), ec);
+        }
+        if (checkpoint_every > 0 || partial || comm.size() > 1) // a kill before the first replica
+            checkpoints.write_manifest_once();                  // checkpoint still leaves a resumable run
+    });
     const fs::path path = dir / output_file;
     const fs::path hpath = dir / histograms_file;
     // sets[r][k]: replica r's histograms at histogram time k; written (atomically) as they complete.
     std::vector<std::vector<HistogramSet>> hsets(static_cast<std::size_t>(K));
     std::size_t sets_written = 0;
-    const auto flush_histograms = [&] { // under `mutex`
+    const auto flush_histograms = [&] { // under `mutex`; rank 0 alone writes
+        if (!root)
+            return;
         std::size_t complete = hsets[0].size();
         for (const auto& r : hsets)
             complete = std::min(complete, r.size());
@@ -323,7 +355,9 @@ int run_run(const RunOptions& o) {
     // rows batched, the next rewrite waiting until 10x the last one's duration has passed.
     auto last_write = std::chrono::steady_clock::now() - std::chrono::hours(1);
     std::chrono::steady_clock::duration write_cost{};
-    const auto flush = [&](bool now) { // under `mutex`
+    const auto flush = [&](bool now) { // under `mutex`; rank 0 alone writes
+        if (!root)
+            return;
         std::size_t complete = rows[0].size();
         for (const auto& r : rows)
             complete = std::min(complete, r.size());
@@ -355,19 +389,21 @@ int run_run(const RunOptions& o) {
                                  std::move(state));
     };
 
-    ProgressLine progress(o.quiet ? nullptr : &std::cerr, to - from, ::isatty(STDERR_FILENO) == 1);
+    ProgressLine progress(quiet ? nullptr : &std::cerr, std::max(1, mine_to - mine_from),
+                          ::isatty(STDERR_FILENO) == 1);
     std::vector<ReplicaSummary> summaries(static_cast<std::size_t>(K));
     std::vector<char> final_saved(static_cast<std::size_t>(K), 0);
     for (int r = from; r < to; ++r)
         if (finished[static_cast<std::size_t>(r)]) {
             final_saved[static_cast<std::size_t>(r)] = 1; // its file says so already
-            progress.update(r - from, cfg.run.end, cfg.run.end, 0);
+            if (in_range(r))
+                progress.update(r - mine_from, cfg.run.end, cfg.run.end, 0);
         }
     std::atomic<bool> cancel{false};
     std::exception_ptr error;
     // --threads T is shared: min(T, K) replicas at a time, each with T/min(T, K) threads over the
     // groups of its steps (dsmc/engine.hpp). Neither changes the results.
-    const int threads = std::min(spec.threads, to - from);
+    const int threads = std::min(spec.threads, std::max(1, mine_to - mine_from));
     spec.threads = std::max(1, spec.threads / threads);
     if (threads > 1 && spec.threads > 1)
         omp_set_max_active_levels(2);
@@ -388,7 +424,7 @@ int run_run(const RunOptions& o) {
                 flush(false);
             };
             const ProgressSink report = [&, r](double done, double end, double coll) {
-                progress.update(r - from, done, end, coll);
+                progress.update(r - mine_from, done, end, coll);
             };
             HistogramSink hsink;
             if (htable) {
@@ -430,21 +466,65 @@ int run_run(const RunOptions& o) {
         }
     }
     progress.finish();
+    if (error) { // one rank's (main ends the job) or the one process's
+        std::lock_guard lock(mutex);
+        flush(true);
+        try {
+            std::rethrow_exception(error);
+        } catch (const NonFiniteValue& e) {
+            throw std::runtime_error(
+                on_disk > 0 ? fmt::format("{}; the {} rows before it are in {}", e.what(), on_disk, path.string())
+                            : fmt::format("{}; no row was complete before it, nothing written", e.what()));
+        }
+    }
+    // The signal that stopped a replica of this rank (0: none); with several ranks, of any rank.
+    const auto unfinished_in = [&](int a, int b) {
+        return std::find(finished.begin() + a, finished.begin() + b, 0) != finished.begin() + b;
+    };
+    const int stop_signal = static_cast<int>(comm.max(unfinished_in(mine_from, mine_to) ? signals.signal() : 0));
+    if (comm.size() > 1) {
+        // Every rank's replicas to rank 0: finished or not, whether its last file is saved, what it did,
+        // and its rows and histograms (in the encoding of a replica's checkpoint file).
+        ByteWriter w;
+        for (int r = mine_from; r < mine_to; ++r) {
+            const auto k = static_cast<std::size_t>(r);
+            w.u64(k);
+            w.u64(finished[k]);
+            w.u64(final_saved[k]);
+            const ReplicaSummary& s = summaries[k];
+            w.str(s.kernel);
+            w.put(s.collisions);
+            w.put(s.resumed_at);
+            w.put(s.overshoots);
+            w.str(encode_checkpoint(ReplicaCheckpoint{setup.manifest.run, k, rows[k], hsets[k], {}}));
+        }
+        const std::vector<std::string> parts = comm.gather(w.bytes());
+        if (!root)
+            return stop_signal > 0 ? 128 + stop_signal : exit_ok;
+        for (std::size_t p = 1; p < parts.size(); ++p) {
+            ByteReader in(parts[p]);
+            while (in.remaining() > 0) {
+                const auto k = static_cast<std::size_t>(in.u64());
+                finished[k] = static_cast<char>(in.u64());
+                final_saved[k] = static_cast<char>(in.u64());
+                ReplicaSummary& s = summaries[k];
+                s.kernel = in.str();
+                s.collisions = in.get<std::int64_t>();
+                s.resumed_at = in.get<std::int64_t>();
+                s.overshoots = in.get<std::int64_t>();
+                ReplicaCheckpoint c = decode_replica_checkpoint(in.str());
+                rows[k] = std::move(c.rows);
+                hsets[k] = std::move(c.histograms);
+            }
+        }
+    }
     {
         std::lock_guard lock(mutex);
         flush(true);
         if (htable)
             flush_histograms(); // a resumed run whose replicas had all finished: from the checkpoints
     }
-    if (error) {
-        try {
-            std::rethrow_exception(error);
-        } catch (const NonFiniteValue& e) {
-            throw std::runtime_error(
-                fmt::format("{}; the {} rows before it are in {}", e.what(), on_disk, path.string()));
-        }
-    }
-    if (std::find(finished.begin() + from, finished.begin() + to, 0) != finished.begin() + to) {
+    if (unfinished_in(from, to)) {
         // Stopped by a signal: the running replicas saved their states; the finished ones save their
         // rows now, so that a resume runs neither again (not-started ones start afresh).
         checkpoints.write_manifest_once();
@@ -455,9 +535,13 @@ int run_run(const RunOptions& o) {
                 save_replica(r, {});
         std::cerr << fmt::format("roughgas run: stopped by {}: {} complete rows in {}; checkpoint in {}; "
                                  "continue with: roughgas run --resume {}\n",
-                                 signals.name(), csv.rows(), path.string(), checkpoint_dir(dir).string(),
-                                 dir.string());
-        return 128 + signals.signal();
+                                 StopSignals::name_of(stop_signal), csv.rows(), path.string(),
+                                 checkpoint_dir(dir).string(), dir.string());
+        return 128 + stop_signal;
+    }
+    if (comm.size() > 1 && checkpoint_every == 0 && !partial) { // run.bin was for a stop only
+        std::error_code ec;
+        fs::remove_all(checkpoint_dir(dir), ec);
     }
     if (partial) {
         std::cout << fmt::format("roughgas run: replicas {} .. {} of {} finished: {} (combine the ranges with "
@@ -492,7 +576,7 @@ int run_run(const RunOptions& o) {
                           : fmt::format("; {} NOT reached (a drift of {} resolved); {} holds the second half's "
                                         "averages",
                                         what, fmt::join(st.monitored, ", "), (dir / file).string());
-        if (!shear && !o.quiet) { // the headline numbers of the scaled state, last on stderr
+        if (!shear && !quiet) { // the headline numbers of the scaled state, last on stderr
             std::vector<std::string> parts;
             for (const SteadyValue& v : st.values)
                 if (std::find(st.monitored.begin(), st.monitored.end(), v.name) != st.monitored.end())
@@ -539,7 +623,7 @@ int run_run(const RunOptions& o) {
 
 } // namespace
 
-Subcommand add_run_command(CLI::App& parent) {
+Subcommand add_run_command(CLI::App& parent, const Communicator& comm) {
     auto o = std::make_shared<RunOptions>();
     CLI::App* app =
         parent.add_subcommand("run", "run a DSMC simulation of the homogeneous cooling state or of "
@@ -565,10 +649,10 @@ Subcommand add_run_command(CLI::App& parent) {
                     "run only the replicas FROM .. TO-1 of run.replicas (0-based), writing DIR/checkpoint "
                     "for `roughgas merge` instead of the CSVs")
         ->excludes(resume);
-    return {app, [o, app] {
+    return {app, [o, app, &comm] {
                 o->seed_given = app->count("--seed") > 0;
                 o->checkpoint_every_given = app->count("--checkpoint-every") > 0;
-                return run_run(*o);
+                return run_run(*o, comm);
             }};
 }
 
@@ -577,7 +661,8 @@ int resume_finished_run(const std::string& dir, int threads, bool quiet) {
     o.resume = dir;
     o.threads = threads;
     o.quiet = quiet;
-    return run_run(o);
+    const Communicator one_process{Launch{}};
+    return run_run(o, one_process);
 }
 
 } // namespace roughgas::cli

@@ -30,8 +30,10 @@ StopSignals::~StopSignals() {
     pthread_sigmask(SIG_SETMASK, &old_, nullptr);
 }
 
-std::string StopSignals::name() const {
-    switch (signal()) {
+std::string StopSignals::name() const { return name_of(signal()); }
+
+std::string StopSignals::name_of(int signal) {
+    switch (signal) {
     case SIGINT:
         return "SIGINT";
     case SIGTERM:

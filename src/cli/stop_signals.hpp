@@ -29,6 +29,7 @@ class StopSignals {
     bool requested() const { return signal_.load(std::memory_order_acquire) != 0; }
     int signal() const { return signal_.load(std::memory_order_acquire); } // 0: none yet
     std::string name() const;                                              // "SIGINT", "SIGTERM"
+    static std::string name_of(int signal);                                // the same for a number
 
   private:
     void wait();

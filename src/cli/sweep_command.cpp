@@ -13,7 +13,11 @@
 // dropped, the points not started are skipped; the finished points keep DIR/point_K/moments.csv,
 // no sweep.csv is written (a summary with points missing would read as the whole sweep), and the
 // exit status is 128 + the signal's number. A sweep has no checkpoints: run it again to redo it.
+//
+// Under an MPI launcher (parallel/communicator.hpp) rank k runs the points k, k + R, k + 2R, ... on
+// its threads and sends their rows to rank 0, which writes every file: the same bytes as one process.
 #include "commands.hpp"
+#include "rank_errors.hpp"
 
 #include "roughgas/core/available_cpus.hpp"
 #include "output_dir_lock.hpp"
@@ -26,6 +30,7 @@
 #include "roughgas/io/run_spec_from_case.hpp"
 #include "roughgas/io/run_tables.hpp"
 #include "roughgas/io/steady_csv.hpp"
+#include "roughgas/core/bytes.hpp"
 
 #include <fmt/format.h>
 
@@ -97,8 +102,24 @@ struct PointResult {
     SteadyResult steady;
 };
 
-// Empty when `signals` asked for a stop before the point ended (its state is dropped).
-std::optional<PointResult> run_point(const CaseConfig& cfg, const StopSignals& signals) {
+// The point's summary from its replicas' rows (rows[r][k]: replica r's row k).
+PointResult point_result(const CaseConfig& cfg, const std::vector<std::vector<std::vector<double>>>& rows) {
+    const RunSpec spec = run_spec_from_case(cfg);
+    MomentsTable table(spec);
+    PointResult p{table.names(), table.units(), {}, {}};
+    for (std::size_t k = 0; k < rows[0].size(); ++k) {
+        std::vector<std::span<const double>> spans;
+        for (const auto& r : rows)
+            spans.emplace_back(r[k]);
+        p.rows.push_back(table.combine(spans));
+    }
+    p.steady = steady_summary(p.names, p.rows, spec.shear.has_value());
+    return p;
+}
+
+// Every replica's rows; empty when `signals` asked for a stop before the point ended (its state is dropped).
+std::optional<std::vector<std::vector<std::vector<double>>>> run_point(const CaseConfig& cfg,
+                                                                        const StopSignals& signals) {
     RunSpec spec = run_spec_from_case(cfg);
     spec.threads = 1;
     MomentsTable table(spec);
@@ -118,27 +139,24 @@ std::optional<PointResult> run_point(const CaseConfig& cfg, const StopSignals& s
             run_replica(spec, *tables, r, sink, {}, nullptr, {}, &stop) == ReplicaEnd::stopped)
             return std::nullopt;
     }
-    PointResult p{table.names(), table.units(), {}, {}};
-    for (std::size_t k = 0; k < rows[0].size(); ++k) {
-        std::vector<std::span<const double>> spans;
-        for (const auto& r : rows)
-            spans.emplace_back(r[k]);
-        p.rows.push_back(table.combine(spans));
-    }
-    p.steady = steady_summary(p.names, p.rows, spec.shear.has_value());
-    return p;
+    return rows;
 }
 
-int run_sweep(const SweepOptions& o) {
+int run_sweep(const SweepOptions& o, const Communicator& comm) {
     // First: the signals are blocked in every thread started from here on (the OpenMP pool too).
     const StopSignals signals("sweep", "stopping every point at its next step; the finished points keep "
                                        "their point_K/moments.csv, no sweep.csv is written");
-    const Sweep s = parse_sweep(o);
-    const double from = parse_number(o, s.from), to = parse_number(o, s.to);
-    // Every point is validated (exit 2) before any work.
+    const bool root = comm.is_root();
+    Sweep s;
     std::vector<double> values;
     std::vector<CaseConfig> cases;
     std::vector<std::vector<std::string>> point_sets;
+    const fs::path dir(o.out);
+    OutputDirLock lock; // one writer per directory (output_dir_lock.hpp), until the sweep ends
+    // Every point is validated (exit 2) before any work; rank 0 checks and locks the directory.
+    agree_on_setup(comm, [&] {
+    s = parse_sweep(o);
+    const double from = parse_number(o, s.from), to = parse_number(o, s.to);
     for (long k = 0; k < s.count; ++k) {
         const double x = s.count == 1
                              ? from
@@ -149,37 +167,31 @@ int run_sweep(const SweepOptions& o) {
         values.push_back(x);
         point_sets.push_back(sets);
     }
-    const fs::path dir(o.out);
+    if (!root)
+        return;
     if (fs::exists(dir) && !fs::is_directory(dir))
         throw InputError(dir.string(), "--out", "--out " + dir.string() + ": exists and is not a directory");
-    OutputDirLock lock; // one writer per directory (output_dir_lock.hpp), until the sweep ends
     lock.lock_if_exists(dir);
     if (!o.force && fs::exists(dir / "sweep.csv"))
         throw InputError(dir.string(), "--out",
                          fmt::format("--out {}: sweep.csv exists (use --force to overwrite)", dir.string()));
     fs::create_directories(dir);
     lock.lock(dir);
+    });
 
-    const int threads =
-        std::min<int>(o.threads > 0 ? o.threads : default_threads(), static_cast<int>(s.count));
+    // This rank's points: k = rank, rank + R, ... (all of them in one process).
+    std::vector<long> mine;
+    for (long k = comm.rank(); k < s.count; k += comm.size())
+        mine.push_back(k);
+    const int threads = std::max<int>(
+        1, std::min<int>(o.threads > 0 ? o.threads : default_threads(), static_cast<int>(mine.size())));
     std::vector<PointResult> results(values.size());
+    std::vector<std::vector<std::vector<std::vector<double>>>> point_rows(values.size()); // [k][replica][row]
     std::vector<char> done(values.size(), 0);
     std::exception_ptr error;
     std::mutex mutex;
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-    for (long k = 0; k < s.count; ++k) {
-        try {
-            {
-                std::lock_guard lock(mutex);
-                if (error)
-                    continue;
-            }
-            if (signals.requested())
-                continue;
-            std::optional<PointResult> point = run_point(cases[static_cast<std::size_t>(k)], signals);
-            if (!point)
-                continue;
-            PointResult& p = *point;
+    // Point k's moments.csv, written by rank 0 (as each of its own points ends, the others' after the gather).
+    const auto write_point = [&](long k, const PointResult& p) {
             CsvProvenance prov;
             prov.case_file = o.case_file;
             prov.overrides = point_sets[static_cast<std::size_t>(k)];
@@ -194,12 +206,31 @@ int run_sweep(const SweepOptions& o) {
             const fs::path pd = dir / fmt::format("point_{}", k);
             fs::create_directories(pd);
             csv.write(pd / "moments.csv");
+    };
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+    for (std::size_t i = 0; i < mine.size(); ++i) {
+        const long k = mine[i];
+        try {
+            {
+                std::lock_guard lock(mutex);
+                if (error)
+                    continue;
+            }
+            if (signals.requested())
+                continue;
+            auto rows = run_point(cases[static_cast<std::size_t>(k)], signals);
+            if (!rows)
+                continue;
+            PointResult p = point_result(cases[static_cast<std::size_t>(k)], *rows);
+            if (root)
+                write_point(k, p);
             std::lock_guard lock(mutex);
             if (!o.quiet)
                 std::cerr << fmt::format("roughgas sweep: point {} ({} = {:.6g}) done{}\n", k, s.key,
                                          values[static_cast<std::size_t>(k)],
                                          p.steady.reached ? "" : " (steady state NOT reached)");
             results[static_cast<std::size_t>(k)] = std::move(p);
+            point_rows[static_cast<std::size_t>(k)] = std::move(*rows);
             done[static_cast<std::size_t>(k)] = 1;
         } catch (...) {
             std::lock_guard lock(mutex);
@@ -207,19 +238,54 @@ int run_sweep(const SweepOptions& o) {
                 error = std::current_exception();
         }
     }
-    if (error)
+    if (error) // one rank's (main ends the job) or the one process's
         std::rethrow_exception(error);
-    if (signals.requested()) {
+    const int stop_signal = static_cast<int>(comm.max(signals.signal()));
+    if (comm.size() > 1) { // every rank's finished points to rank 0: their replicas' rows
+        ByteWriter w;
+        for (long k : mine) {
+            const auto K = static_cast<std::size_t>(k);
+            if (!done[K])
+                continue;
+            w.u64(K);
+            w.u64(point_rows[K].size());
+            for (const auto& replica : point_rows[K]) {
+                w.u64(replica.size());
+                for (const auto& row : replica)
+                    w.f64s(row);
+            }
+        }
+        const std::vector<std::string> parts = comm.gather(w.bytes());
+        if (!root)
+            return stop_signal > 0 ? 128 + stop_signal : exit_ok;
+        for (std::size_t p = 1; p < parts.size(); ++p) {
+            ByteReader in(parts[p]);
+            while (in.remaining() > 0) {
+                const auto K = static_cast<std::size_t>(in.u64());
+                std::vector<std::vector<std::vector<double>>> rows(in.count(sizeof(std::uint64_t)));
+                for (auto& replica : rows) {
+                    replica.resize(in.count(sizeof(std::uint64_t)));
+                    for (auto& row : replica)
+                        row = in.f64s();
+                }
+                results[K] = point_result(cases[K], rows);
+                write_point(static_cast<long>(K), results[K]);
+                done[K] = 1;
+            }
+        }
+    }
+    if (stop_signal > 0) {
         std::string finished;
         for (std::size_t k = 0; k < done.size(); ++k)
             if (done[k])
                 finished += fmt::format("{}{}", finished.empty() ? "" : ", ", k);
         std::cerr << fmt::format(
-            "roughgas sweep: stopped by {}: {} of {} points finished{}{}; no {} written\n", signals.name(),
+            "roughgas sweep: stopped by {}: {} of {} points finished{}{}; no {} written\n",
+            StopSignals::name_of(stop_signal),
             std::count(done.begin(), done.end(), 1), s.count,
             finished.empty() ? "" : " (point_K/moments.csv for K = ", finished.empty() ? "" : finished + ")",
             (dir / "sweep.csv").string());
-        return 128 + signals.signal();
+        return 128 + stop_signal;
     }
 
     std::vector<std::string> columns = {s.key};
@@ -285,7 +351,7 @@ int run_sweep(const SweepOptions& o) {
 
 } // namespace
 
-Subcommand add_sweep_command(CLI::App& parent) {
+Subcommand add_sweep_command(CLI::App& parent, const Communicator& comm) {
     auto o = std::make_shared<SweepOptions>();
     CLI::App* app =
         parent.add_subcommand("sweep", "run a case over a range of one parameter, writing DIR/sweep.csv "
@@ -299,7 +365,7 @@ Subcommand add_sweep_command(CLI::App& parent) {
         ->check(positive());
     app->add_flag("--quiet", o->quiet, "no progress output");
     app->add_flag("--force", o->force, "overwrite an existing output directory");
-    return {app, [o] { return run_sweep(*o); }};
+    return {app, [o, &comm] { return run_sweep(*o, comm); }};
 }
 
 } // namespace roughgas::cli

@@ -1,6 +1,9 @@
 #include "roughgas/core/available_cpus.hpp"
 
+#include "roughgas/parallel/communicator.hpp"
+
 #include <sched.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -57,8 +60,11 @@ int default_threads() {
         return *n;
     int n = 4096;
     cpu_set_t set;
-    if (sched_getaffinity(0, sizeof set, &set) == 0)
+    bool whole_machine = false; // the mask is every online CPU: not bound by a launcher
+    if (sched_getaffinity(0, sizeof set, &set) == 0) {
         n = std::min(n, std::max(1, CPU_COUNT(&set)));
+        whole_machine = CPU_COUNT(&set) >= sysconf(_SC_NPROCESSORS_ONLN);
+    }
     if (const std::optional<int> q = cpus_of_cpu_max(read_text("/sys/fs/cgroup/cpu.max")))
         n = std::min(n, *q);
     const std::string v1_quota = read_text("/sys/fs/cgroup/cpu/cpu.cfs_quota_us");
@@ -68,7 +74,12 @@ int default_threads() {
             n = std::min(n, *q);
     if (const std::optional<int> s = positive_int(std::getenv("SLURM_CPUS_PER_TASK")))
         n = std::min(n, *s);
-    return n == 4096 ? 1 : n;
+    if (n == 4096)
+        return 1;
+    // MPI ranks on this node that share one unbound mask (mpirun --bind-to none): a share each.
+    if (const int ranks = launch_from_environment().ranks_on_this_node; ranks > 1 && whole_machine)
+        n = std::max(1, n / ranks);
+    return n;
 }
 
 } // namespace roughgas

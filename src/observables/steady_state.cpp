@@ -17,8 +17,9 @@ std::size_t index_of(const std::vector<std::string>& names, const std::string& n
 
 SteadyValue batch_mean(std::span<const double> x, int batches) {
     SteadyValue v;
-    const std::size_t B = static_cast<std::size_t>(std::max(batches, 1));
-    const std::size_t len = x.size() / B;
+    // Fewer values than batches: one value per batch (a short window still has a mean and an error).
+    const std::size_t B = std::min(static_cast<std::size_t>(std::max(batches, 1)), x.size());
+    const std::size_t len = B > 0 ? x.size() / B : 0;
     if (len == 0) {
         v.mean = v.err = nan;
         return v;

@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <sched.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <optional>
 #include <string>
@@ -36,6 +38,20 @@ class ScopedEnv {
     std::optional<std::string> old_;
 };
 
+// default_threads() with this thread's affinity set to the first CPU of `all`, then `all` again.
+int default_threads_on_one_cpu(const cpu_set_t& all) {
+    int first = 0;
+    while (!CPU_ISSET(first, &all))
+        ++first;
+    cpu_set_t one;
+    CPU_ZERO(&one);
+    CPU_SET(first, &one);
+    EXPECT_EQ(sched_setaffinity(0, sizeof one, &one), 0);
+    const int n = default_threads();
+    EXPECT_EQ(sched_setaffinity(0, sizeof all, &all), 0);
+    return n;
+}
+
 TEST(AvailableCpus, CgroupQuota) {
     EXPECT_EQ(cpus_of_cpu_max("max 100000\n"), std::nullopt);
     EXPECT_EQ(cpus_of_cpu_max("100000 100000\n"), 1);
@@ -62,16 +78,25 @@ TEST(AvailableCpus, NeverMoreThanTheAffinityMaskOrSlurmsCpusPerTask) {
         EXPECT_EQ(default_threads(), 1);
     }
     // As under `taskset -c CPU`: one CPU of the mask.
-    int first = 0;
-    while (!CPU_ISSET(first, &all))
-        ++first;
-    cpu_set_t one;
-    CPU_ZERO(&one);
-    CPU_SET(first, &one);
-    ASSERT_EQ(sched_setaffinity(0, sizeof one, &one), 0);
-    const int under_taskset = default_threads();
-    ASSERT_EQ(sched_setaffinity(0, sizeof all, &all), 0);
+    const int under_taskset = default_threads_on_one_cpu(all);
     EXPECT_EQ(under_taskset, 1);
+}
+
+// MPI ranks on one node sharing an unbound mask (mpirun --bind-to none) take a share each; the
+// launcher's variables are only read here (no MPI call).
+TEST(AvailableCpus, RanksOnOneNodeShareTheirMask) {
+    const ScopedEnv omp("OMP_NUM_THREADS", nullptr);
+    const ScopedEnv slurm("SLURM_CPUS_PER_TASK", nullptr);
+    cpu_set_t all;
+    ASSERT_EQ(sched_getaffinity(0, sizeof all, &all), 0);
+    const int alone = default_threads();
+    const ScopedEnv size("OMPI_COMM_WORLD_SIZE", "4");
+    const ScopedEnv local("OMPI_COMM_WORLD_LOCAL_SIZE", "2");
+    if (CPU_COUNT(&all) >= sysconf(_SC_NPROCESSORS_ONLN))
+        EXPECT_EQ(default_threads(), std::max(1, alone / 2));
+    // Bound to one CPU by the launcher: that CPU, not a share of it.
+    const int bound = default_threads_on_one_cpu(all);
+    EXPECT_EQ(bound, 1);
 }
 
 } // namespace

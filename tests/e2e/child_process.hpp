@@ -25,8 +25,12 @@ class ChildProcess {
   public:
     // Runs ROUGHGAS_BINARY with `args`, stdout and stderr to the files `out` and `err`.
     ChildProcess(const std::vector<std::string>& args, const std::filesystem::path& out,
-                 const std::filesystem::path& err) {
-        std::vector<std::string> all{ROUGHGAS_BINARY};
+                 const std::filesystem::path& err)
+        : ChildProcess(ROUGHGAS_BINARY, args, out, err) {}
+    // Runs `program` (a path) with `args`.
+    ChildProcess(const std::string& program, const std::vector<std::string>& args,
+                 const std::filesystem::path& out, const std::filesystem::path& err) {
+        std::vector<std::string> all{program};
         all.insert(all.end(), args.begin(), args.end());
         std::vector<char*> argv;
         for (std::string& a : all)
@@ -46,7 +50,7 @@ class ChildProcess {
         posix_spawnattr_setsigmask(&attr, &none);
         posix_spawnattr_setsigdefault(&attr, &defaults);
         posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
-        const int e = posix_spawn(&pid_, ROUGHGAS_BINARY, &files, &attr, argv.data(), environ);
+        const int e = posix_spawn(&pid_, program.c_str(), &files, &attr, argv.data(), environ);
         posix_spawn_file_actions_destroy(&files);
         posix_spawnattr_destroy(&attr);
         if (e != 0) {

@@ -54,6 +54,19 @@ TEST(BatchMean, ErrorOfIidData) {
     EXPECT_NEAR(ratio, 1.0, 0.15);
 }
 
+// Fewer values than batches: one value per batch, so the mean and error of 1, 2, 3 are exact
+// (2 and sd / sqrt(3) = 1 / sqrt(3)); one value has a mean but no error, none has neither.
+TEST(BatchMean, ShortSeriesUseOneValuePerBatch) {
+    const std::vector<double> x = {1.0, 2.0, 3.0};
+    const SteadyValue v = batch_mean(x, 10);
+    EXPECT_DOUBLE_EQ(v.mean, 2.0);
+    EXPECT_DOUBLE_EQ(v.err, 1.0 / std::sqrt(3.0));
+    const SteadyValue one = batch_mean(std::vector<double>{4.0}, 10);
+    EXPECT_EQ(one.mean, 4.0);
+    EXPECT_TRUE(std::isnan(one.err));
+    EXPECT_TRUE(std::isnan(batch_mean(std::vector<double>{}, 10).mean));
+}
+
 // A relaxation from 1 + 5 (time constant 10 rows) with noise 0.01: the transient is resolved
 // until 5 exp(-k/10) is well below the noise of a half-window mean (~0.01/sqrt(200) x 3), i.e.
 // k > 10 ln(5/0.002) ~ 80; the steady window starts there, not at 0, and not after half the run.

@@ -52,7 +52,8 @@ struct SteadyResult {
 };
 
 // Mean and batch-means standard error of x (B batches of equal length; the first len % B values
-// are left out, so every batch has the same weight). err is NaN with fewer than 2 batches.
+// are left out, so every batch has the same weight; fewer than B values: one per batch). err is NaN
+// with fewer than 2 values, mean too with none.
 SteadyValue batch_mean(std::span<const double> x, int batches);
 
 // `names`: the columns of `rows`; columns named in `skip` (and every X_err column) are not averaged.
