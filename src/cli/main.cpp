@@ -92,6 +92,8 @@ int run_cli(int argc, char** argv, const roughgas::Communicator& comm) {
 int main(int argc, char** argv) {
     using namespace roughgas::cli;
     const roughgas::Launch launch = roughgas::launch_from_environment();
+    sigset_t unblocked;
+    sigemptyset(&unblocked);
     if (launch.by_mpi_launcher) {
         // Before MPI starts its own threads, which inherit the mask: SIGINT and SIGTERM must reach
         // the command's StopSignals thread (stop_signals.hpp), never take their default action on
@@ -100,7 +102,7 @@ int main(int argc, char** argv) {
         sigemptyset(&stop);
         sigaddset(&stop, SIGINT);
         sigaddset(&stop, SIGTERM);
-        pthread_sigmask(SIG_BLOCK, &stop, nullptr);
+        pthread_sigmask(SIG_BLOCK, &stop, &unblocked);
     }
     std::optional<roughgas::Communicator> comm;
     try {
@@ -108,8 +110,11 @@ int main(int argc, char** argv) {
     } catch (const std::exception& e) {
         if (launch.rank == 0)
             std::cerr << "roughgas: error: " << e.what() << '\n';
-        return exit_invalid;
+        // Launched as several ranks by a build without MPI: a usage error; MPI failing to start: not.
+        return roughgas::built_with_mpi() ? exit_failure : exit_invalid;
     }
+    if (launch.by_mpi_launcher) // MPI's threads keep the blocked mask; this thread takes signals again
+        pthread_sigmask(SIG_SETMASK, &unblocked, nullptr);
     try {
         return run_cli(argc, argv, *comm);
     } catch (const QuietExit& q) {

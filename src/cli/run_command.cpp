@@ -200,7 +200,8 @@ RunSetup resume_run(const RunOptions& o, bool root) {
 
 int run_run(const RunOptions& o, const Communicator& comm) {
     // First: the signals are blocked in every thread started from here on (the OpenMP pool too).
-    const StopSignals signals("run", "stopping at the next step, writing a checkpoint and the CSV so far");
+    const StopSignals signals("run", "stopping at the next step, writing a checkpoint and the CSV so far",
+                              !comm.under_launcher());
     const bool root = comm.is_root();
     const bool quiet = o.quiet || !root; // the progress and the report are rank 0's
     // The setup, on every rank alike (rank_errors.hpp): the case or checkpoint, the tables.
@@ -216,7 +217,14 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         }
         spec.threads = o.threads > 0 ? o.threads : default_threads();
         omp_set_num_threads(spec.threads); // the table builds use the same threads
-        tables = build_run_tables(spec); // before anything is written: a failure writes nothing
+        if (root)
+            tables = build_run_tables(spec); // before anything is written: a failure writes nothing
+    });
+    // The other ranks after rank 0, so that they load the cache file it saved instead of each
+    // building the tables and writing the same file.
+    agree_on_setup(comm, [&] {
+        if (!root)
+            tables = build_run_tables(spec);
     });
     RunSetup& setup = *prepared;
     const CaseConfig& cfg = setup.cfg;
@@ -539,7 +547,7 @@ int run_run(const RunOptions& o, const Communicator& comm) {
                                  checkpoint_dir(dir).string(), dir.string());
         return 128 + stop_signal;
     }
-    if (comm.size() > 1 && checkpoint_every == 0 && !partial) { // run.bin was for a stop only
+    if (comm.size() > 1 && checkpoint_every == 0 && !partial && !setup.resuming) { // run.bin was for a stop only
         std::error_code ec;
         fs::remove_all(checkpoint_dir(dir), ec);
     }

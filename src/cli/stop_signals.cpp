@@ -11,8 +11,8 @@
 
 namespace roughgas::cli {
 
-StopSignals::StopSignals(std::string command, std::string on_first)
-    : command_(std::move(command)), on_first_(std::move(on_first)) {
+StopSignals::StopSignals(std::string command, std::string on_first, bool repeat_ends_now)
+    : command_(std::move(command)), on_first_(std::move(on_first)), repeat_ends_now_(repeat_ends_now) {
     sigemptyset(&set_);
     sigaddset(&set_, SIGINT);
     sigaddset(&set_, SIGTERM);
@@ -53,9 +53,11 @@ void StopSignals::wait() {
         int none = 0;
         if (signal_.compare_exchange_strong(none, sig, std::memory_order_acq_rel)) {
             std::cerr << "\nroughgas " << command_ << ": " << name() << ": " << on_first_
-                      << " (send it again to end at once)\n";
+                      << (repeat_ends_now_ ? " (send it again to end at once)\n" : "\n");
             continue;
         }
+        if (!repeat_ends_now_)
+            continue;
         // The second signal: its default action, which ends the process as killed by it. Raised on
         // this thread, the only one where it is unblocked now.
         struct sigaction dfl {};

@@ -20,7 +20,9 @@ class StopSignals {
   public:
     // `on_first`: what the command says on stderr when the first signal comes, after
     // "roughgas COMMAND: SIGNAME: ", e.g. "roughgas run: SIGINT: stopping at the next step, ...".
-    StopSignals(std::string command, std::string on_first);
+    // `repeat_ends_now` false (under an MPI launcher, which may deliver one stop as SIGINT then
+    // SIGTERM, and kills the ranks itself after its timeout): later signals are ignored.
+    StopSignals(std::string command, std::string on_first, bool repeat_ends_now = true);
     // Restores the mask: a signal that came while it was being destroyed then takes its default action.
     ~StopSignals();
     StopSignals(const StopSignals&) = delete;
@@ -34,6 +36,7 @@ class StopSignals {
   private:
     void wait();
     std::string command_, on_first_;
+    bool repeat_ends_now_ = true;
     sigset_t set_{}, old_{};
     std::atomic<int> signal_{0};
     std::atomic<bool> closing_{false};

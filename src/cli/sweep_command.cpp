@@ -144,8 +144,10 @@ std::optional<std::vector<std::vector<std::vector<double>>>> run_point(const Cas
 
 int run_sweep(const SweepOptions& o, const Communicator& comm) {
     // First: the signals are blocked in every thread started from here on (the OpenMP pool too).
-    const StopSignals signals("sweep", "stopping every point at its next step; the finished points keep "
-                                       "their point_K/moments.csv, no sweep.csv is written");
+    const StopSignals signals("sweep",
+                              "stopping every point at its next step; the finished points keep "
+                              "their point_K/moments.csv, no sweep.csv is written",
+                              !comm.under_launcher());
     const bool root = comm.is_root();
     Sweep s;
     std::vector<double> values;

@@ -2,6 +2,7 @@
 #include "roughgas/parallel/communicator.hpp"
 
 #include <chrono>
+#include <limits>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
@@ -88,6 +89,8 @@ Communicator::Communicator(const Launch& launch) {
     int provided = 0;
     check(MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided), "MPI_Init_thread");
     initialised_ = true;
+    if (provided < MPI_THREAD_FUNNELED)
+        throw std::runtime_error("this MPI library does not support threads (MPI_THREAD_FUNNELED)");
     check(MPI_Comm_rank(MPI_COMM_WORLD, &rank_), "MPI_Comm_rank");
     check(MPI_Comm_size(MPI_COMM_WORLD, &size_), "MPI_Comm_size");
 }
@@ -101,7 +104,7 @@ std::vector<std::string> Communicator::gather(std::string_view bytes) const {
     if (size_ == 1)
         return {std::string(bytes)};
     // The sizes first, then the bytes (MPI counts are int: more than 2 GB per rank is refused).
-    if (bytes.size() > static_cast<std::size_t>(1) << 31)
+    if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
         throw std::runtime_error("Communicator::gather: more than 2 GiB from one rank");
     int n = static_cast<int>(bytes.size());
     std::vector<int> sizes(is_root() ? static_cast<std::size_t>(size_) : 0);
@@ -114,7 +117,7 @@ std::vector<std::string> Communicator::gather(std::string_view bytes) const {
         offsets[i] = static_cast<int>(total);
         total += sizes[i];
     }
-    if (total > (1LL << 31) - 1)
+    if (total > std::numeric_limits<int>::max())
         throw std::runtime_error("Communicator::gather: more than 2 GiB in all");
     std::string all(static_cast<std::size_t>(total), '\0');
     check(MPI_Igatherv(bytes.data(), n, MPI_BYTE, all.data(), sizes.data(), offsets.data(), MPI_BYTE, 0,
@@ -134,7 +137,7 @@ std::string Communicator::broadcast(std::string bytes) const {
     MPI_Request r;
     check(MPI_Ibcast(&n, 1, MPI_LONG_LONG, 0, MPI_COMM_WORLD, &r), "MPI_Ibcast");
     wait(r, "MPI_Ibcast");
-    if (n > (1LL << 31) - 1)
+    if (n > std::numeric_limits<int>::max())
         throw std::runtime_error("Communicator::broadcast: more than 2 GiB");
     bytes.resize(static_cast<std::size_t>(n));
     check(MPI_Ibcast(bytes.data(), static_cast<int>(n), MPI_BYTE, 0, MPI_COMM_WORLD, &r), "MPI_Ibcast");

@@ -80,7 +80,7 @@ bool every_replica_saved(const fs::path& out, int replicas) {
     return true;
 }
 
-// Rough cooling, 5 replicas (shares of 5, 3 + 2 and 2 + 2 + 1), histograms and log-spaced rows.
+// Rough cooling, 5 replicas (shares of 5, 2 + 3 and 1 + 2 + 2), histograms and log-spaced rows.
 std::string ensemble_case(const std::string& end = "20.0", int replicas = 5, int particles = 3000) {
     return "[run]\nparticles = " + std::to_string(particles) + "\nreplicas = " + std::to_string(replicas) +
            "\nend = " + end +

@@ -34,6 +34,8 @@ enum class Stream : std::uint64_t {
                           // one stream per (step, work unit)
     partition = 4,        // reserved: per-step random partition of the particles into work units
     test = 5,             // tests only
+    initial_position = 6, // dsmc/spatial_engine.hpp: uniform positions in the box, one stream per species
+    cell_collisions = 7,  // dsmc/spatial_engine.hpp: a step's collisions, one stream per (step, unit of cells)
 };
 
 // splitmix64 (Steele, Lea & Flood 2014): the output function of one step from state x.

@@ -4,6 +4,7 @@
 #include "roughgas/contact/contact_pair.hpp"
 #include "roughgas/contact/tolerance.hpp"
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -42,6 +43,13 @@ struct ShearSpec {
     double time_step = 0.2; // Strang step h in mean free times (at each output interval's start)
 };
 
+// A spatially resolved run (dsmc/spatial_engine.hpp): a periodic box of collision cells.
+struct DomainSpec {
+    std::array<double, 3> size{1, 1, 1}; // L_x, L_y, L_z (the case's length unit)
+    std::array<int, 3> cells{1, 1, 1};   // collision cells along each axis
+    double time_step = 0.2;              // in mean free times of the current state
+};
+
 struct RunSpec {
     std::vector<SpeciesSpec> species;
     // Model of species pair (a, b), a <= b, at index pair_index(a, b, species.size()).
@@ -78,6 +86,8 @@ struct RunSpec {
     double table_g_min = 1e-6, table_g_max = 1e2;
     // Uniform shear flow instead of free cooling (run.kind = "shear").
     std::optional<ShearSpec> shear;
+    // Positions, streaming and collision cells instead of the homogeneous gas ([domain]).
+    std::optional<DomainSpec> domain;
 };
 
 // The automatic group count: particles/16384 rounded down to a power of two (at least 1, at most

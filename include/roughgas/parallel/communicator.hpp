@@ -41,6 +41,9 @@ class Communicator {
     int rank() const { return rank_; }
     int size() const { return size_; }
     bool is_root() const { return rank_ == 0; }
+    // Started by an MPI launcher, which may signal the ranks more than once (mpirun passes a Ctrl-C
+    // on as SIGTERM after the SIGINT the terminal sent to every rank).
+    bool under_launcher() const { return initialised_; }
 
     // Every rank's bytes, in rank order, on rank 0; an empty vector on the others.
     std::vector<std::string> gather(std::string_view bytes) const;

@@ -1,0 +1,340 @@
+#pragma once
+// The DSMC of the spatially resolved gas (docs/model.md §8): the Boltzmann equation with its
+// streaming term, (d/dt + v.grad) f = J[f, f] (Brilliantov, Spahn, Hertzsch & Poeschel 1996,
+// eq. 40), for grains with positions in a periodic box, split into steps of length dt:
+//
+//   1. free flight: x += v dt (v and omega unchanged), wrapped into the box [0, L_x) x [0, L_y) x [0, L_z);
+//   2. the grains sorted by collision cell (a uniform grid of n_x x n_y x n_z cells; within each
+//      species, so that a species stays one contiguous range of the store and the observables'
+//      species slices apply unchanged);
+//   3. collisions inside each cell for a time dt, with the collision rule and restitution policies
+//      of the homogeneous engine (collision/rule.hpp, collision/sampling.hpp).
+//
+// Kernel in a cell. The box holds n V physical grains (n = run.density, V = L_x L_y L_z) represented
+// by N simulated ones, each standing for F = n V / N. A pair (i, j) of species (a, b) in a cell of
+// volume V_c collides at the rate pi sigma_ab^2 |v_i - v_j| F / V_c: the rate of the homogeneous
+// engine with the cell for the volume (V_c / F = N / (n C) for C equal cells), so a grain's collision
+// frequency is n pi sigma^2 <g> whatever the cell size, in a uniform gas exactly. Sampled without
+// approximation (sequential thinning, as the homogeneous engine does): with u_c the cell's mean
+// velocity at the step's start and b = max |v_k - u_c| over its grains, g_max = 2 b bounds every
+// |v_i - v_j| of the cell; candidates form a Poisson process of rate
+// Lambda = N_c (N_c - 1)/2 pi sigma_max^2 g_max F / V_c (sigma_max: the largest pair diameter), each a
+// uniformly random pair, accepted with probability sigma_ab^2 |v_i - v_j| / (sigma_max^2 g_max); a
+// collision that makes a grain's |v - u_c| exceed b raises b at once (the next increment is drawn
+// at the new rate: memoryless, so the majorant is never exceeded). A grain may collide any number
+// of times in a step (the once-per-step variant has a first-order time-step error in the
+// viscosity). The candidate that would fall after dt is discarded (memoryless again).
+//
+// Threads. Each step's collisions run over work units of a fixed number of cells, claimed
+// dynamically by the replica's WorkerTeam; unit u draws from the stream (seed, cell_collisions,
+// replica, step, u) and has its own observer copy, merged in unit order: the results depend on
+// the cells per unit (fixed), never on the thread count. The flight is per grain and the sort
+// serial.
+#include "roughgas/collision/pair_constants.hpp"
+#include "roughgas/collision/record.hpp"
+#include "roughgas/collision/rule.hpp"
+#include "roughgas/collision/sampling.hpp"
+#include "roughgas/core/bytes.hpp"
+#include "roughgas/core/rng.hpp"
+#include "roughgas/core/vec.hpp"
+#include "roughgas/core/worker_team.hpp"
+#include "roughgas/dsmc/init.hpp"
+#include "roughgas/dsmc/run_spec.hpp"
+#include "roughgas/dsmc/species.hpp"
+#include "roughgas/observables/moments.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace roughgas {
+
+template <class Policy> class SpatialEngine {
+  public:
+    static constexpr bool rough = Policy::needs_rotation;
+    // Cells per work unit of the collision phase: enough work per unit to amortise claiming it and
+    // seeding its stream (a few hundred grains), small enough to balance two threads on small boxes.
+    static constexpr std::size_t cells_per_unit = 64;
+
+    // `policies[k]` is the restitution policy of species pair k (pair_index order, run_spec.hpp).
+    // The initial state: positions uniform in the box (stream initial_position, one per species),
+    // velocities and spins Maxwellian (dsmc/init.hpp), the total momentum removed.
+    SpatialEngine(const DomainSpec& domain, std::vector<SpeciesBlock> blocks, std::vector<Policy> policies,
+                  double density, std::uint64_t seed, std::uint64_t replica, int threads)
+        : domain_(domain), blocks_(std::move(blocks)), types_(make_pair_types(blocks_)),
+          policies_(std::move(policies)), density_(density), seed_(seed), replica_(replica),
+          team_(std::make_unique<WorkerTeam>(std::max(1, threads))) {
+        if (policies_.size() != types_.size())
+            throw std::invalid_argument("SpatialEngine: one policy per species pair needed");
+        for (int a = 0; a < 3; ++a)
+            if (!(domain_.size[a] > 0) || domain_.cells[a] < 1)
+                throw std::invalid_argument("SpatialEngine: box sizes must be > 0 and cells >= 1");
+        cells_ = static_cast<std::size_t>(domain_.cells[0]) * domain_.cells[1] * domain_.cells[2];
+        for (const SpeciesBlock& b : blocks_)
+            particles_ += b.count;
+        if (particles_ < 2)
+            throw std::invalid_argument("SpatialEngine: at least two particles needed");
+        for (const PairType& t : types_)
+            cs_max_ = std::max(cs_max_, t.pc.cross_section);
+        x_.resize(particles_);
+        v_.resize(particles_);
+        w_.resize(particles_);
+        for (std::size_t s = 0; s < blocks_.size(); ++s) {
+            Rng r = make_stream(StreamKey{seed, Stream::initial_position, replica, 0, s});
+            for (std::size_t i = blocks_[s].offset; i < blocks_[s].offset + blocks_[s].count; ++i)
+                x_[i] = {domain_.size[0] * uniform01(r), domain_.size[1] * uniform01(r),
+                         domain_.size[2] * uniform01(r)};
+        }
+        init_maxwellian(*this, blocks_, seed, replica);
+        sort_into_cells();
+    }
+
+    // The store interface of dsmc/init.hpp.
+    Vec3& v(std::size_t i) { return v_[i]; }
+    Vec3& w(std::size_t i) { return w_[i]; }
+
+    // One step of length dt: flight, sort, collisions. `obs(record, pair_type)` sees every collision
+    // (ForkableObserver of dsmc/engine.hpp: a copy per work unit, merged in unit order).
+    template <class Observer> void step(double dt, Observer& obs) {
+        stream(dt);
+        sort_into_cells();
+        const std::size_t units = (cells_ + cells_per_unit - 1) / cells_per_unit;
+        std::vector<Observer> local(units, obs.fork());
+        std::vector<std::int64_t> counts(units, 0);
+        team_->for_each(units, [&](std::size_t u) {
+            CollisionRng rng = make_collision_stream(StreamKey{seed_, Stream::cell_collisions, replica_, steps_, u});
+            const std::size_t end = std::min(cells_, (u + 1) * cells_per_unit);
+            for (std::size_t c = u * cells_per_unit; c < end; ++c)
+                counts[u] += collide_cell(c, dt, rng, local[u]);
+        });
+        for (std::size_t u = 0; u < units; ++u) {
+            obs.merge(local[u]);
+            collisions_ += counts[u];
+        }
+        t_ += dt;
+        ++steps_;
+    }
+
+    // The Maxwellian collision frequency per grain of the current state, n pi sigma^2 <g> per pair
+    // type at the species' temperatures (m <v^2>/3 about the total mean velocity, which is zero in a
+    // periodic box up to round-off): the unit of the step length (domain.time_step).
+    double collision_frequency() const {
+        std::vector<double> T_over_m(blocks_.size());
+        for (std::size_t s = 0; s < blocks_.size(); ++s) {
+            double sum = 0;
+            for (std::size_t i = blocks_[s].offset; i < blocks_[s].offset + blocks_[s].count; ++i)
+                sum += norm2(v_[i]);
+            T_over_m[s] = blocks_[s].count > 0 ? sum / (3.0 * static_cast<double>(blocks_[s].count)) : 0.0;
+        }
+        return maxwellian_collision_frequency(types_, T_over_m, volume(), static_cast<double>(particles_));
+    }
+
+    // The simulated volume N/n (the homogeneous engine's): energies per unit volume use it.
+    double volume() const { return static_cast<double>(particles_) / density_; }
+    double time() const { return t_; }
+    std::int64_t collisions() const { return collisions_; }
+    std::int64_t steps() const { return steps_; }
+    std::size_t particles() const { return particles_; }
+    std::size_t cells() const { return cells_; }
+    const std::vector<SpeciesBlock>& species() const { return blocks_; }
+    const std::vector<PairType>& pair_types() const { return types_; }
+    const std::vector<Vec3>& positions() const { return x_; }
+    const std::vector<Vec3>& velocities() const { return v_; }
+    const std::vector<Vec3>& angular_velocities() const { return w_; }
+    WorkerTeam& team() { return *team_; }
+    // Grains of species s in cell c: the store's range [first, last) (valid until the next step).
+    std::pair<std::size_t, std::size_t> cell_range(std::size_t s, std::size_t c) const {
+        const std::size_t k = s * (cells_ + 1) + c;
+        return {cell_start_[k], cell_start_[k + 1]};
+    }
+    // The cell of a position (the last cell for a coordinate that rounds onto the upper face).
+    std::size_t cell_of(const Vec3& x) const {
+        const auto index = [&](double q, int a) {
+            const int k = static_cast<int>(q * domain_.cells[a] / domain_.size[a]);
+            return static_cast<std::size_t>(std::clamp(k, 0, domain_.cells[a] - 1));
+        };
+        return (index(x.z, 2) * domain_.cells[1] + index(x.y, 1)) * domain_.cells[0] + index(x.x, 0);
+    }
+
+    // The complete state (positions, velocities, spins, time, step and collision counts): a run
+    // continued from it draws the same numbers as one without the stop (the streams are keyed by
+    // the step).
+    void save(ByteWriter& out) const {
+        for (const std::vector<Vec3>* a : {&x_, &v_, &w_}) {
+            out.u64(a->size());
+            for (const Vec3& q : *a)
+                for (double c : {q.x, q.y, q.z})
+                    out.f64(c);
+        }
+        out.f64(t_);
+        out.put(steps_);
+        out.put(collisions_);
+    }
+    void restore(ByteReader& in) {
+        for (std::vector<Vec3>* a : {&x_, &v_, &w_}) {
+            if (in.count(3 * sizeof(double)) != particles_)
+                throw std::runtime_error("the state has another number of particles");
+            for (Vec3& q : *a) {
+                q.x = in.f64();
+                q.y = in.f64();
+                q.z = in.f64();
+            }
+        }
+        t_ = in.f64();
+        steps_ = in.get<std::int64_t>();
+        collisions_ = in.get<std::int64_t>();
+        sort_into_cells();
+    }
+
+  private:
+    // Free flight, wrapped into the box. x - L floor(x/L) can round to L for an x just below 0:
+    // that point is the periodic image of 0 to within the rounding.
+    void stream(double dt) {
+        const std::size_t chunk = 65536, units = (particles_ + chunk - 1) / chunk;
+        team_->for_each(units, [&](std::size_t u) {
+            const std::size_t end = std::min(particles_, (u + 1) * chunk);
+            for (std::size_t i = u * chunk; i < end; ++i) {
+                double* q[3] = {&x_[i].x, &x_[i].y, &x_[i].z};
+                const double dq[3] = {v_[i].x * dt, v_[i].y * dt, v_[i].z * dt};
+                for (int a = 0; a < 3; ++a) {
+                    const double L = domain_.size[a];
+                    double y = *q[a] + dq[a];
+                    if (y < 0 || y >= L) {
+                        y -= L * std::floor(y / L);
+                        if (y >= L || y < 0)
+                            y = 0;
+                    }
+                    *q[a] = y;
+                }
+            }
+        });
+    }
+
+    // A stable counting sort of each species' grains by cell (the grains themselves move, so a
+    // cell's grains are adjacent in memory while they collide).
+    void sort_into_cells() {
+        const std::size_t S = blocks_.size();
+        key_.resize(particles_);
+        cell_start_.assign(S * (cells_ + 1), 0);
+        for (std::size_t s = 0; s < S; ++s) {
+            std::uint32_t* start = cell_start_.data() + s * (cells_ + 1);
+            const SpeciesBlock& b = blocks_[s];
+            std::vector<std::uint32_t> count(cells_ + 1, 0);
+            for (std::size_t i = b.offset; i < b.offset + b.count; ++i) {
+                key_[i] = static_cast<std::uint32_t>(cell_of(x_[i]));
+                ++count[key_[i] + 1];
+            }
+            start[0] = static_cast<std::uint32_t>(b.offset);
+            for (std::size_t c = 0; c < cells_; ++c)
+                start[c + 1] = start[c] + count[c + 1];
+            std::vector<std::uint32_t> next(start, start + cells_);
+            x2_.resize(particles_);
+            v2_.resize(particles_);
+            w2_.resize(particles_);
+            for (std::size_t i = b.offset; i < b.offset + b.count; ++i) {
+                const std::uint32_t p = next[key_[i]]++;
+                x2_[p] = x_[i];
+                v2_[p] = v_[i];
+                w2_[p] = w_[i];
+            }
+            std::copy(x2_.begin() + b.offset, x2_.begin() + b.offset + b.count, x_.begin() + b.offset);
+            std::copy(v2_.begin() + b.offset, v2_.begin() + b.offset + b.count, v_.begin() + b.offset);
+            std::copy(w2_.begin() + b.offset, w2_.begin() + b.offset + b.count, w_.begin() + b.offset);
+        }
+    }
+
+    // The store index of the k-th grain of cell c (species after species).
+    std::size_t grain(std::size_t c, std::size_t k, std::size_t& species) const {
+        for (std::size_t s = 0;; ++s) {
+            const auto [first, last] = cell_range(s, c);
+            if (k < last - first) {
+                species = s;
+                return first + k;
+            }
+            k -= last - first;
+        }
+    }
+
+    // Collisions of cell c for a time dt (the header's kernel); returns how many.
+    template <class Observer> std::int64_t collide_cell(std::size_t c, double dt, CollisionRng& rng, Observer& obs) {
+        const std::size_t S = blocks_.size();
+        std::size_t n = 0;
+        Vec3 u{};
+        for (std::size_t s = 0; s < S; ++s) {
+            const auto [first, last] = cell_range(s, c);
+            n += last - first;
+            for (std::size_t i = first; i < last; ++i)
+                u += v_[i];
+        }
+        if (n < 2)
+            return 0;
+        u = (1.0 / static_cast<double>(n)) * u;
+        double b = 0;
+        for (std::size_t s = 0; s < S; ++s) {
+            const auto [first, last] = cell_range(s, c);
+            for (std::size_t i = first; i < last; ++i)
+                b = std::max(b, norm2(v_[i] - u));
+        }
+        b = std::sqrt(b);
+        // Lambda per unit g_max: pairs x pi sigma_max^2 / V_c with V_c = N / (n C) (simulated units).
+        const double rate_per_g =
+            0.5 * static_cast<double>(n) * static_cast<double>(n - 1) * cs_max_ * density_ *
+            static_cast<double>(cells_) / static_cast<double>(particles_);
+        std::int64_t done = 0;
+        double t = 0;
+        for (;;) {
+            const double g_max = 2.0 * b;
+            if (!(g_max > 0))
+                return done; // every grain at the cell's mean velocity: no pair approaches
+            t += -std::log(uniform01_open0(rng)) / (rate_per_g * g_max);
+            if (t >= dt)
+                return done;
+            const std::size_t k1 = static_cast<std::size_t>(uniform_index(rng, n));
+            std::size_t k2 = static_cast<std::size_t>(uniform_index(rng, n - 1));
+            k2 += k2 >= k1;
+            std::size_t sa = 0, sb = 0;
+            std::size_t i = grain(c, k1, sa), j = grain(c, k2, sb);
+            if (sa > sb) {
+                std::swap(i, j);
+                std::swap(sa, sb);
+            }
+            const std::size_t type = S == 1 ? 0 : pair_index(sa, sb, S);
+            const PairConstants& pc = types_[type].pc;
+            const Vec3 g_c = v_[i] - v_[j];
+            const double g = std::sqrt(norm2(g_c));
+            if (!(uniform01(rng) * cs_max_ * g_max < pc.cross_section * g))
+                continue;
+            if constexpr (rough) {
+                const Vec3 normal = sample_impact_normal(rng, g_c, g);
+                obs(collide(pc, policies_[type], v_[i], w_[i], v_[j], w_[j], normal), type);
+            } else {
+                const Vec3 g_N = sample_impact_normal_part(rng, g_c, g);
+                obs(collide_normal_part(pc, policies_[type], v_[i], v_[j], g_N), type);
+            }
+            ++done;
+            b = std::max({b, std::sqrt(norm2(v_[i] - u)), std::sqrt(norm2(v_[j] - u))});
+        }
+    }
+
+    DomainSpec domain_;
+    std::vector<SpeciesBlock> blocks_;
+    std::vector<PairType> types_;
+    std::vector<Policy> policies_;
+    double density_ = 1;
+    std::uint64_t seed_ = 0, replica_ = 0;
+    std::unique_ptr<WorkerTeam> team_;
+    std::size_t particles_ = 0, cells_ = 1;
+    double cs_max_ = 0;
+    std::vector<Vec3> x_, v_, w_, x2_, v2_, w2_;
+    std::vector<std::uint32_t> key_, cell_start_;
+    double t_ = 0;
+    std::int64_t steps_ = 0, collisions_ = 0;
+};
+
+} // namespace roughgas

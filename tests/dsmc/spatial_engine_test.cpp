@@ -1,0 +1,200 @@
+// The spatially resolved engine (dsmc/spatial_engine.hpp) in a periodic box: what must hold exactly
+// (conservation, grains in the box, independence of the thread count) and the collision rate of
+// an elastic gas for any cell size; a small box cools as the homogeneous gas (Haff's law).
+#include "roughgas/dsmc/spatial_engine.hpp"
+
+#include "roughgas/collision/restitution_policy.hpp"
+#include "roughgas/dsmc/tables.hpp"
+#include "roughgas/observables/theory.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace roughgas {
+namespace {
+
+struct CountCollisions {
+    std::int64_t n = 0;
+    double dE = 0;
+    void operator()(const CollisionRecord& r, std::size_t) {
+        ++n;
+        dE += r.dE_tr + r.dE_rot;
+    }
+    CountCollisions fork() const { return {}; }
+    void merge(const CountCollisions& o) {
+        n += o.n;
+        dE += o.dE;
+    }
+};
+
+std::vector<SpeciesBlock> one_species(std::int64_t n, double mass = 1, double radius = 0.5) {
+    SpeciesSpec s;
+    s.mass = mass;
+    s.radius = radius;
+    return make_species_blocks({s}, n);
+}
+
+// Two species of different mass and size (30 % heavy ones), both rough.
+std::vector<SpeciesBlock> two_species(std::int64_t n) {
+    SpeciesSpec a, b;
+    a.name = "light";
+    a.fraction = 0.7;
+    b.name = "heavy";
+    b.mass = 3;
+    b.radius = 0.8;
+    b.fraction = 0.3;
+    b.temperature = 2;
+    return make_species_blocks({a, b}, n);
+}
+
+// Mean free path of equal spheres, 1/(sqrt(2) pi n sigma^2).
+double mean_free_path(double density, double sigma) {
+    return 1.0 / (std::sqrt(2.0) * std::numbers::pi * density * sigma * sigma);
+}
+
+DomainSpec cube(double side, int cells) {
+    DomainSpec d;
+    d.size = {side, side, side};
+    d.cells = {cells, cells, cells};
+    return d;
+}
+
+template <class P> Vec3 momentum(const SpatialEngine<P>& e) {
+    Vec3 p{};
+    for (const SpeciesBlock& b : e.species())
+        for (std::size_t i = b.offset; i < b.offset + b.count; ++i)
+            p += b.grain.mass * e.velocities()[i];
+    return p;
+}
+
+template <class P> double energy(const SpatialEngine<P>& e) {
+    double E = 0;
+    for (const SpeciesBlock& b : e.species())
+        for (std::size_t i = b.offset; i < b.offset + b.count; ++i)
+            E += 0.5 * b.grain.mass * norm2(e.velocities()[i]) +
+                 0.5 * b.moment_of_inertia() * norm2(e.angular_velocities()[i]);
+    return E;
+}
+
+// The translational part alone (smooth grains keep their initial spins, which carry energy too).
+template <class P> double translational_energy(const SpatialEngine<P>& e) {
+    double E = 0;
+    for (const SpeciesBlock& b : e.species())
+        for (std::size_t i = b.offset; i < b.offset + b.count; ++i)
+            E += 0.5 * b.grain.mass * norm2(e.velocities()[i]);
+    return E;
+}
+
+template <class P> void expect_inside(const SpatialEngine<P>& e, const DomainSpec& d) {
+    for (const Vec3& x : e.positions()) {
+        ASSERT_TRUE(x.x >= 0 && x.x < d.size[0] && x.y >= 0 && x.y < d.size[1] && x.z >= 0 && x.z < d.size[2])
+            << x.x << " " << x.y << " " << x.z;
+    }
+}
+
+// Elastic rough grains (alpha = 1, beta = 1 conserve the energy with the spins), a mixture: the
+// momentum stays zero and the energy constant to round-off over 40 steps of many collisions per
+// cell; no grain leaves the box; every grain sits in the cell its position says.
+TEST(SpatialEngine, ConservesMomentumAndEnergyAndKeepsGrainsInTheBox) {
+    const DomainSpec d = cube(20.0, 6);
+    std::vector<SpeciesBlock> blocks = two_species(5000);
+    const std::vector<PairType> types = make_pair_types(blocks);
+    std::vector<AnyRoughPolicy> policies;
+    for (const PairType& t : types)
+        policies.push_back(to_any_rough(AnyPolicy(make_rough_constant(1.0, 1.0))));
+    SpatialEngine<AnyRoughPolicy> e(d, blocks, policies, 0.05, 7, 0, 2);
+    const Vec3 p0 = momentum(e);
+    const double E0 = energy(e);
+    EXPECT_LT(std::sqrt(norm2(p0)), 1e-10 * std::sqrt(2 * E0));
+    CountCollisions count;
+    for (int k = 0; k < 40; ++k) {
+        e.step(0.5 / e.collision_frequency(), count);
+        expect_inside(e, d);
+    }
+    EXPECT_GT(count.n, 40000); // about 4 collisions per grain
+    const Vec3 p = momentum(e);
+    EXPECT_LT(std::sqrt(norm2(p - p0)), 1e-12 * std::sqrt(2 * E0 * 5000));
+    EXPECT_NEAR(energy(e) / E0, 1.0, 1e-12);
+    for (std::size_t s = 0; s < 2; ++s)
+        for (std::size_t c = 0; c < e.cells(); ++c) {
+            const auto [first, last] = e.cell_range(s, c);
+            for (std::size_t i = first; i < last; ++i)
+                ASSERT_EQ(e.cell_of(e.positions()[i]), c);
+        }
+}
+
+// Elastic hard spheres: a grain's collision rate is 4 n sigma^2 sqrt(pi T/m) exactly, whatever the
+// cell size (here 0.4 and 2.5 mean free paths; 3 and 0.2 grains per cell on average), since a
+// pair's rate in its cell is pi sigma^2 |g| F / V_c and a uniform gas fills the cells as a Poisson
+// process. Measured over 8 collisions per grain of 20000 grains (~80000 collisions): relative
+// standard error 1/sqrt(80000) = 0.35 %; the tolerance is 5 of them.
+TEST(SpatialEngine, ElasticCollisionRateIsExactForAnyCellSize) {
+    const double n = 0.01, sigma = 1.0, T = 1.0, m = 1.0;
+    const double lambda = mean_free_path(n, sigma);
+    const double nu = 4 * n * sigma * sigma * std::sqrt(std::numbers::pi * T / m);
+    for (const double cell : {0.4, 2.5}) {
+        const int cells = 5;
+        const DomainSpec d = cube(cells * cell * lambda, cells);
+        std::vector<SpeciesBlock> blocks = one_species(20000, m, sigma / 2);
+        SpatialEngine<SmoothConstant> e(d, blocks, {make_smooth_constant(1.0)}, n, 3, 0, 1);
+        CountCollisions count;
+        const double dt = 0.25 / nu;
+        for (int k = 0; k < 32; ++k)
+            e.step(dt, count);
+        const double rate = 2.0 * static_cast<double>(count.n) / (20000.0 * e.time());
+        // T drifts from 1 only by the sample's own temperature (the initial state's 20000 grains).
+        const double T_sample = 2 * translational_energy(e) / (3 * 20000.0);
+        const double expected = nu * std::sqrt(T_sample / T);
+        EXPECT_NEAR(rate / expected, 1.0, 5.0 / std::sqrt(static_cast<double>(count.n))) << cell << " mean free paths";
+    }
+}
+
+// The results do not depend on the thread count: the same state bit for bit after 10 steps.
+TEST(SpatialEngine, ThreadCountDoesNotChangeTheResults) {
+    const DomainSpec d = cube(30.0, 12);
+    std::vector<SpeciesBlock> blocks = one_species(20000);
+    std::vector<std::vector<Vec3>> v;
+    for (int threads : {1, 2}) {
+        SpatialEngine<RoughConstant> e(d, blocks, {make_rough_constant(0.8, 0.3)}, 0.1, 5, 2, threads);
+        CountCollisions count;
+        for (int k = 0; k < 10; ++k)
+            e.step(0.3 / e.collision_frequency(), count);
+        v.push_back(e.velocities());
+    }
+    ASSERT_EQ(v[0].size(), v[1].size());
+    for (std::size_t i = 0; i < v[0].size(); ++i)
+        ASSERT_TRUE(v[0][i].x == v[1][i].x && v[0][i].y == v[1][i].y && v[0][i].z == v[1][i].z) << i;
+}
+
+// A box far below the instability length (1.2 mean free paths, alpha = 0.9) stays homogeneous and
+// cools by Haff's law, T(t) = T0 / (1 + t/t0)^2 with t0 from the Maxwellian collision frequency
+// (observables/theory.hpp). Tolerance: 4 standard errors of the mean of 4 replicas of 10000 grains
+// (each T to sqrt(2/(3N)) = 0.82 %, so 0.41 % for the mean) plus 0.5 % for the Maxwellian
+// approximation (the cooling rate's Sonine correction 3 a2/16 with |a2| = 0.015 at alpha = 0.9,
+// accumulated over the run's factor 3 in T) and the step's discreteness (steps of 0.1 mean free
+// times, rates evaluated at each step's start).
+TEST(SpatialEngine, SmallBoxCoolsByHaffsLaw) {
+    const double n = 0.05, alpha = 0.9, sigma = 1.0;
+    const int N = 10000;
+    const DomainSpec d = cube(1.2 * mean_free_path(n, sigma), 4);
+    double ratio = 0, cooled = 0;
+    for (std::uint64_t r = 0; r < 4; ++r) {
+        SpatialEngine<SmoothConstant> e(d, one_species(N, 1.0, sigma / 2), {make_smooth_constant(alpha)}, n, 11,
+                                        r, 1);
+        const double E0 = translational_energy(e), T0 = 2 * E0 / (3.0 * N); // the sample's own start
+        CountCollisions count;
+        while (e.collisions() < N * 25) // 50 collisions per grain
+            e.step(0.1 / e.collision_frequency(), count);
+        const double T = 2 * translational_energy(e) / (3.0 * N);
+        ratio += T / haff_temperature(e.time(), T0, alpha, 1.0, sigma, n) / 4;
+        cooled += T / T0 / 4;
+        EXPECT_NEAR(count.dE, translational_energy(e) - E0, 1e-9 * E0); // the records account for every loss
+    }
+    EXPECT_LT(cooled, 0.35);
+    EXPECT_NEAR(ratio, 1.0, 4 * 0.0041 + 0.005) << "T/T0 = " << cooled;
+}
+
+} // namespace
+} // namespace roughgas
