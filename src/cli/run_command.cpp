@@ -34,6 +34,7 @@
 #include "stop_signals.hpp"
 
 #include "roughgas/dsmc/run.hpp"
+#include "roughgas/dsmc/species.hpp"
 #include "roughgas/io/case_file.hpp"
 #include "roughgas/io/checkpoint_file.hpp"
 #include "roughgas/io/csv_writer.hpp"
@@ -55,6 +56,7 @@
 #include <iostream>
 #include <memory>
 #include <mutex>
+#include <numbers>
 #include <optional>
 #include <unistd.h>
 
@@ -274,6 +276,32 @@ int run_run(const RunOptions& o, const Communicator& comm) {
             "uniform shear flow u = a y x, a = {:.17g}: V = v - u; Strang steps of {:.17g} mean free times; "
             "rows at the end of the first step at or after each output's coll_per_particle",
             spec.shear->rate, spec.shear->time_step));
+    if (spec.domain) { // the box and its cells in mean free paths, on stderr too
+        double R = 0;
+        for (const SpeciesSpec& s : spec.species)
+            R = std::max(R, s.radius);
+        const double lambda = mean_free_path(spec.density, 2 * R);
+        const DomainSpec& d = *spec.domain;
+        double edge = 0;
+        for (int a = 0; a < 3; ++a)
+            edge = std::max(edge, d.size[a] / d.cells[a]);
+        prov.notes.push_back(fmt::format(
+            "periodic box {:.6g} x {:.6g} x {:.6g} = {:.4g} x {:.4g} x {:.4g} mean free paths (lambda = {:.6g}, the "
+            "largest diameter's), {} x {} x {} collision cells (edge up to {:.3g} lambda), {:.4g} grains per cell; "
+            "steps of {:.4g} mean free times; the columns are averages over the box",
+            d.size[0], d.size[1], d.size[2], d.size[0] / lambda, d.size[1] / lambda, d.size[2] / lambda, lambda,
+            d.cells[0], d.cells[1], d.cells[2], edge / lambda,
+            static_cast<double>(spec.particles) / (static_cast<double>(d.cells[0]) * d.cells[1] * d.cells[2]),
+            d.time_step));
+        if (edge > 0.5 * lambda)
+            prov.notes.push_back(fmt::format("warning: cells of up to {:.3g} mean free paths (more than 0.5): in "
+                                             "gradients the viscosity comes out too large by about "
+                                             "16/(45 pi) (edge/lambda)^2 = {:.2g} (Alexander, Garcia & Alder 1998)",
+                                             edge / lambda, 16.0 / (45.0 * std::numbers::pi) * (edge / lambda) * (edge / lambda)));
+        if (!quiet)
+            for (std::size_t k = prov.notes.size() - (edge > 0.5 * lambda ? 2 : 1); k < prov.notes.size(); ++k)
+                std::cerr << "roughgas run: " << prov.notes[k] << '\n';
+    }
     if (table.has_theory())
         prov.notes.push_back("*_theory: Maxwellian approximation for constant alpha, beta at the row's t "
                              "(observables/theory.hpp; Haff's law for smooth spheres)");

@@ -49,6 +49,10 @@ ReplicaEnd drive_kernel(const RunSpec& spec, const std::vector<SpeciesBlock>& bl
 //                                  ViscoelasticDirect: one species
 //   drive_brilliantov.cpp          Brilliantov, BrilliantovDirect: one species
 //   drive_mixture_variant.cpp      AnySmoothPolicy, AnyRoughPolicy: mixtures
+// A spatially resolved replica (spec.domain; drive_spatial.cpp), with the per-pair variant policies.
+ReplicaEnd drive_spatial(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks,
+                         const std::vector<AnyPolicy>& policies, int replica, const ReplicaIo& io);
+
 #define ROUGHGAS_DRIVE_KERNEL(P, M)                                                                          \
     template ReplicaEnd drive_kernel<P, M>(const RunSpec&, const std::vector<SpeciesBlock>&, std::vector<P>, \
                                            int, const ReplicaIo&)

@@ -4,6 +4,7 @@
 // that the engine instantiations (the longest part of the build) compile in parallel, one
 // translation unit per family, instead of all in run.cpp.
 #include "drive.hpp"
+#include "gas_row.hpp"
 
 #include "roughgas/core/bytes.hpp"
 #include "roughgas/dsmc/engine.hpp"
@@ -40,30 +41,6 @@ inline double collision_frequency(const std::vector<PairType>& types, const std:
     return maxwellian_collision_frequency(types, T_over_m, volume, N);
 }
 
-// Sums over the collisions since the last output row.
-struct Tally {
-    double dE = 0;                      // energy change of the gas (<= 0)
-    std::vector<std::int64_t> per_type; // collisions per pair type
-    std::int64_t clamped = 0;           // all collisions so far with beta clamped
-    void operator()(const CollisionRecord& r, std::size_t k) {
-        dE += r.dE_tr + r.dE_rot;
-        ++per_type[k];
-        clamped += r.beta_clamped;
-    }
-    // One per group of the engine (ForkableObserver, dsmc/engine.hpp), merged in group order.
-    Tally fork() const {
-        Tally t;
-        t.per_type.assign(per_type.size(), 0);
-        return t;
-    }
-    void merge(const Tally& o) {
-        dE += o.dE;
-        for (std::size_t k = 0; k < per_type.size(); ++k)
-            per_type[k] += o.per_type[k];
-        clamped += o.clamped;
-    }
-};
-
 // Between two Strang steps of a shear interval (dsmc/shear.hpp strang_steps): the stream the step
 // just done still owes, its length, and what the next step's length is predicted from.
 struct StrangState {
@@ -91,11 +68,7 @@ struct DriveState {
             w.f64(x);
         w.f64(t_prev);
         w.put(c_prev);
-        w.f64(tally.dE);
-        w.u64(tally.per_type.size());
-        for (std::int64_t x : tally.per_type)
-            w.put(x);
-        w.put(tally.clamped);
+        tally.save(w);
     }
     void load(ByteReader& r) {
         kernel = r.str();
@@ -108,11 +81,7 @@ struct DriveState {
         strang = between ? std::optional(s) : std::nullopt;
         t_prev = r.f64();
         c_prev = r.get<std::int64_t>();
-        tally.dE = r.f64();
-        tally.per_type.resize(r.count(sizeof(std::int64_t)));
-        for (std::int64_t& x : tally.per_type)
-            x = r.get<std::int64_t>();
-        tally.clamped = r.get<std::int64_t>();
+        tally.load(r);
     }
 };
 
@@ -204,15 +173,7 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
         const bool first = c == 0 && t == 0;
         const double inv_dt = !first && dt > 0 ? 1.0 / dt : nan;
         row.clear();
-        row.push_back(t);
-        row.push_back(2.0 * static_cast<double>(c) / static_cast<double>(N));
-        const auto group = [&](const GroupMoments& g) {
-            for (double x : {g.T_tr, g.T_rot, g.theta, g.a20, g.a02, g.a11, g.A_cw})
-                row.push_back(x);
-        };
-        group(m.all);
-        row.push_back(2.0 * static_cast<double>(c - c_prev) / static_cast<double>(N) * inv_dt);
-        row.push_back(-tally.dE / engine.volume() * inv_dt);
+        append_row_head(row, t, c, c_prev, static_cast<double>(N), m, inv_dt, tally, engine.volume());
         if (spec.shear) {
             const PressureTensor P =
                 pressure_tensor(engine.store().velocities(), slices, engine.volume(), m.mean_velocity);
@@ -224,32 +185,13 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
                              r.P_star.yz, r.N1_star, r.N2_star})
                 row.push_back(x);
         }
-        if (S > 1) {
-            std::vector<double> per_species(S, 0.0);
-            for (std::size_t k = 0; k < types.size(); ++k) {
-                per_species[types[k].a] += static_cast<double>(tally.per_type[k]);
-                per_species[types[k].b] += static_cast<double>(tally.per_type[k]);
-            }
-            for (std::size_t s = 0; s < S; ++s) {
-                group(m.species[s]);
-                row.push_back(per_species[s] / static_cast<double>(blocks[s].count) * inv_dt);
-            }
-            for (std::size_t a = 0; a < S; ++a) {
-                for (std::size_t b = a + 1; b < S; ++b) {
-                    row.push_back(m.species[a].T_tr / m.species[b].T_tr);
-                    row.push_back(m.species[a].T_rot / m.species[b].T_rot);
-                }
-            }
-        }
-        if (clamp_column)
-            row.push_back(static_cast<double>(tally.clamped));
+        append_row_tail(row, m, tally, types, blocks, inv_dt, clamp_column);
         if (row.size() != columns)
             throw std::logic_error("run_replica: row and columns differ");
         sink(row);
         t_prev = t;
         c_prev = c;
-        tally.dE = 0;
-        std::fill(tally.per_type.begin(), tally.per_type.end(), 0);
+        tally.next_interval();
     };
 
     const HistogramGrid grid{spec.histogram_bins, spec.histogram_max};

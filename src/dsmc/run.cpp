@@ -62,6 +62,15 @@ void validate(const RunSpec& spec) {
         require(std::all_of(spec.pairs.begin(), spec.pairs.end(),
                             [](const PairRestitution& p) { return std::holds_alternative<ConstantRestitution>(p); }),
                 "the Maxwell kernel needs constant restitution for every pair");
+    if (spec.domain) {
+        for (int a = 0; a < 3; ++a)
+            require(spec.domain->size[a] > 0 && std::isfinite(spec.domain->size[a]) && spec.domain->cells[a] >= 1,
+                    "domain sizes must be > 0 and cells >= 1");
+        require(spec.domain->time_step > 0 && std::isfinite(spec.domain->time_step), "domain time step must be > 0");
+        require(!spec.shear, "a spatially resolved run has no uniform shear flow (Lees-Edwards boundaries)");
+        require(spec.kernel == CollisionKernel::hard_sphere, "a spatially resolved run collides hard spheres");
+        require(spec.histogram_times.empty(), "a spatially resolved run writes no histograms");
+    }
     if (spec.shear) {
         require(std::isfinite(spec.shear->rate) && spec.shear->rate > 0, "shear rate must be > 0");
         require(std::isfinite(spec.shear->time_step) && spec.shear->time_step > 0,
@@ -132,6 +141,8 @@ ReplicaEnd run_replica(const RunSpec& spec, const RestitutionTables& tables, int
         for (AnyPolicy& p : policies)
             p = as_rough(p);
 
+    if (spec.domain) // positions, streaming and collision cells
+        return detail::drive_spatial(spec, blocks, policies, replica, io);
     if (blocks.size() == 1) { // one species, one model: a fully specialised loop
         return std::visit(
             [&](const auto& p) {

@@ -5,6 +5,8 @@
 #include "roughgas/io/case_schema.hpp"
 
 #include <numbers>
+
+#include "roughgas/dsmc/species.hpp"
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
@@ -100,6 +102,12 @@ std::string type_phrase(KeyType t) {
         return "a string";
     case KeyType::string_pair:
         return "an array of two strings";
+    case KeyType::real3:
+        return "an array of three real numbers";
+    case KeyType::integer3:
+        return "an array of three integers";
+    case KeyType::string3:
+        return "an array of three strings";
     }
     return "?";
 }
@@ -220,6 +228,28 @@ class Reader {
     std::string string(std::string_view k) const {
         const toml::node* n = node(k);
         return n ? n->as_string()->get() : std::get<std::string>(spec(k).default_value);
+    }
+    std::array<double, 3> real3(std::string_view k) const {
+        std::array<double, 3> x{};
+        if (const toml::array* a = node(k) ? node(k)->as_array() : nullptr)
+            for (std::size_t i = 0; i < 3; ++i)
+                x[i] = *as_real(*a->get(i));
+        return x;
+    }
+    std::array<std::int64_t, 3> integer3(std::string_view k) const {
+        std::array<std::int64_t, 3> x{};
+        if (const toml::array* a = node(k) ? node(k)->as_array() : nullptr)
+            for (std::size_t i = 0; i < 3; ++i)
+                x[i] = *as_integer(*a->get(i));
+        return x;
+    }
+    std::array<std::string, 3> string3(std::string_view k) const {
+        const toml::array* a = node(k) ? node(k)->as_array() : nullptr;
+        if (a == nullptr) {
+            const std::string d = std::get<std::string>(spec(k).default_value);
+            return {d, d, d};
+        }
+        return {a->get(0)->as_string()->get(), a->get(1)->as_string()->get(), a->get(2)->as_string()->get()};
     }
     template <class E, std::size_t N>
     E choice(std::string_view k, const std::array<std::string_view, N>& names) const {
@@ -476,6 +506,23 @@ class SchemaCheck {
             if (!is_string_pair(n))
                 d_.add(key, fmt::format("{}: must be {}", shown, expectation(s)), &n);
             return;
+        case KeyType::real3:
+        case KeyType::integer3:
+        case KeyType::string3: {
+            // Three elements, each checked as a key of the element type (bounds, choices).
+            const toml::array* a = n.as_array();
+            if (a == nullptr || a->size() != 3) {
+                d_.add(key, fmt::format("{}: must be {}", shown, type_phrase(s.type)), &n);
+                return;
+            }
+            KeySpec element = s;
+            element.type = s.type == KeyType::real3      ? KeyType::real
+                           : s.type == KeyType::integer3 ? KeyType::integer
+                                                         : KeyType::string;
+            for (std::size_t i = 0; i < 3; ++i)
+                value(element, *a->get(i), fmt::format("{}[{}]", key, i));
+            return;
+        }
         case KeyType::string: {
             const auto* str = n.as_string();
             if (str == nullptr) {
@@ -524,6 +571,25 @@ class Builder {
         if (const toml::table* s = root_["shear"].as_table(); s != nullptr && s->contains("rate")) {
             const Reader r(s, "shear");
             c.shear = ShearConfig{r.real("rate"), r.real("time_step")};
+        }
+        if (const toml::table* t = root_["domain"].as_table()) {
+            for (const char* k : {"size", "cells"})
+                if (!t->contains(k))
+                    add(std::string("domain.") + k,
+                        fmt::format("[domain] without domain.{}: give {}", k,
+                                    std::string_view(k) == "size" ? "the box lengths [L_x, L_y, L_z]"
+                                                                  : "the cells per axis [n_x, n_y, n_z]"));
+            const Reader r(t, "domain");
+            DomainConfig d;
+            d.size = r.real3("size");
+            d.cells = r.integer3("cells");
+            const std::array<std::string, 3> b = r.string3("boundary");
+            for (std::size_t i = 0; i < 3; ++i)
+                d.boundary[i] = static_cast<Boundary>(
+                    std::find(boundary_names.begin(), boundary_names.end(), b[i]) - boundary_names.begin());
+            d.time_step = r.real("time_step");
+            d.allow_coarse = r.boolean("allow_coarse");
+            c.domain = d;
         }
         c.restitution = grid(Reader(root_["restitution"].as_table(), "restitution"));
         check(c);
@@ -699,6 +765,8 @@ class Builder {
         if (c.run.kind == RunKind::shear) {
             require(c.shear.has_value(), "shear.rate", "run.kind = \"shear\"", "shear");
         }
+        if (c.domain)
+            check_domain(c);
         if (c.run.kernel == CollisionKernel::maxwell)
             check_maxwell_kernel(c);
         if (c.run.histogram_every > c.run.end) {
@@ -707,6 +775,44 @@ class Builder {
                             c.run.histogram_every, c.run.end));
         }
         check_grid(c.restitution);
+    }
+
+    // The shortest mean free path of the gas, 1/(sqrt(2) pi n sigma^2) with the largest diameter
+    // sigma = 2 max R: the length the cells must resolve.
+    static double mean_free_path(const CaseConfig& c) {
+        double R = 0;
+        for (const SpeciesConfig& s : c.species)
+            R = std::max(R, s.radius);
+        return roughgas::mean_free_path(c.run.density, 2 * R);
+    }
+
+    // A spatially resolved run: keys the homogeneous engine has and the box has not, and cells
+    // that resolve the mean free path.
+    void check_domain(const CaseConfig& c) {
+        const DomainConfig& d = *c.domain;
+        if (c.run.kind == RunKind::shear)
+            add("run.kind", "run.kind = \"shear\" with [domain]: the box has periodic boundaries only; a "
+                            "sheared box needs Lees-Edwards boundaries (use the homogeneous uniform shear flow: "
+                            "no [domain])");
+        if (c.run.kernel == CollisionKernel::maxwell)
+            add("run.kernel", "run.kernel = \"maxwell\" with [domain]: cells collide hard spheres only");
+        if (c.run.histogram_every > 0)
+            add("run.histogram_every", "run.histogram_every with [domain]: histograms are written for the "
+                                       "homogeneous gas only (set it to 0)");
+        const double cells = static_cast<double>(d.cells[0]) * static_cast<double>(d.cells[1]) *
+                              static_cast<double>(d.cells[2]);
+        if (cells > 1e8)
+            add("domain.cells", fmt::format("domain.cells = [{}, {}, {}]: {:.3g} cells, at most 1e8", d.cells[0],
+                                            d.cells[1], d.cells[2], cells));
+        const double lambda = mean_free_path(c);
+        double edge = 0;
+        for (std::size_t i = 0; i < 3; ++i)
+            edge = std::max(edge, d.size[i] / static_cast<double>(d.cells[i]));
+        if (edge > lambda && !d.allow_coarse)
+            add("domain.cells",
+                fmt::format("domain.cells = [{}, {}, {}]: cells of {:.3g} mean free paths (edge {:.4g}, mean free "
+                            "path {:.4g} at run.density = {:.4g}): at most 1, or set domain.allow_coarse = true",
+                            d.cells[0], d.cells[1], d.cells[2], edge / lambda, edge, lambda, c.run.density));
     }
 
     // The Maxwell kernel is the reference model with a known answer for constant alpha, beta
@@ -887,6 +993,15 @@ class Emitter {
     void put(std::string_view k, const std::array<std::string, 2>& p) {
         line(k, fmt::format("[{}, {}]", quote(p[0]), quote(p[1])));
     }
+    void put(std::string_view k, const std::array<double, 3>& x) {
+        line(k, fmt::format("[{}, {}, {}]", toml_real(x[0]), toml_real(x[1]), toml_real(x[2])));
+    }
+    void put(std::string_view k, const std::array<std::int64_t, 3>& x) {
+        line(k, fmt::format("[{}, {}, {}]", x[0], x[1], x[2]));
+    }
+    void put(std::string_view k, const std::array<std::string, 3>& x) {
+        line(k, fmt::format("[{}, {}, {}]", quote(x[0]), quote(x[1]), quote(x[2])));
+    }
     void put(std::string_view k, const std::optional<double>& x) {
         if (x)
             put(k, *x);
@@ -1006,6 +1121,16 @@ std::string emit_case(const CaseConfig& c) {
         e.header("[shear]");
         e.put("rate", c.shear->rate);
         e.put("time_step", c.shear->time_step);
+    }
+    if (c.domain) {
+        e.header("[domain]");
+        e.put("size", c.domain->size);
+        e.put("cells", c.domain->cells);
+        e.put("boundary", std::array<std::string, 3>{std::string(name(c.domain->boundary[0])),
+                                                      std::string(name(c.domain->boundary[1])),
+                                                      std::string(name(c.domain->boundary[2]))});
+        e.put("time_step", c.domain->time_step);
+        e.put("allow_coarse", c.domain->allow_coarse);
     }
     e.header("[restitution]");
     e.put("g_n_min", c.restitution.g_n_min);

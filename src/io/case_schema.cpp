@@ -291,6 +291,36 @@ std::vector<Key> keys() {
             .doc("Strang splitting step h (stream h/2, collide h, stream h/2), in mean free times of the "
                  "state each step's collisions start from; the error of the steady P*_xy is O(h^2) "
                  "(docs/model.md)"),
+        // [domain]
+        Key("domain.size", T::real3)
+            .unit("length")
+            .when("required in [domain]")
+            .gt(0)
+            .doc("box lengths [L_x, L_y, L_z] in the length unit of the species radii; run.density is the "
+                 "number density of grains in the box, each simulated grain standing for "
+                 "density x volume / run.particles of them"),
+        Key("domain.cells", T::integer3)
+            .when("required in [domain]")
+            .ge(1)
+            .le(4096)
+            .doc("collision cells along x, y, z (a uniform grid); a cell's edge at most one mean free "
+                 "path unless domain.allow_coarse = true"),
+        Key("domain.boundary", T::string3)
+            .fallback(std::string("periodic"))
+            .one_of(std::array<std::string_view, 1>{"periodic"})
+            .doc("the boundary of each axis: periodic"),
+        Key("domain.time_step", T::real)
+            .unit("mean free times")
+            .fallback(0.2)
+            .gt(0)
+            .le(1)
+            .doc("step of free flight and cell collisions, in mean free times of the current state "
+                 "(re-evaluated every step: a cooling gas keeps its steps per collision); shortened to "
+                 "end at each output row"),
+        Key("domain.allow_coarse", T::boolean)
+            .fallback(false)
+            .doc("accept cells longer than one mean free path (the DSMC's transport errors grow as the "
+                 "squared cell size over the mean free path)"),
         // [restitution]
         Key("restitution.g_n_min", T::real)
             .unit("m/s")
@@ -401,6 +431,10 @@ std::string KeySpec::default_text() const {
         std::string operator()(double d) const { return toml_real(d); }
         std::string operator()(const std::string& s) const { return roughgas::quoted(s); }
     };
+    if (type == KeyType::string3 && std::holds_alternative<std::string>(default_value)) {
+        const std::string q = roughgas::quoted(std::get<std::string>(default_value));
+        return "[" + q + ", " + q + ", " + q + "]";
+    }
     return std::visit(Text{}, default_value);
 }
 
@@ -416,6 +450,12 @@ std::string KeySpec::type_name() const {
         return "string";
     case KeyType::string_pair:
         return "[string, string]";
+    case KeyType::real3:
+        return "[real, real, real]";
+    case KeyType::integer3:
+        return "[integer, integer, integer]";
+    case KeyType::string3:
+        return "[string, string, string]";
     }
     return "?";
 }
@@ -445,6 +485,8 @@ const std::vector<TableSpec>& case_tables() {
          "material of the grains (SI)"},
         {"contact", false, "optional", "how the contact of viscoelastic and brilliantov is integrated"},
         {"shear", false, "required for run.kind = shear", "uniform shear flow"},
+        {"domain", false, "optional",
+         "a spatially resolved run: grains with positions in a box of collision cells (docs/model.md §8)"},
         {"restitution", false, "optional", "the grid that roughgas restitution tabulates"},
     };
     return tables;

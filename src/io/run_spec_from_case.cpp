@@ -30,6 +30,14 @@ RunSpec run_spec_from_case(const CaseConfig& cfg) {
             throw std::invalid_argument("run.kind = \"shear\" without [shear]");
         spec.shear = ShearSpec{cfg.shear->rate, cfg.shear->time_step};
     }
+    if (cfg.domain) {
+        DomainSpec d;
+        d.size = cfg.domain->size;
+        for (std::size_t i = 0; i < 3; ++i)
+            d.cells[i] = static_cast<int>(cfg.domain->cells[i]);
+        d.time_step = cfg.domain->time_step;
+        spec.domain = d;
+    }
     for (const SpeciesConfig& s : cfg.species) {
         SpeciesSpec sp;
         sp.name = s.name;

@@ -196,5 +196,32 @@ TEST(SpatialEngine, SmallBoxCoolsByHaffsLaw) {
     EXPECT_NEAR(ratio, 1.0, 4 * 0.0041 + 0.005) << "T/T0 = " << cooled;
 }
 
+// A state saved after 6 steps and restored into a new engine continues bit for bit as the
+// engine that never stopped (positions, velocities, spins; the streams are keyed by the step).
+TEST(SpatialEngine, SaveAndRestoreContinueTheSameTrajectory) {
+    const DomainSpec d = cube(25.0, 5);
+    SpatialEngine<RoughConstant> a(d, one_species(4000), {make_rough_constant(0.7, 0.2)}, 0.1, 9, 1, 1);
+    CountCollisions count;
+    for (int k = 0; k < 6; ++k)
+        a.step(0.25 / a.collision_frequency(), count);
+    ByteWriter w;
+    a.save(w);
+    SpatialEngine<RoughConstant> b(d, one_species(4000), {make_rough_constant(0.7, 0.2)}, 0.1, 9, 1, 2);
+    ByteReader r(w.bytes());
+    b.restore(r);
+    EXPECT_EQ(r.remaining(), 0u);
+    for (int k = 0; k < 6; ++k) {
+        const double dt = 0.25 / a.collision_frequency();
+        ASSERT_EQ(dt, 0.25 / b.collision_frequency());
+        a.step(dt, count);
+        b.step(dt, count);
+    }
+    EXPECT_EQ(a.collisions(), b.collisions());
+    for (std::size_t i = 0; i < a.particles(); ++i)
+        ASSERT_TRUE(a.positions()[i].x == b.positions()[i].x && a.velocities()[i].y == b.velocities()[i].y &&
+                    a.angular_velocities()[i].z == b.angular_velocities()[i].z)
+            << i;
+}
+
 } // namespace
 } // namespace roughgas

@@ -2,7 +2,8 @@
 // stopped with SIGTERM/SIGINT, then continued with `roughgas run --resume DIR` (on another thread
 // count) give moments.csv, histograms.csv and steady.csv byte for byte as the run that was never
 // interrupted. Cases: a rough cooling run with 3 replicas on 2 threads (one replica waits for a
-// thread) and histograms, a shear run, a rough binary mixture with histograms. The kill moments
+// thread) and histograms, a shear run, a rough binary mixture with histograms, a spatially
+// resolved box. The kill moments
 // come from a seeded generator (printed on failure); no result depends on them.
 #include "../io/io_test_support.hpp"
 #include "child_process.hpp"
@@ -34,6 +35,13 @@ std::string rough_cooling(int particles, double end) {
       << "\nhistogram_bins = 20\n\n[[species]]\nname = \"grain\"\nmass = 1.0\nradius = 0.5\n\n"
          "[collision]\nmodel = \"constant\"\nalpha = 0.8\nbeta = 0.3\n";
     return s.str();
+}
+
+// A spatially resolved box (positions in the checkpoint): rough grains, 2 replicas, 512 cells.
+std::string box() {
+    return "[run]\nparticles = 40000\nend = 30.0\noutput_every = 1.0\nreplicas = 2\ndensity = 0.02\nseed = 13\n\n"
+           "[[species]]\nmass = 1.0\nradius = 0.5\n\n[collision]\nmodel = \"constant\"\nalpha = 0.8\nbeta = 0.3\n\n"
+           "[domain]\nsize = [40.0, 40.0, 40.0]\ncells = [8, 8, 8]\n";
 }
 
 std::string shear() {
@@ -141,7 +149,8 @@ TEST_P(KillAndResume, ResumedRunIsByteIdenticalToTheUninterruptedOne) {
 INSTANTIATE_TEST_SUITE_P(
     E2e, KillAndResume,
     ::testing::Values(Scenario{"RoughCooling3Replicas", rough_cooling(20000, 40.0), "1.5"},
-                      Scenario{"Shear", shear(), "1"}, Scenario{"RoughMixture", rough_mixture(), "2"}),
+                      Scenario{"Shear", shear(), "1"}, Scenario{"RoughMixture", rough_mixture(), "2"},
+                      Scenario{"Box", box(), "2"}),
     [](const ::testing::TestParamInfo<Scenario>& info) { return info.param.name; });
 
 // Every line after the '#' lines has as many cells as the header: a CSV that a reader takes as is.

@@ -7,6 +7,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -68,6 +69,28 @@ inline std::map<std::string, std::string> file_contents(const fs::path& dir) {
         if (e.is_regular_file())
             m[fs::relative(e.path(), dir).string()] = read_file(e.path());
     return m;
+}
+
+// A CSV written by roughgas: column name -> values ('#' lines skipped).
+inline std::map<std::string, std::vector<double>> read_csv(const fs::path& p) {
+    std::istringstream in(read_file(p));
+    std::map<std::string, std::vector<double>> cols;
+    std::vector<std::string> names;
+    for (std::string line; std::getline(in, line);) {
+        if (line.empty() || line[0] == '#')
+            continue;
+        std::istringstream fields(line);
+        std::vector<std::string> f;
+        for (std::string x; std::getline(fields, x, ',');)
+            f.push_back(x);
+        if (names.empty()) {
+            names = f;
+            continue;
+        }
+        for (std::size_t j = 0; j < f.size() && j < names.size(); ++j)
+            cols[names[j]].push_back(std::stod(f[j]));
+    }
+    return cols;
 }
 
 struct CommandResult {

@@ -16,28 +16,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A CSV written by roughgas: column name -> values.
-std::map<std::string, std::vector<double>> read_csv(const fs::path& p) {
-    std::istringstream in(test::read_file(p));
-    std::map<std::string, std::vector<double>> cols;
-    std::vector<std::string> names;
-    for (std::string line; std::getline(in, line);) {
-        if (line.empty() || line[0] == '#')
-            continue;
-        std::istringstream fields(line);
-        std::vector<std::string> f;
-        for (std::string x; std::getline(fields, x, ',');)
-            f.push_back(x);
-        if (names.empty()) {
-            names = f;
-            continue;
-        }
-        for (std::size_t j = 0; j < f.size() && j < names.size(); ++j)
-            cols[names[j]].push_back(std::stod(f[j]));
-    }
-    return cols;
-}
-
 // A binary mixture of smooth spheres, alpha = 0.9, mass ratio 2, equal sizes and fractions: the
 // species' temperature ratio relaxes over ~10 collisions per particle while theta (smooth grains
 // keep their spins) grows without end.
@@ -71,8 +49,8 @@ beta = -1.0
     EXPECT_NE(last.find("T_tr.light/T_tr.heavy = "), std::string::npos) << r.err;
     EXPECT_EQ(last.find("theta"), std::string::npos) << last;
 
-    const auto s = read_csv(dir / "out" / "scaled.csv");
-    const auto m = read_csv(dir / "out" / "moments.csv");
+    const auto s = test::read_csv(dir / "out" / "scaled.csv");
+    const auto m = test::read_csv(dir / "out" / "moments.csv");
     const std::string ratio = "T_tr.light/T_tr.heavy";
     ASSERT_EQ(s.at("steady").at(0), 1.0);
     const double from = s.at("steady_from").at(0), value = s.at(ratio).at(0), err = s.at(ratio + "_err").at(0);

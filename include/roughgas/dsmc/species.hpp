@@ -36,6 +36,13 @@ struct PairType {
 };
 std::vector<PairType> make_pair_types(const std::vector<SpeciesBlock>& species);
 
+// The mean free path of hard spheres of diameter sigma at number density n, 1/(sqrt(2) pi n sigma^2)
+// (Maxwellian, equal masses): the length collision cells must resolve (with the largest diameter
+// of a mixture: its shortest).
+inline double mean_free_path(double density, double sigma) {
+    return 1.0 / (std::sqrt(2.0) * std::numbers::pi * density * sigma * sigma);
+}
+
 // The Maxwellian collision frequency per grain at the species' temperatures (T_over_m[s] = T_tr,s/m_s):
 // nu = (2/N) sum_ab P_ab pi sigma_ab^2 <g_ab>/V, <g_ab> = sqrt((8/pi)(T_a/m_a + T_b/m_b)). The engine's
 // step length and the shear time step are set in units of 1/nu.

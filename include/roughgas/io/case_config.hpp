@@ -147,6 +147,21 @@ struct ShearConfig {
     friend bool operator==(const ShearConfig&, const ShearConfig&) = default;
 };
 
+// [domain]: a spatially resolved run (dsmc/spatial_engine.hpp).
+enum class Boundary { periodic };
+inline constexpr std::array<std::string_view, 1> boundary_names{"periodic"};
+struct DomainConfig {
+    std::array<double, 3> size{};            // L_x, L_y, L_z
+    std::array<std::int64_t, 3> cells{};     // collision cells per axis
+    std::array<Boundary, 3> boundary{Boundary::periodic, Boundary::periodic, Boundary::periodic};
+    double time_step = 0.2;                  // in mean free times of the current state
+    bool allow_coarse = false;               // cells longer than a mean free path accepted
+    friend bool operator==(const DomainConfig&, const DomainConfig&) = default;
+};
+constexpr std::string_view name(Boundary b) {
+    return boundary_names[static_cast<std::size_t>(b)];
+}
+
 // [restitution]: the grid of `roughgas restitution` (speeds in m/s).
 struct RestitutionGridConfig {
     double g_n_min = 1e-4;
@@ -167,6 +182,7 @@ struct CaseConfig {
     std::optional<MaterialConfig> material; // present iff [material] was given
     ContactConfig contact;
     std::optional<ShearConfig> shear; // present iff [shear] was given (required for kind = shear)
+    std::optional<DomainConfig> domain; // present iff [domain] was given: a spatially resolved run
     RestitutionGridConfig restitution;
     friend bool operator==(const CaseConfig&, const CaseConfig&) = default;
 };

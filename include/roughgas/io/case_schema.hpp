@@ -10,7 +10,9 @@
 
 namespace roughgas {
 
-enum class KeyType { boolean, integer, real, string, string_pair };
+// real3, integer3, string3: an array of three (one per axis x, y, z), each element within the
+// key's bounds or choices; a string default applies to every element.
+enum class KeyType { boolean, integer, real, string, string_pair, real3, integer3, string3 };
 
 // How a missing key is resolved.
 enum class Need {
@@ -46,7 +48,7 @@ struct KeySpec {
     // "> 0", "in (-1, 0.5)", "one of \"eq24\", \"eq25\"" or "" (anything of the right type).
     std::string allowed() const;
     std::string default_text() const; // "1.0", "\"cooling\"", "required", the note, or "unset"
-    std::string type_name() const;    // "real", "integer", "boolean", "string", "[string, string]"
+    std::string type_name() const;    // "real", "integer", "boolean", "string", "[string, string]", "[real, real, real]", ...
     bool allows(double x) const;      // within [lower, upper]
     bool allows(std::string_view s) const;
 };

@@ -1,0 +1,179 @@
+// One replica of a spatially resolved run ([domain]): the engine of dsmc/spatial_engine.hpp driven
+// to the output rows, with the columns of the homogeneous runs (gas_row.hpp) over the whole box.
+//
+// Steps. Each step lasts domain.time_step mean free times of the state it starts from (the
+// Maxwellian collision frequency of the current temperatures, so a cooling gas keeps its steps per
+// collision), shortened so that it ends at the next output's collisions per particle when that is
+// nearer: rows come at the end of the first step at or after each output (a row whose step passed
+// several outputs is repeated for each). The step length is part of the discretisation (the
+// DSMC's time-step error), so it depends on the output schedule only through those shortened
+// steps, which are shorter, never longer, than domain.time_step.
+//
+// Checkpoints: the engine's state (positions included) and the place in the output schedule, at
+// step ends; the streams are keyed by the step, so a resumed run draws the same numbers.
+#include "drive.hpp"
+#include "gas_row.hpp"
+
+#include "roughgas/core/bytes.hpp"
+#include "roughgas/dsmc/spatial_engine.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace roughgas::detail {
+namespace {
+
+template <class Policy>
+ReplicaEnd run_box(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
+                   int replica, const ReplicaIo& io) {
+    const auto wall0 = std::chrono::steady_clock::now();
+    const DomainSpec& domain = *spec.domain;
+    SpatialEngine<Policy> engine(domain, blocks, std::move(policies), spec.density, spec.seed,
+                                 static_cast<std::uint64_t>(replica), std::max(1, spec.threads));
+    const double N = static_cast<double>(engine.particles());
+    const std::size_t S = blocks.size();
+    std::vector<SpeciesSlice> slices(S);
+    for (std::size_t s = 0; s < S; ++s)
+        slices[s] = {blocks[s].offset, blocks[s].count, blocks[s].grain.mass, blocks[s].moment_of_inertia()};
+    const std::vector<PairType>& types = engine.pair_types();
+    const bool clamp_column = has_brilliantov(spec);
+    const std::size_t columns = dsmc_columns(spec).size();
+    const std::string kernel = std::string("box of ") + std::to_string(engine.cells()) + " cells, " +
+                               std::string(Policy::name);
+
+    std::vector<double> outputs = spec.output_times;
+    if (outputs.empty())
+        outputs.push_back(spec.end);
+    const double end = outputs.back();
+
+    Tally tally;
+    tally.per_type.assign(types.size(), 0);
+    double t_prev = 0;
+    std::int64_t c_prev = 0;
+    std::size_t next = 0; // the next output
+    const ReplicaCheckpoints* ck = io.checkpoints;
+    const double every = ck ? ck->every : 0;
+    double next_save = every;
+    std::int64_t resumed_at = 0;
+
+    const auto state = [&] {
+        ByteWriter w;
+        w.str(kernel);
+        engine.save(w);
+        w.u64(next);
+        w.f64(t_prev);
+        w.put(c_prev);
+        tally.save(w);
+        w.f64(next_save);
+        return w.take();
+    };
+
+    std::vector<double> row;
+    const auto emit = [&](bool repeat) {
+        if (!repeat) {
+            const Moments m = compute_moments(column_of(engine.velocities().data(), 0),
+                                              column_of(engine.angular_velocities().data(), 0), slices,
+                                              engine.team());
+            const double t = engine.time();
+            const std::int64_t c = engine.collisions();
+            const bool first = c == 0 && t == 0;
+            const double inv_dt = !first && t > t_prev ? 1.0 / (t - t_prev) : std::numeric_limits<double>::quiet_NaN();
+            row.clear();
+            append_row_head(row, t, c, c_prev, N, m, inv_dt, tally, engine.volume());
+            append_row_tail(row, m, tally, types, blocks, inv_dt, clamp_column);
+            if (row.size() != columns)
+                throw std::logic_error("run_replica: row and columns differ");
+            t_prev = t;
+            c_prev = c;
+            tally.next_interval();
+        }
+        io.sink(row);
+    };
+
+    if (ck && !ck->resume.empty()) {
+        try {
+            ByteReader in(ck->resume);
+            if (const std::string k = in.str(); k != kernel)
+                throw ResumeError("saved by the loop \"" + k + "\", this run's is \"" + kernel + "\"");
+            engine.restore(in);
+            next = static_cast<std::size_t>(in.u64());
+            t_prev = in.f64();
+            c_prev = in.get<std::int64_t>();
+            const std::size_t pairs = tally.per_type.size();
+            tally.load(in);
+            if (tally.per_type.size() != pairs)
+                throw ResumeError("the state has another number of species pairs");
+            next_save = in.f64();
+            if (in.remaining() != 0 || next > outputs.size())
+                throw ResumeError("the state does not fit the case");
+        } catch (const ResumeError&) {
+            throw;
+        } catch (const std::exception& e) {
+            throw ResumeError(e.what());
+        }
+        resumed_at = engine.collisions();
+    } else {
+        emit(false); // t = 0
+    }
+
+    const auto coll_per_particle = [&] { return 2.0 * static_cast<double>(engine.collisions()) / N; };
+    while (next < outputs.size()) {
+        const double nu = engine.collision_frequency();
+        if (!(nu > 0) || !std::isfinite(nu))
+            throw std::runtime_error("the gas has stopped colliding (collision frequency " + std::to_string(nu) +
+                                     ") before the end of the run");
+        const double to_row = outputs[next] - coll_per_particle();
+        const double h = std::min(domain.time_step, std::max(to_row, 0.01 * domain.time_step));
+        engine.step(h / nu, tally);
+        bool repeat = false;
+        while (next < outputs.size() && coll_per_particle() >= outputs[next] * (1 - 1e-12)) {
+            emit(repeat);
+            repeat = true;
+            ++next;
+        }
+        if (io.progress)
+            io.progress(std::min(coll_per_particle(), end), end, static_cast<double>(engine.collisions()));
+        if (ck && ck->save) {
+            const bool stop = ck->stop && ck->stop();
+            if (stop || (every > 0 && coll_per_particle() >= next_save && next < outputs.size())) {
+                if (every > 0)
+                    next_save = (std::floor(coll_per_particle() / every) + 1) * every;
+                ck->save(state());
+                if (stop)
+                    break;
+            }
+        }
+    }
+    if (io.summary) {
+        ReplicaSummary& s = *io.summary;
+        s.kernel = kernel;
+        s.bytes_per_particle = 6 * sizeof(Vec3) + sizeof(std::uint32_t);
+        s.memory_per_particle = s.bytes_per_particle;
+        s.collisions = engine.collisions();
+        s.resumed_at = resumed_at;
+        s.steps = engine.steps();
+        s.beta_clamped = tally.clamped;
+        s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    }
+    return next < outputs.size() ? ReplicaEnd::stopped : ReplicaEnd::finished;
+}
+
+} // namespace
+
+ReplicaEnd drive_spatial(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks,
+                         const std::vector<AnyPolicy>& policies, int replica, const ReplicaIo& io) {
+    if (std::none_of(policies.begin(), policies.end(), [](const AnyPolicy& p) { return needs_rotation(p); })) {
+        std::vector<AnySmoothPolicy> v;
+        for (const AnyPolicy& p : policies)
+            v.push_back(to_any_smooth(p));
+        return run_box(spec, blocks, std::move(v), replica, io);
+    }
+    std::vector<AnyRoughPolicy> v;
+    for (const AnyPolicy& p : policies)
+        v.push_back(to_any_rough(as_rough(p)));
+    return run_box(spec, blocks, std::move(v), replica, io);
+}
+
+} // namespace roughgas::detail

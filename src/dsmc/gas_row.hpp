@@ -1,0 +1,104 @@
+#pragma once
+// What a row of moments.csv holds besides the shear columns (dsmc_columns, dsmc/run.hpp), from the
+// moments of the state and the collisions since the previous row: shared by the homogeneous
+// (drive_impl.hpp) and the spatially resolved (drive_spatial.cpp) runs, so that both write the same
+// columns with the same definitions.
+#include "roughgas/collision/record.hpp"
+#include "roughgas/core/bytes.hpp"
+#include "roughgas/dsmc/species.hpp"
+#include "roughgas/observables/moments.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+namespace roughgas::detail {
+
+// Sums over the collisions since the last output row.
+struct Tally {
+    double dE = 0;                      // energy change of the gas (<= 0)
+    std::vector<std::int64_t> per_type; // collisions per pair type
+    std::int64_t clamped = 0;           // all collisions so far with beta clamped
+    void operator()(const CollisionRecord& r, std::size_t k) {
+        dE += r.dE_tr + r.dE_rot;
+        ++per_type[k];
+        clamped += r.beta_clamped;
+    }
+    // One per group (or work unit) of an engine (ForkableObserver, dsmc/engine.hpp), merged in order.
+    Tally fork() const {
+        Tally t;
+        t.per_type.assign(per_type.size(), 0);
+        return t;
+    }
+    void merge(const Tally& o) {
+        dE += o.dE;
+        for (std::size_t k = 0; k < per_type.size(); ++k)
+            per_type[k] += o.per_type[k];
+        clamped += o.clamped;
+    }
+    // In a checkpoint (core/bytes.hpp); load() resizes per_type to what was saved.
+    void save(ByteWriter& w) const {
+        w.f64(dE);
+        w.u64(per_type.size());
+        for (std::int64_t x : per_type)
+            w.put(x);
+        w.put(clamped);
+    }
+    void load(ByteReader& r) {
+        dE = r.f64();
+        per_type.resize(r.count(sizeof(std::int64_t)));
+        for (std::int64_t& x : per_type)
+            x = r.get<std::int64_t>();
+        clamped = r.get<std::int64_t>();
+    }
+    // After a row: the interval sums start again (clamped counts the whole run).
+    void next_interval() {
+        dE = 0;
+        std::fill(per_type.begin(), per_type.end(), 0);
+    }
+};
+
+inline void append_group(std::vector<double>& row, const GroupMoments& g) {
+    for (double x : {g.T_tr, g.T_rot, g.theta, g.a20, g.a02, g.a11, g.A_cw})
+        row.push_back(x);
+}
+
+// t, coll_per_particle, the whole gas's moments, coll_rate, E_diss_rate. `inv_dt`: 1 over the time
+// since the previous row (NaN in the first row); `volume`: N/n.
+inline void append_row_head(std::vector<double>& row, double t, std::int64_t collisions, std::int64_t collisions_prev,
+                            double N, const Moments& m, double inv_dt, const Tally& tally, double volume) {
+    row.push_back(t);
+    row.push_back(2.0 * static_cast<double>(collisions) / N);
+    append_group(row, m.all);
+    row.push_back(2.0 * static_cast<double>(collisions - collisions_prev) / N * inv_dt);
+    row.push_back(-tally.dE / volume * inv_dt);
+}
+
+// Mixtures: each species' moments and collision rate, then the temperature ratios of every pair;
+// beta_clamped when the run has a brilliantov pair.
+inline void append_row_tail(std::vector<double>& row, const Moments& m, const Tally& tally,
+                            const std::vector<PairType>& types, const std::vector<SpeciesBlock>& blocks, double inv_dt,
+                            bool clamp_column) {
+    const std::size_t S = blocks.size();
+    if (S > 1) {
+        std::vector<double> per_species(S, 0.0);
+        for (std::size_t k = 0; k < types.size(); ++k) {
+            per_species[types[k].a] += static_cast<double>(tally.per_type[k]);
+            per_species[types[k].b] += static_cast<double>(tally.per_type[k]);
+        }
+        for (std::size_t s = 0; s < S; ++s) {
+            append_group(row, m.species[s]);
+            row.push_back(per_species[s] / static_cast<double>(blocks[s].count) * inv_dt);
+        }
+        for (std::size_t a = 0; a < S; ++a) {
+            for (std::size_t b = a + 1; b < S; ++b) {
+                row.push_back(m.species[a].T_tr / m.species[b].T_tr);
+                row.push_back(m.species[a].T_rot / m.species[b].T_rot);
+            }
+        }
+    }
+    if (clamp_column)
+        row.push_back(static_cast<double>(tally.clamped));
+}
+
+} // namespace roughgas::detail

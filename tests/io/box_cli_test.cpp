@@ -1,0 +1,107 @@
+// `roughgas run` of a spatially resolved case ([domain]; src/dsmc/drive_spatial.cpp): the same
+// bytes for any thread count and for merged replica ranges; the box reported in mean free paths;
+// what the box cannot run refused before any work; a small box cools as the homogeneous gas.
+#include "io_test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace roughgas {
+namespace {
+
+namespace fs = std::filesystem;
+using test::replaced;
+
+// Rough grains, alpha = 0.9, beta = 0.4, n = 0.02 (mean free path 11.25 for sigma = 1); a box of
+// 4.4 mean free paths (below the shear-mode instability length, about 20 mean free paths at this
+// alpha), cells of 0.89 of them.
+std::string box_case(int particles = 4000, int replicas = 2, double end = 6.0) {
+    return "[run]\nparticles = " + std::to_string(particles) + "\nreplicas = " + std::to_string(replicas) +
+           "\nend = " + std::to_string(end) +
+           "\noutput_every = 0.5\noutput_spacing = \"log\"\ndensity = 0.02\nseed = 4\n\n"
+           "[[species]]\nmass = 1.0\nradius = 0.5\n\n"
+           "[collision]\nmodel = \"constant\"\nalpha = 0.9\nbeta = 0.4\n\n"
+           "[domain]\nsize = [50.0, 50.0, 50.0]\ncells = [5, 5, 5]\n";
+}
+
+std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
+
+TEST(BoxCli, ThreadsAndReplicaRangesGiveTheSameBytes) {
+    const test::ScratchDir dir;
+    const fs::path f = dir.write("box.toml", box_case());
+    const std::string run = "run " + q(f) + " --quiet --out ";
+    ASSERT_EQ(test::run_roughgas(run + q(dir / "t1") + " --threads 1", dir).status, 0);
+    ASSERT_EQ(test::run_roughgas(run + q(dir / "t2") + " --threads 2", dir).status, 0);
+    ASSERT_EQ(test::run_roughgas(run + q(dir / "a") + " --replicas 0:1", dir).status, 0);
+    ASSERT_EQ(test::run_roughgas(run + q(dir / "b") + " --replicas 1:2", dir).status, 0);
+    const test::CommandResult m =
+        test::run_roughgas("merge " + q(dir / "a") + " " + q(dir / "b") + " --quiet --out " + q(dir / "m"), dir);
+    ASSERT_EQ(m.status, 0) << m.err;
+    const std::string one = test::read_file(dir / "t1" / "moments.csv");
+    EXPECT_FALSE(one.empty());
+    EXPECT_EQ(test::read_file(dir / "t2" / "moments.csv"), one);
+    EXPECT_EQ(test::read_file(dir / "m" / "moments.csv"), one);
+    // The header gives the box and its cells in mean free paths.
+    EXPECT_NE(one.find("periodic box 50 x 50 x 50 = 4.443 x 4.443 x 4.443 mean free paths"), std::string::npos);
+    EXPECT_NE(one.find("5 x 5 x 5 collision cells (edge up to 0.889 lambda)"), std::string::npos);
+}
+
+TEST(BoxCli, RefusesWhatTheBoxCannotRunBeforeAnyWork) {
+    const test::ScratchDir dir;
+    const std::string base = box_case();
+    const struct {
+        std::string text, key, says;
+    } bad[] = {
+        {replaced(base, "cells = [5, 5, 5]", "cells = [2, 5, 5]"), "domain.cells",
+         "cells of 2.22 mean free paths"},
+        {replaced(base, "size = [50.0, 50.0, 50.0]", "size = [50.0, 0.0, 50.0]"), "domain.size[1]", "must be > 0"},
+        {replaced(base, "cells = [5, 5, 5]", "cells = [5, 5]"), "domain.cells", "an array of three integers"},
+        {replaced(base, "cells = [5, 5, 5]", "cells = [5, 5, 5]\nboundary = [\"periodic\", \"wall\", \"periodic\"]"),
+         "domain.boundary[1]", "must be one of \"periodic\""},
+        {replaced(base, "seed = 4", "seed = 4\nhistogram_every = 1.0"), "run.histogram_every", "[domain]"},
+        {replaced(base, "seed = 4", "seed = 4\nkind = \"shear\"") + "\n[shear]\nrate = 1.0\n", "run.kind",
+         "Lees-Edwards"},
+    };
+    for (const auto& b : bad) {
+        const fs::path f = dir.write("bad.toml", b.text);
+        const test::CommandResult r = test::run_roughgas("run " + q(f) + " --out " + q(dir / "out"), dir);
+        EXPECT_EQ(r.status, 2) << b.key << "\n" << r.err;
+        EXPECT_NE(r.err.find(b.key), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find(b.says), std::string::npos) << r.err;
+        EXPECT_FALSE(fs::exists(dir / "out"));
+    }
+    // Coarse cells on request.
+    const fs::path f = dir.write("coarse.toml", replaced(replaced(base, "cells = [5, 5, 5]", "cells = [2, 2, 2]\nallow_coarse = true"),
+                                                        "end = 6.000000", "end = 1.000000"));
+    const test::CommandResult r = test::run_roughgas("run " + q(f) + " --out " + q(dir / "coarse"), dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("warning: cells of up to 2.22 mean free paths"), std::string::npos) << r.err;
+}
+
+// The box of 4.4 mean free paths against the homogeneous gas (the same case without [domain]) at
+// 40 collisions per particle, where theta and the cumulants have nearly relaxed: the last rows'
+// theta, a20, a02, a11 agree within 4 combined standard errors (8 replicas of 5000 grains each)
+// plus the change of each over the box row's lag (it ends the first step at or after 40: at most
+// 0.2 collisions per particle later, over which theta changes by < 1e-3 here).
+TEST(BoxCli, SmallBoxCoolsAsTheHomogeneousGas) {
+    const test::ScratchDir dir;
+    const std::string c = box_case(5000, 8, 40.0);
+    const fs::path box = dir.write("box.toml", c);
+    const fs::path hom = dir.write("hom.toml", c.substr(0, c.find("[domain]")));
+    ASSERT_EQ(test::run_roughgas("run " + q(box) + " --quiet --out " + q(dir / "box"), dir).status, 0);
+    ASSERT_EQ(test::run_roughgas("run " + q(hom) + " --quiet --out " + q(dir / "hom"), dir).status, 0);
+    const auto b = test::read_csv(dir / "box" / "moments.csv");
+    const auto h = test::read_csv(dir / "hom" / "moments.csv");
+    EXPECT_NEAR(b.at("coll_per_particle").back(), 40.0, 0.25);
+    for (const char* col : {"theta", "a20", "a02", "a11"}) {
+        const std::string e = std::string(col) + "_err";
+        const double x = b.at(col).back(), y = h.at(col).back();
+        const double se = std::hypot(b.at(e).back(), h.at(e).back());
+        EXPECT_NEAR(x, y, 4 * se + 1e-3) << col;
+    }
+}
+
+} // namespace
+} // namespace roughgas
