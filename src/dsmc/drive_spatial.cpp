@@ -83,6 +83,9 @@ ReplicaEnd run_box(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks,
             row.clear();
             append_row_head(row, t, c, c_prev, N, m, inv_dt, tally, engine.volume());
             append_row_tail(row, m, tally, types, blocks, inv_dt, clamp_column);
+            if (domain.initial.mode != Perturbation::none)
+                for (double a : engine.wave_amplitudes())
+                    row.push_back(a);
             if (row.size() != columns)
                 throw std::logic_error("run_replica: row and columns differ");
             t_prev = t;

@@ -121,6 +121,9 @@ std::vector<Column> dsmc_columns(const RunSpec& spec) {
     }
     if (has_brilliantov(spec))
         c.push_back({"beta_clamped", "-"});
+    if (spec.domain && spec.domain->initial.mode != Perturbation::none) // the initial wave's amplitudes
+        for (const Column& w : {Column{"u_wave", "length/time"}, Column{"n_wave", "-"}, Column{"e_wave", "-"}})
+            c.push_back(w);
     return c;
 }
 

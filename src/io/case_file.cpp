@@ -591,6 +591,15 @@ class Builder {
             d.allow_coarse = r.boolean("allow_coarse");
             c.domain = d;
         }
+        if (const toml::table* t = root_["initial"].as_table()) {
+            const Reader r(t, "initial");
+            InitialConfig w;
+            w.mode = r.choice<Perturbation>("mode", perturbation_names);
+            w.amplitude = r.real("amplitude");
+            if (r.has("wave"))
+                w.wave = r.integer3("wave");
+            c.initial = w;
+        }
         c.restitution = grid(Reader(root_["restitution"].as_table(), "restitution"));
         check(c);
         return c;
@@ -767,6 +776,15 @@ class Builder {
         }
         if (c.domain)
             check_domain(c);
+        if (c.initial && c.initial->mode != Perturbation::none) {
+            if (!c.domain)
+                add("initial.mode", fmt::format("initial.mode = \"{}\" without [domain]: a wave needs positions "
+                                                "(give the box in [domain])",
+                                                name(c.initial->mode)));
+            const auto& k = c.initial->wave;
+            if (k[0] == 0 && k[1] == 0 && k[2] == 0)
+                add("initial.wave", "initial.wave = [0, 0, 0]: a wave needs a wave number other than 0");
+        }
         if (c.run.kernel == CollisionKernel::maxwell)
             check_maxwell_kernel(c);
         if (c.run.histogram_every > c.run.end) {
@@ -1121,6 +1139,12 @@ std::string emit_case(const CaseConfig& c) {
         e.header("[shear]");
         e.put("rate", c.shear->rate);
         e.put("time_step", c.shear->time_step);
+    }
+    if (c.initial) {
+        e.header("[initial]");
+        e.put("mode", name(c.initial->mode));
+        e.put("amplitude", c.initial->amplitude);
+        e.put("wave", c.initial->wave);
     }
     if (c.domain) {
         e.header("[domain]");

@@ -321,6 +321,24 @@ std::vector<Key> keys() {
             .fallback(false)
             .doc("accept cells longer than one mean free path (the DSMC's transport errors grow as the "
                  "squared cell size over the mean free path)"),
+        // [initial]
+        Key("initial.mode", T::string)
+            .fallback(std::string("none"))
+            .one_of(perturbation_names)
+            .doc("a wave on the uniform Maxwellian start of a [domain] run, wave vector k_a = 2 pi wave_a / L_a: "
+                 "transverse: u = A c e sin(k.x), e perpendicular to k (y if k_y = 0, else z if k_z = 0, else "
+                 "along k x x); longitudinal: u = A c k/|k| sin(k.x); density: n (1 + A sin(k.x)); "
+                 "temperature: T (1 + A sin(k.x)); c = sqrt(T/m) of the species' mean T and m"),
+        Key("initial.amplitude", T::real)
+            .fallback(0.1)
+            .gt(-1)
+            .lt(1)
+            .doc("A: of the velocity in units of sqrt(T/m), of the density or temperature relative to its mean"),
+        Key("initial.wave", T::integer3)
+            .when("[1, 0, 0]")
+            .ge(-1000)
+            .le(1000)
+            .doc("wave numbers [n_x, n_y, n_z] (whole wavelengths in the box), not all 0"),
         // [restitution]
         Key("restitution.g_n_min", T::real)
             .unit("m/s")
@@ -487,6 +505,7 @@ const std::vector<TableSpec>& case_tables() {
         {"shear", false, "required for run.kind = shear", "uniform shear flow"},
         {"domain", false, "optional",
          "a spatially resolved run: grains with positions in a box of collision cells (docs/model.md §8)"},
+        {"initial", false, "optional (with [domain])", "a wave on the uniform start of a spatially resolved run"},
         {"restitution", false, "optional", "the grid that roughgas restitution tabulates"},
     };
     return tables;

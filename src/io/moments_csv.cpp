@@ -134,6 +134,13 @@ const std::map<std::string, std::string>& meanings() {
         {"E_diss_rate", "energy dissipated per unit volume and time since the previous row (NaN at t = 0)"},
         {"beta_clamped",
          "collisions so far whose brilliantov beta left [-1, 1] and was clamped (brilliantov runs)"},
+        {"u_wave", "box runs with an [initial] wave: its velocity amplitude, (2/N) sum of v.e sin(k.x) over the "
+                   "grains (e: the transverse direction of a transverse wave, k/|k| of a longitudinal one, x "
+                   "otherwise)"},
+        {"n_wave", "box runs with an [initial] wave: the relative amplitude of the density wave, (2/N) sum of "
+                   "sin(k.x)"},
+        {"e_wave", "box runs with an [initial] wave: the relative amplitude of the wave of translational energy "
+                   "density, (2/N) sum of (m v^2/2) sin(k.x) over the mean of m v^2/2"},
         {"T_tr_theory",
          "T_tr of the Maxwellian approximation at t (constant alpha, beta; Haff's law when smooth); with "
          "run.kernel = maxwell the exact solution of its linear ODEs"},
@@ -228,6 +235,13 @@ std::string moments_columns_markdown() {
         add(c);
     for (const Column& c : t3.columns())
         add(c);
+    RunSpec wave = one; // a box with an initial wave: its amplitudes come last
+    wave.domain = DomainSpec{};
+    wave.domain->initial.mode = Perturbation::transverse;
+    const MomentsTable t5(wave);
+    for (const Column& c : t5.columns())
+        if (!c.name.ends_with("_err"))
+            add(c);
     std::string out = "`DIR/moments.csv` (one row per output time, the first at t = 0):\n\n"
                       "| Column | Unit | Meaning |\n|--------|------|---------|\n";
     for (Column c : rows) {

@@ -36,6 +36,12 @@ RunSpec run_spec_from_case(const CaseConfig& cfg) {
         for (std::size_t i = 0; i < 3; ++i)
             d.cells[i] = static_cast<int>(cfg.domain->cells[i]);
         d.time_step = cfg.domain->time_step;
+        if (cfg.initial) {
+            d.initial.mode = cfg.initial->mode;
+            d.initial.amplitude = cfg.initial->amplitude;
+            for (std::size_t i = 0; i < 3; ++i)
+                d.initial.wave[i] = static_cast<int>(cfg.initial->wave[i]);
+        }
         spec.domain = d;
     }
     for (const SpeciesConfig& s : cfg.species) {

@@ -223,5 +223,31 @@ TEST(SpatialEngine, SaveAndRestoreContinueTheSameTrajectory) {
             << i;
 }
 
+// The initial waves (InitialSpec): at t = 0 each mode's amplitude is what was asked, within the
+// sampling noise of 100000 grains (5 standard errors: sqrt(2 T/(m N)) = 0.0045 for u_wave,
+// sqrt(2/N) = 0.0045 for n_wave, sqrt(4/(3N)) = 0.0037 for e_wave), the others near 0; the total
+// momentum is zero.
+TEST(SpatialEngine, InitialWavesHaveTheirAmplitudes) {
+    const int N = 100000;
+    const double A = 0.2;
+    struct Want {
+        Perturbation mode;
+        double u, n, e;
+    };
+    for (const Want& w : {Want{Perturbation::transverse, A, 0, 0}, Want{Perturbation::longitudinal, A, 0, 0},
+                          Want{Perturbation::density, 0, A, A}, Want{Perturbation::temperature, 0, 0, A}}) {
+        DomainSpec d = cube(40.0, 4);
+        d.size[1] = 20.0;
+        d.initial = {w.mode, A, {1, 2, 0}};
+        const SpatialEngine<RoughConstant> e(d, one_species(N), {make_rough_constant(1.0, 1.0)}, 0.1, 3, 0, 1);
+        const std::array<double, 3> a = e.wave_amplitudes();
+        const int mode = static_cast<int>(w.mode);
+        EXPECT_NEAR(a[0], w.u, 5 * 0.0045) << mode;
+        EXPECT_NEAR(a[1], w.n, 5 * 0.0045) << mode;
+        EXPECT_NEAR(a[2], w.e, 5 * 0.0037) << mode;
+        EXPECT_LT(std::sqrt(norm2(momentum(e))), 1e-9 * N);
+    }
+}
+
 } // namespace
 } // namespace roughgas

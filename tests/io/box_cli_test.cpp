@@ -61,6 +61,10 @@ TEST(BoxCli, RefusesWhatTheBoxCannotRunBeforeAnyWork) {
         {replaced(base, "cells = [5, 5, 5]", "cells = [5, 5, 5]\nboundary = [\"periodic\", \"wall\", \"periodic\"]"),
          "domain.boundary[1]", "must be one of \"periodic\""},
         {replaced(base, "seed = 4", "seed = 4\nhistogram_every = 1.0"), "run.histogram_every", "[domain]"},
+        {base.substr(0, base.find("[domain]")) + "[initial]\nmode = \"transverse\"\n", "initial.mode",
+         "without [domain]"},
+        {base + "\n[initial]\nmode = \"density\"\nwave = [0, 0, 0]\n", "initial.wave", "other than 0"},
+        {base + "\n[initial]\nmode = \"density\"\namplitude = 1.0\n", "initial.amplitude", "in (-1, 1)"},
         {replaced(base, "seed = 4", "seed = 4\nkind = \"shear\"") + "\n[shear]\nrate = 1.0\n", "run.kind",
          "Lees-Edwards"},
     };

@@ -43,11 +43,26 @@ struct ShearSpec {
     double time_step = 0.2; // Strang step h in mean free times (at each output interval's start)
 };
 
+// A wave on the uniform Maxwellian start of a spatially resolved run, wave vector k with
+// k_a = 2 pi wave_a / L_a (dsmc/spatial_engine.hpp):
+//   transverse    u = A c e sin(k.x), e perpendicular to k (y if k_y = 0, else z if k_z = 0, else k x x/|k x x|);
+//   longitudinal  u = A c k/|k| sin(k.x);
+//   density       n(x) = n (1 + A sin(k.x));
+//   temperature   T(x) = T (1 + A sin(k.x)) (translational and rotational).
+// c = sqrt(T/m) with the number-weighted mean T and m of the species.
+enum class Perturbation { none, transverse, longitudinal, density, temperature };
+struct InitialSpec {
+    Perturbation mode = Perturbation::none;
+    double amplitude = 0.1;         // A, |A| < 1
+    std::array<int, 3> wave{1, 0, 0};
+};
+
 // A spatially resolved run (dsmc/spatial_engine.hpp): a periodic box of collision cells.
 struct DomainSpec {
     std::array<double, 3> size{1, 1, 1}; // L_x, L_y, L_z (the case's length unit)
     std::array<int, 3> cells{1, 1, 1};   // collision cells along each axis
     double time_step = 0.2;              // in mean free times of the current state
+    InitialSpec initial;
 };
 
 struct RunSpec {

@@ -48,6 +48,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -85,14 +86,45 @@ template <class Policy> class SpatialEngine {
         x_.resize(particles_);
         v_.resize(particles_);
         w_.resize(particles_);
+        const InitialSpec& wave = domain_.initial;
+        for (int a = 0; a < 3; ++a)
+            k_[a] = 2.0 * std::numbers::pi * wave.wave[a] / domain_.size[a];
+        const bool density_wave = wave.mode == Perturbation::density;
         for (std::size_t s = 0; s < blocks_.size(); ++s) {
             Rng r = make_stream(StreamKey{seed, Stream::initial_position, replica, 0, s});
-            for (std::size_t i = blocks_[s].offset; i < blocks_[s].offset + blocks_[s].count; ++i)
-                x_[i] = {domain_.size[0] * uniform01(r), domain_.size[1] * uniform01(r),
-                         domain_.size[2] * uniform01(r)};
+            for (std::size_t i = blocks_[s].offset; i < blocks_[s].offset + blocks_[s].count; ++i) {
+                for (;;) { // a density wave by rejection: accepted with (1 + A sin(k.x))/(1 + |A|)
+                    x_[i] = {domain_.size[0] * uniform01(r), domain_.size[1] * uniform01(r),
+                             domain_.size[2] * uniform01(r)};
+                    if (!density_wave ||
+                        uniform01(r) * (1 + std::abs(wave.amplitude)) < 1 + wave.amplitude * std::sin(phase(x_[i])))
+                        break;
+                }
+            }
         }
         init_maxwellian(*this, blocks_, seed, replica);
+        perturb_velocities();
         sort_into_cells();
+    }
+
+    // The wave's amplitudes in the current state (InitialSpec's k; the velocity direction e of a
+    // transverse wave, k/|k| of a longitudinal one, x for the others), each (2/N) sum over the
+    // grains of a grain's quantity times sin(k.x): u_wave = that of v.e; n_wave = of 1 (the
+    // relative density wave); e_wave = of (1/2) m |v|^2 over the mean of it (the relative wave of
+    // the translational energy density).
+    std::array<double, 3> wave_amplitudes() const {
+        const Vec3 e = wave_direction();
+        double u = 0, n = 0, en = 0, E = 0;
+        for (const SpeciesBlock& b : blocks_)
+            for (std::size_t i = b.offset; i < b.offset + b.count; ++i) {
+                const double s = std::sin(phase(x_[i])), ei = 0.5 * b.grain.mass * norm2(v_[i]);
+                u += dot(v_[i], e) * s;
+                n += s;
+                en += ei * s;
+                E += ei;
+            }
+        const double f = 2.0 / static_cast<double>(particles_);
+        return {f * u, f * n, E > 0 ? 2.0 * en / E : 0.0};
     }
 
     // The store interface of dsmc/init.hpp.
@@ -193,6 +225,53 @@ template <class Policy> class SpatialEngine {
     }
 
   private:
+    double phase(const Vec3& x) const { return k_[0] * x.x + k_[1] * x.y + k_[2] * x.z; }
+
+    Vec3 wave_direction() const {
+        const Vec3 k{k_[0], k_[1], k_[2]};
+        const double kk = std::sqrt(norm2(k));
+        switch (domain_.initial.mode) {
+        case Perturbation::longitudinal:
+            return kk > 0 ? (1.0 / kk) * k : Vec3{1, 0, 0};
+        case Perturbation::transverse: {
+            if (k.y == 0)
+                return {0, 1, 0};
+            if (k.z == 0)
+                return {0, 0, 1};
+            const Vec3 e = cross(k, Vec3{1, 0, 0});
+            return (1.0 / std::sqrt(norm2(e))) * e;
+        }
+        default:
+            return {1, 0, 0};
+        }
+    }
+
+    // The initial wave of InitialSpec on the Maxwellian velocities (after the total momentum was
+    // removed: a whole number of wavelengths carries none).
+    void perturb_velocities() {
+        const InitialSpec& wave = domain_.initial;
+        if (wave.mode == Perturbation::none || wave.mode == Perturbation::density)
+            return;
+        double T = 0, m = 0;
+        for (const SpeciesBlock& b : blocks_) {
+            T += b.temperature * static_cast<double>(b.count);
+            m += b.grain.mass * static_cast<double>(b.count);
+        }
+        const double c = std::sqrt(T / m);
+        const Vec3 e = wave_direction();
+        for (std::size_t i = 0; i < particles_; ++i) {
+            const double s = std::sin(phase(x_[i]));
+            if (wave.mode == Perturbation::temperature) {
+                const double f = std::sqrt(1 + wave.amplitude * s);
+                v_[i] = f * v_[i];
+                w_[i] = f * w_[i];
+            } else {
+                v_[i] += (wave.amplitude * c * s) * e;
+            }
+        }
+        remove_mean_velocity(*this, blocks_); // what the random positions left of sin(k.x)
+    }
+
     // Free flight, wrapped into the box. x - L floor(x/L) can round to L for an x just below 0:
     // that point is the periodic image of 0 to within the rounding.
     void stream(double dt) {
@@ -331,6 +410,7 @@ template <class Policy> class SpatialEngine {
     std::unique_ptr<WorkerTeam> team_;
     std::size_t particles_ = 0, cells_ = 1;
     double cs_max_ = 0;
+    std::array<double, 3> k_{}; // the initial wave's wave vector
     std::vector<Vec3> x_, v_, w_, x2_, v2_, w2_;
     std::vector<std::uint32_t> key_, cell_start_;
     double t_ = 0;

@@ -162,6 +162,19 @@ constexpr std::string_view name(Boundary b) {
     return boundary_names[static_cast<std::size_t>(b)];
 }
 
+// [initial]: a wave on the start of a [domain] run (InitialSpec, dsmc/run_spec.hpp).
+inline constexpr std::array<std::string_view, 5> perturbation_names{"none", "transverse", "longitudinal", "density",
+                                                                   "temperature"};
+constexpr std::string_view name(Perturbation p) {
+    return perturbation_names[static_cast<std::size_t>(p)];
+}
+struct InitialConfig {
+    Perturbation mode = Perturbation::none;
+    double amplitude = 0.1;
+    std::array<std::int64_t, 3> wave{1, 0, 0};
+    friend bool operator==(const InitialConfig&, const InitialConfig&) = default;
+};
+
 // [restitution]: the grid of `roughgas restitution` (speeds in m/s).
 struct RestitutionGridConfig {
     double g_n_min = 1e-4;
@@ -183,6 +196,7 @@ struct CaseConfig {
     ContactConfig contact;
     std::optional<ShearConfig> shear; // present iff [shear] was given (required for kind = shear)
     std::optional<DomainConfig> domain; // present iff [domain] was given: a spatially resolved run
+    std::optional<InitialConfig> initial; // present iff [initial] was given
     RestitutionGridConfig restitution;
     friend bool operator==(const CaseConfig&, const CaseConfig&) = default;
 };
