@@ -77,6 +77,8 @@ template <class Policy> class SpatialEngine {
             if (!(domain_.size[a] > 0) || domain_.cells[a] < 1)
                 throw std::invalid_argument("SpatialEngine: box sizes must be > 0 and cells >= 1");
         cells_ = static_cast<std::size_t>(domain_.cells[0]) * domain_.cells[1] * domain_.cells[2];
+        for (int a = 0; a < 3; ++a)
+            cells_per_length_[a] = domain_.cells[a] / domain_.size[a];
         for (const SpeciesBlock& b : blocks_)
             particles_ += b.count;
         if (particles_ < 2)
@@ -188,7 +190,7 @@ template <class Policy> class SpatialEngine {
     // The cell of a position (the last cell for a coordinate that rounds onto the upper face).
     std::size_t cell_of(const Vec3& x) const {
         const auto index = [&](double q, int a) {
-            const int k = static_cast<int>(q * domain_.cells[a] / domain_.size[a]);
+            const int k = static_cast<int>(q * cells_per_length_[a]);
             return static_cast<std::size_t>(std::clamp(k, 0, domain_.cells[a] - 1));
         };
         return (index(x.z, 2) * domain_.cells[1] + index(x.y, 1)) * domain_.cells[0] + index(x.x, 0);
@@ -296,36 +298,59 @@ template <class Policy> class SpatialEngine {
     }
 
     // A stable counting sort of each species' grains by cell (the grains themselves move, so a
-    // cell's grains are adjacent in memory while they collide).
+    // cell's grains are adjacent in memory while they collide), in parallel over P chunks of the
+    // species' range (P fixed by the grain and cell counts, never by the threads): each chunk counts
+    // its grains per cell, the offsets follow in (cell, chunk) order, and each chunk scatters its
+    // grains into the second set of arrays, which become the first (no copy back).
     void sort_into_cells() {
         const std::size_t S = blocks_.size();
         key_.resize(particles_);
-        cell_start_.assign(S * (cells_ + 1), 0);
+        cell_start_.resize(S * (cells_ + 1));
+        x2_.resize(particles_);
+        v2_.resize(particles_);
+        w2_.resize(particles_);
         for (std::size_t s = 0; s < S; ++s) {
-            std::uint32_t* start = cell_start_.data() + s * (cells_ + 1);
             const SpeciesBlock& b = blocks_[s];
-            std::vector<std::uint32_t> count(cells_ + 1, 0);
-            for (std::size_t i = b.offset; i < b.offset + b.count; ++i) {
-                key_[i] = static_cast<std::uint32_t>(cell_of(x_[i]));
-                ++count[key_[i] + 1];
+            // Chunks of at least 4096 grains and on average at least 2 grains per cell and chunk
+            // (the counts, P x cells, stay below the grain count).
+            const std::size_t P = std::clamp<std::size_t>(std::min(b.count / 4096, b.count / (2 * cells_)), 1, 64);
+            counts_.assign(P * cells_, 0);
+            const auto range = [&](std::size_t p) {
+                return std::pair{b.offset + b.count * p / P, b.offset + b.count * (p + 1) / P};
+            };
+            team_->for_each(P, [&](std::size_t p) {
+                std::uint32_t* count = counts_.data() + p * cells_;
+                const auto [first, last] = range(p);
+                for (std::size_t i = first; i < last; ++i) {
+                    key_[i] = static_cast<std::uint32_t>(cell_of(x_[i]));
+                    ++count[key_[i]];
+                }
+            });
+            std::uint32_t* start = cell_start_.data() + s * (cells_ + 1);
+            std::uint32_t next = static_cast<std::uint32_t>(b.offset);
+            for (std::size_t c = 0; c < cells_; ++c) {
+                start[c] = next;
+                for (std::size_t p = 0; p < P; ++p) {
+                    const std::uint32_t n = counts_[p * cells_ + c];
+                    counts_[p * cells_ + c] = next; // becomes chunk p's next position in cell c
+                    next += n;
+                }
             }
-            start[0] = static_cast<std::uint32_t>(b.offset);
-            for (std::size_t c = 0; c < cells_; ++c)
-                start[c + 1] = start[c] + count[c + 1];
-            std::vector<std::uint32_t> next(start, start + cells_);
-            x2_.resize(particles_);
-            v2_.resize(particles_);
-            w2_.resize(particles_);
-            for (std::size_t i = b.offset; i < b.offset + b.count; ++i) {
-                const std::uint32_t p = next[key_[i]]++;
-                x2_[p] = x_[i];
-                v2_[p] = v_[i];
-                w2_[p] = w_[i];
-            }
-            std::copy(x2_.begin() + b.offset, x2_.begin() + b.offset + b.count, x_.begin() + b.offset);
-            std::copy(v2_.begin() + b.offset, v2_.begin() + b.offset + b.count, v_.begin() + b.offset);
-            std::copy(w2_.begin() + b.offset, w2_.begin() + b.offset + b.count, w_.begin() + b.offset);
+            start[cells_] = next;
+            team_->for_each(P, [&](std::size_t p) {
+                std::uint32_t* pos = counts_.data() + p * cells_;
+                const auto [first, last] = range(p);
+                for (std::size_t i = first; i < last; ++i) {
+                    const std::uint32_t q = pos[key_[i]]++;
+                    x2_[q] = x_[i];
+                    v2_[q] = v_[i];
+                    w2_[q] = w_[i];
+                }
+            });
         }
+        x_.swap(x2_);
+        v_.swap(v2_);
+        w_.swap(w2_);
     }
 
     // The store index of the k-th grain of cell c (species after species).
@@ -412,7 +437,8 @@ template <class Policy> class SpatialEngine {
     double cs_max_ = 0;
     std::array<double, 3> k_{}; // the initial wave's wave vector
     std::vector<Vec3> x_, v_, w_, x2_, v2_, w2_;
-    std::vector<std::uint32_t> key_, cell_start_;
+    std::vector<std::uint32_t> key_, cell_start_, counts_;
+    std::array<double, 3> cells_per_length_{};
     double t_ = 0;
     std::int64_t steps_ = 0, collisions_ = 0;
 };

@@ -1,0 +1,102 @@
+#!/usr/bin/env python3
+"""Cost of the spatially resolved solver per particle and step, on the DSMC reference deck.
+
+    scripts/python3 scripts/bench_box.py [--build build] [--rounds 3] [--sizes 1e5,1e6] [--out out/bench_box]
+
+The deck (the elastic hard-sphere gas of the usual DSMC benchmark): a periodic cube, cells of 0.42
+mean free paths holding 20 grains on average, steps of half a mean free time
+(domain.time_step = 0.5), 300 steps (150 collisions per particle), one output row at the end. For
+each N: smooth grains on 1 thread, rough grains (alpha = 1, beta = 1: energy-conserving, with
+spins) on 1 thread, smooth grains on 2 threads, run alternately for --rounds rounds (the order
+reversed every other round, so that a drift of the machine's speed hits all alike). Reported per
+variant: the median and range of the wall time per particle and step (ns), and of the ratios
+rough/smooth and 1 thread/2 threads. The machine, date, commit and load are printed with the table
+(docs/performance.md).
+"""
+import argparse
+import os
+import statistics
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bench_common import commit, cpu_times, loadavg, machine, stolen_since  # noqa: E402
+
+DENSITY = 0.02          # sigma = 1: mean free path 1/(sqrt(2) pi n) = 11.254
+STEPS = 300
+TIME_STEP = 0.5
+
+
+def deck(n, rough):
+    """The case text for n grains: cells of 0.42 mean free paths with 20 grains each."""
+    lam = 1.0 / (2 ** 0.5 * 3.141592653589793 * DENSITY)
+    cells = max(1, round((n / 20) ** (1 / 3)))
+    side = cells * 0.42 * lam
+    beta = 1.0 if rough else -1.0
+    return (f"[run]\nparticles = {n}\nend = {STEPS * TIME_STEP}\noutput_every = {STEPS * TIME_STEP}\n"
+            f"density = {DENSITY}\nseed = 1\n\n[[species]]\nmass = 1.0\nradius = 0.5\n\n"
+            f"[collision]\nmodel = \"constant\"\nalpha = 1.0\nbeta = {beta}\n\n"
+            f"[domain]\nsize = [{side}, {side}, {side}]\ncells = [{cells}, {cells}, {cells}]\n"
+            f"time_step = {TIME_STEP}\n")
+
+
+def timed(cmd):
+    t0 = time.perf_counter()
+    p = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    if p.returncode != 0:
+        sys.exit(f"bench_box: {' '.join(cmd)} failed ({p.returncode}):\n{p.stderr}")
+    return time.perf_counter() - t0
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--build", default="build")
+    ap.add_argument("--rounds", type=int, default=3)
+    ap.add_argument("--sizes", default="1e5,1e6", help="particle numbers, comma-separated")
+    ap.add_argument("--out", default="out/bench_box")
+    a = ap.parse_args()
+    roughgas = os.path.abspath(os.path.join(a.build, "roughgas"))
+    os.makedirs(a.out, exist_ok=True)
+    print(machine(), file=sys.stderr)
+    load0, steal0 = loadavg(), cpu_times()
+    rows = []
+    for n in (int(float(x)) for x in a.sizes.split(",")):
+        cases = {}
+        for rough in (False, True):
+            path = os.path.join(a.out, f"deck_{n}_{'rough' if rough else 'smooth'}.toml")
+            with open(path, "w") as f:
+                f.write(deck(n, rough))
+            cases[rough] = path
+        variants = [("smooth, 1 thread", cases[False], "1"), ("rough, 1 thread", cases[True], "1"),
+                    ("smooth, 2 threads", cases[False], "2")]
+        times = {v[0]: [] for v in variants}
+        for r in range(a.rounds):
+            order = variants if r % 2 == 0 else variants[::-1]
+            for name, case, threads in order:
+                t = timed([roughgas, "run", case, "--out", os.path.join(a.out, "run"), "--force", "--quiet",
+                           "--threads", threads])
+                times[name].append(t / (n * STEPS) * 1e9)
+                print(f"  N = {n:.0e}, {name}, round {r + 1}: {times[name][-1]:.1f} ns", file=sys.stderr)
+
+        def fmt(x):
+            return f"{statistics.median(x):.1f} ({min(x):.1f}-{max(x):.1f})"
+
+        def ratio(p, q):
+            rs = [x / y for x, y in zip(times[p], times[q])]
+            return f"{statistics.median(rs):.2f} ({min(rs):.2f}-{max(rs):.2f})"
+        rows.append(f"| {n:.0e} | {fmt(times['smooth, 1 thread'])} | {fmt(times['rough, 1 thread'])} | "
+                    f"{fmt(times['smooth, 2 threads'])} | {ratio('rough, 1 thread', 'smooth, 1 thread')} | "
+                    f"{ratio('smooth, 1 thread', 'smooth, 2 threads')} |")
+    print(f"Measured {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())} on {machine()}; commit "
+          f"{commit()[:12]}; {a.rounds} alternating rounds; wall ns per particle and step (whole runs: "
+          f"start, initial state, 300 steps, one row): median (min-max); load (1 min) {load0} before, "
+          f"{loadavg()} after; CPU time stolen by the hypervisor {stolen_since(steal0)}.\n")
+    print("| N | smooth, 1 thread | rough, 1 thread | smooth, 2 threads | rough/smooth | 1 thread/2 threads |")
+    print("|---|------------------|-----------------|-------------------|--------------|--------------------|")
+    for r in rows:
+        print(r)
+
+
+if __name__ == "__main__":
+    main()
