@@ -155,7 +155,7 @@ std::vector<Key> keys() {
             .fallback(std::string("linear"))
             .one_of(output_spacing_names)
             .doc("linear: every output_every; log: at output_every x 10^(k/10), k = 0, 1, ... (10 per "
-                 "decade)"),
+                 "decade); an output that would fall on the collision count of the one before is left out"),
         Key("run.histogram_every", T::real)
             .unit("collisions per particle")
             .fallback(0.0)

@@ -23,6 +23,25 @@ std::vector<double> output_times(double every, double end, OutputSpacing spacing
     return t;
 }
 
+std::vector<double> rows_apart(const std::vector<double>& times, std::int64_t particles) {
+    // The collision count a row is taken at (dsmc/drive_impl.hpp): round(x N / 2).
+    const auto count = [&](double x) { return std::llround(x * static_cast<double>(particles) / 2.0); };
+    std::vector<double> kept;
+    long long last = 0; // the row at t = 0
+    for (std::size_t k = 0; k < times.size(); ++k) {
+        const long long c = count(times[k]);
+        if (c > last) {
+            kept.push_back(times[k]);
+            last = c;
+        } else if (k + 1 == times.size() && !kept.empty()) {
+            kept.back() = times[k]; // the last row stays at the end
+        }
+    }
+    if (kept.empty())
+        kept.push_back(times.back());
+    return kept;
+}
+
 RunSpec run_spec_from_case(const CaseConfig& cfg) {
     RunSpec spec;
     if (cfg.run.kind == RunKind::shear) {
@@ -84,7 +103,8 @@ RunSpec run_spec_from_case(const CaseConfig& cfg) {
     spec.groups = static_cast<int>(cfg.run.groups);
     spec.kernel = cfg.run.kernel;
     spec.end = cfg.run.end;
-    spec.output_times = output_times(cfg.run.output_every, cfg.run.end, cfg.run.output_spacing);
+    spec.output_times = rows_apart(output_times(cfg.run.output_every, cfg.run.end, cfg.run.output_spacing),
+                                   cfg.run.particles);
     if (cfg.run.histogram_every > 0)
         spec.histogram_times = output_times(cfg.run.histogram_every, cfg.run.end, cfg.run.histogram_spacing);
     spec.histogram_bins = static_cast<int>(cfg.run.histogram_bins);

@@ -473,3 +473,34 @@ TEST(RunCli, PrintsThetaDeviationForOtherAlphaBeta) {
 
 } // namespace
 } // namespace roughgas
+
+namespace roughgas {
+namespace {
+
+// Every N >= 2 runs, also with log-spaced rows denser than one collision (N = 20: 0.1 collisions per
+// particle is one collision): rows that would repeat the previous row's collision count are
+// dropped, so every row after the first has collisions since the one before and finite rates.
+TEST(RunCli, FewGrainsWithDenseRowsRun) {
+    const test::ScratchDir dir;
+    for (int n : {2, 3, 5, 20, 50}) {
+        const fs::path f = dir.write("tiny.toml", "[run]\nparticles = " + std::to_string(n) +
+                                                      "\nend = 20.0\noutput_every = 0.1\noutput_spacing = \"log\"\n\n"
+                                                      "[[species]]\nmass = 1.0\nradius = 0.5\n\n[collision]\n"
+                                                      "model = \"constant\"\nalpha = 0.9\nbeta = 0.4\n");
+        const test::CommandResult r =
+            test::run_roughgas("run '" + f.string() + "' --quiet --force --out '" + (dir / "out").string() + "'", dir);
+        ASSERT_EQ(r.status, 0) << n << "\n" << r.err;
+        const auto m = test::read_csv(dir / "out" / "moments.csv");
+        const std::vector<double>& rate = m.at("coll_rate");
+        const std::vector<double>& cpp = m.at("coll_per_particle");
+        ASSERT_GE(rate.size(), 3u);
+        for (std::size_t k = 1; k < rate.size(); ++k) {
+            EXPECT_TRUE(std::isfinite(rate[k]) && rate[k] > 0) << n << " row " << k;
+            EXPECT_GT(cpp[k], cpp[k - 1]) << n << " row " << k;
+        }
+        EXPECT_DOUBLE_EQ(cpp.back(), 20.0) << n;
+    }
+}
+
+} // namespace
+} // namespace roughgas

@@ -14,6 +14,11 @@ namespace roughgas {
 // to end merges with end.
 std::vector<double> output_times(double every, double end, OutputSpacing spacing);
 
+// `times` without those that fall on the collision count of the row before (round(x N/2) for N
+// `particles`; the row at t = 0 has 0): a few grains with dense rows would otherwise give rows
+// with no collision between them, whose rates are 0/0. The last time (the end) is kept.
+std::vector<double> rows_apart(const std::vector<double>& times, std::int64_t particles);
+
 // Species, the model of every species pair (its [[pair]] table, else [collision]), particles,
 // density, seed, replicas, end and output times, the contact settings, and for run.kind = "shear"
 // the shear rate and time step (std::invalid_argument without [shear]; the parser rejects that
