@@ -88,3 +88,25 @@ beta = -1.0
 
 } // namespace
 } // namespace roughgas
+
+namespace roughgas {
+namespace {
+
+// Restitution that depends on the impact speed has no scaled state: the run says so whatever the
+// detector found (the viscoelastic ice case, a short run), and a constant-restitution run does not.
+TEST(ScaledCli, SpeedDependentRestitutionHasNoScaledState) {
+    const test::ScratchDir dir;
+    const std::string ice = std::string(ROUGHGAS_SOURCE_DIR) + "/cases/hcs_viscoelastic_ice.toml";
+    const test::CommandResult r = test::run_roughgas(
+        "run '" + ice + "' --set run.particles=2000 --set run.end=20 --out '" + (dir / "ice").string() + "'", dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("depends on the impact speed"), std::string::npos) << r.err;
+    const std::string rough = std::string(ROUGHGAS_SOURCE_DIR) + "/cases/hcs_rough.toml";
+    const test::CommandResult c = test::run_roughgas(
+        "run '" + rough + "' --set run.particles=2000 --set run.end=20 --out '" + (dir / "rough").string() + "'", dir);
+    ASSERT_EQ(c.status, 0) << c.err;
+    EXPECT_EQ(c.err.find("impact speed"), std::string::npos) << c.err;
+}
+
+} // namespace
+} // namespace roughgas
