@@ -22,6 +22,7 @@
 // the ranks have finished (or stopped); each rank writes its own replicas' checkpoint files, so
 // DIR must be on a file system every rank sees for --checkpoint-every, --resume and stops.
 #include "commands.hpp"
+#include "memory_check.hpp"
 #include "rank_errors.hpp"
 
 #include "roughgas/core/available_cpus.hpp"
@@ -219,6 +220,12 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         }
         spec.threads = o.threads > 0 ? o.threads : default_threads();
         omp_set_num_threads(spec.threads); // the table builds use the same threads
+        // The replicas this process holds at a time: its share of the range, over its threads.
+        const RunCheckpoint& m = prepared->manifest;
+        const auto range = static_cast<long long>((m.replica_to > 0 ? m.replica_to : m.run.replicas) - m.replica_from);
+        const long long share = (range + comm.size() - 1) / comm.size();
+        refuse_if_too_large(spec, static_cast<int>(std::max(1LL, std::min<long long>(spec.threads, share))),
+                            m.run.case_file);
         if (root)
             tables = build_run_tables(spec); // before anything is written: a failure writes nothing
     });

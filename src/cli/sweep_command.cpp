@@ -17,6 +17,7 @@
 // Under an MPI launcher (parallel/communicator.hpp) rank k runs the points k, k + R, k + 2R, ... on
 // its threads and sends their rows to rank 0, which writes every file: the same bytes as one process.
 #include "commands.hpp"
+#include "memory_check.hpp"
 #include "rank_errors.hpp"
 
 #include "roughgas/core/available_cpus.hpp"
@@ -169,6 +170,16 @@ int run_sweep(const SweepOptions& o, const Communicator& comm) {
         values.push_back(x);
         point_sets.push_back(sets);
     }
+    // Points run at the same time, one replica each at a time: the largest of them, times the threads.
+    RunSpec largest = run_spec_from_case(cases[0]);
+    for (const CaseConfig& c : cases)
+        if (c.run.particles > largest.particles)
+            largest = run_spec_from_case(c);
+    const long long points = (s.count + comm.size() - 1) / comm.size();
+    refuse_if_too_large(largest,
+                        static_cast<int>(std::max(1LL, std::min<long long>(o.threads > 0 ? o.threads : default_threads(),
+                                                                           points))),
+                        o.case_file);
     if (!root)
         return;
     if (fs::exists(dir) && !fs::is_directory(dir))

@@ -85,6 +85,25 @@ const char* const shear_quantities[] = {"P_xx",      "P_yy",      "P_zz",      "
 
 } // namespace
 
+std::size_t memory_per_particle_bound(const RunSpec& spec) {
+    if (spec.domain) // positions, velocities, spins twice (the sort), a key, the sort's counts
+        return 6 * sizeof(Vec3) + 2 * sizeof(std::uint32_t);
+    // The largest store (a 64-byte rough grain), its index and class key, a shear row's spins.
+    return 64 + sizeof(std::uint32_t) + sizeof(std::uint16_t) + sizeof(Vec3);
+}
+
+std::size_t memory_per_replica_fixed_bound(const RunSpec& spec) {
+    if (!spec.domain)
+        return 0;
+    const DomainSpec& d = *spec.domain;
+    const double cells = static_cast<double>(d.cells[0]) * d.cells[1] * d.cells[2];
+    const std::size_t S = spec.species.size();
+    // Per cell: each species' start, the sort's counts of up to 64 chunks, a share of the per-unit
+    // tallies (one per 64 cells: a pair count each, and the unit's bookkeeping).
+    const double per_cell = 4.0 * static_cast<double>(S + 1) + 4.0 * 64 + (8.0 * spec.pairs.size() + 64) / 64;
+    return static_cast<std::size_t>(cells * per_cell);
+}
+
 std::vector<Column> dsmc_columns(const RunSpec& spec) {
     std::vector<Column> c = {{"t", "time"},
                              {"coll_per_particle", "-"},

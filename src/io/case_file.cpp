@@ -822,7 +822,20 @@ class Builder {
         if (cells > 1e8)
             add("domain.cells", fmt::format("domain.cells = [{}, {}, {}]: {:.3g} cells, at most 1e8", d.cells[0],
                                             d.cells[1], d.cells[2], cells));
-        const double lambda = mean_free_path(c);
+        double lambda = mean_free_path(c);
+        // A density wave's crest is denser by 1 + |A|: its mean free path shorter by that.
+        if (c.initial && c.initial->mode == Perturbation::density)
+            lambda /= 1 + std::abs(c.initial->amplitude);
+        if (c.initial && c.initial->mode != Perturbation::none)
+            for (std::size_t i = 0; i < 3; ++i) {
+                const double n = std::abs(static_cast<double>(c.initial->wave[i]));
+                if (n > 0 && d.size[i] / n < 2 * d.size[i] / static_cast<double>(d.cells[i]))
+                    add("initial.wave",
+                        fmt::format("initial.wave = [{}, {}, {}]: a wavelength along {} of {:.4g} spans fewer than two "
+                                    "cells of {:.4g} (collisions inside a cell ignore positions)",
+                                    c.initial->wave[0], c.initial->wave[1], c.initial->wave[2], "xyz"[i],
+                                    d.size[i] / n, d.size[i] / static_cast<double>(d.cells[i])));
+            }
         double edge = 0;
         for (std::size_t i = 0; i < 3; ++i)
             edge = std::max(edge, d.size[i] / static_cast<double>(d.cells[i]));

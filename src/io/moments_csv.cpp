@@ -135,8 +135,7 @@ const std::map<std::string, std::string>& meanings() {
         {"beta_clamped",
          "collisions so far whose brilliantov beta left [-1, 1] and was clamped (brilliantov runs)"},
         {"u_wave", "box runs with an [initial] wave: its velocity amplitude, (2/N) sum of v.e sin(k.x) over the "
-                   "grains (e: the transverse direction of a transverse wave, k/|k| of a longitudinal one, x "
-                   "otherwise)"},
+                   "grains (e: the transverse direction of a transverse wave, k/|k| for the other waves)"},
         {"n_wave", "box runs with an [initial] wave: the relative amplitude of the density wave, (2/N) sum of "
                    "sin(k.x)"},
         {"e_wave", "box runs with an [initial] wave: the relative amplitude of the wave of translational energy "

@@ -65,6 +65,9 @@ TEST(BoxCli, RefusesWhatTheBoxCannotRunBeforeAnyWork) {
          "without [domain]"},
         {base + "\n[initial]\nmode = \"density\"\nwave = [0, 0, 0]\n", "initial.wave", "other than 0"},
         {base + "\n[initial]\nmode = \"density\"\namplitude = 1.0\n", "initial.amplitude", "in (-1, 1)"},
+        {base + "\n[initial]\nmode = \"transverse\"\nwave = [3, 0, 0]\n", "initial.wave",
+         "spans fewer than two cells"},
+        {replaced(base, "particles = 4000", "particles = 4000000000000"), "run.particles", "GB"},
         {replaced(base, "seed = 4", "seed = 4\nkind = \"shear\"") + "\n[shear]\nrate = 1.0\n", "run.kind",
          "Lees-Edwards"},
     };

@@ -480,6 +480,18 @@ namespace {
 // Every N >= 2 runs, also with log-spaced rows denser than one collision (N = 20: 0.1 collisions per
 // particle is one collision): rows that would repeat the previous row's collision count are
 // dropped, so every row after the first has collisions since the one before and finite rates.
+// A run larger than the machine's free memory is refused before any work, with its estimate.
+TEST(RunCli, RefusesARunLargerThanTheMemory) {
+    const test::ScratchDir dir;
+    const fs::path f = dir.write("big.toml", "[run]\nparticles = 1000000000000\nend = 1.0\n\n[[species]]\nmass = 1.0\n"
+                                             "radius = 0.5\n\n[collision]\nmodel = \"constant\"\nalpha = 0.9\nbeta = 0.0\n");
+    const test::CommandResult r = test::run_roughgas("run '" + f.string() + "' --out '" + (dir / "out").string() + "'", dir);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find("run.particles = 1000000000000: needs about"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("GB this process may use"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
 TEST(RunCli, FewGrainsWithDenseRowsRun) {
     const test::ScratchDir dir;
     for (int n : {2, 3, 5, 20, 50}) {

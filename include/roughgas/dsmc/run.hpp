@@ -36,6 +36,13 @@ using HistogramSink = std::function<void(const HistogramSet&)>;
 // beta_clamped: collisions so far whose model beta left [-1, 1] (restitution_policy.hpp, clamp_beta).
 std::vector<Column> dsmc_columns(const RunSpec& spec);
 
+// An upper bound of the memory one replica holds per grain while it runs (the particle store, the
+// engine's index and sort arrays, a row's scratch): what a command checks against the machine's
+// free memory before any work (core/available_memory.hpp).
+std::size_t memory_per_particle_bound(const RunSpec& spec);
+// The same for what does not grow with the grains: a box's per-cell arrays (0 without [domain]).
+std::size_t memory_per_replica_fixed_bound(const RunSpec& spec);
+
 // Runs replica `replica` (0-based; its RNG streams derive from spec.seed and the replica index),
 // calling `sink` once per spec.output_times entry (and once at t = 0 first). Deterministic for a
 // given (spec, replica) whatever spec.threads is.

@@ -28,8 +28,8 @@
 // Threads. Each step's collisions run over work units of a fixed number of cells, claimed
 // dynamically by the replica's WorkerTeam; unit u draws from the stream (seed, cell_collisions,
 // replica, step, u) and has its own observer copy, merged in unit order: the results depend on
-// the cells per unit (fixed), never on the thread count. The flight is per grain and the sort
-// serial.
+// the cells per unit (fixed), never on the thread count. The flight runs over fixed chunks of
+// grains, the sort over chunks fixed by the grain and cell counts (sort_into_cells).
 #include "roughgas/collision/pair_constants.hpp"
 #include "roughgas/collision/record.hpp"
 #include "roughgas/collision/rule.hpp"
@@ -83,6 +83,8 @@ template <class Policy> class SpatialEngine {
             particles_ += b.count;
         if (particles_ < 2)
             throw std::invalid_argument("SpatialEngine: at least two particles needed");
+        if (particles_ >= (std::size_t{1} << 32) || cells_ >= (std::size_t{1} << 32))
+            throw std::invalid_argument("SpatialEngine: at most 2^32 - 1 grains and cells (32-bit offsets)");
         for (const PairType& t : types_)
             cs_max_ = std::max(cs_max_, t.pc.cross_section);
         x_.resize(particles_);
@@ -110,7 +112,7 @@ template <class Policy> class SpatialEngine {
     }
 
     // The wave's amplitudes in the current state (InitialSpec's k; the velocity direction e of a
-    // transverse wave, k/|k| of a longitudinal one, x for the others), each (2/N) sum over the
+    // transverse wave, k/|k| for the others), each (2/N) sum over the
     // grains of a grain's quantity times sin(k.x): u_wave = that of v.e; n_wave = of 1 (the
     // relative density wave); e_wave = of (1/2) m |v|^2 over the mean of it (the relative wave of
     // the translational energy density).
@@ -243,8 +245,8 @@ template <class Policy> class SpatialEngine {
             const Vec3 e = cross(k, Vec3{1, 0, 0});
             return (1.0 / std::sqrt(norm2(e))) * e;
         }
-        default:
-            return {1, 0, 0};
+        default: // density and temperature waves: the flow they set up runs along k
+            return kk > 0 ? (1.0 / kk) * k : Vec3{1, 0, 0};
         }
     }
 

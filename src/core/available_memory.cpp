@@ -1,0 +1,58 @@
+#include "roughgas/core/available_memory.hpp"
+
+#include <fstream>
+#include <sstream>
+
+namespace roughgas {
+namespace {
+
+std::string read_text(const char* path) {
+    std::ifstream in(path);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::optional<std::uint64_t> number(const std::string& text) {
+    std::istringstream in(text);
+    std::uint64_t x = 0;
+    if (!(in >> x))
+        return std::nullopt;
+    return x;
+}
+
+} // namespace
+
+std::optional<std::uint64_t> mem_available_of(const std::string& meminfo) {
+    std::istringstream in(meminfo);
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind("MemAvailable:", 0) != 0)
+            continue;
+        std::istringstream f(line.substr(13));
+        std::uint64_t kb = 0;
+        std::string unit;
+        if (f >> kb >> unit && unit == "kB")
+            return kb * 1024;
+    }
+    return std::nullopt;
+}
+
+std::optional<AvailableMemory> available_memory() {
+    std::optional<AvailableMemory> a;
+    if (const auto m = mem_available_of(read_text("/proc/meminfo")))
+        a = AvailableMemory{*m, "MemAvailable"};
+    const auto limit = [&](const char* max_path, const char* use_path, const char* name) {
+        const auto max = number(read_text(max_path)), use = number(read_text(use_path));
+        if (!max || !use || *max >= (std::uint64_t{1} << 60)) // "max" (no number) or the v1 "unlimited" value
+            return;
+        const std::uint64_t left = *max > *use ? *max - *use : 0;
+        if (!a || left < a->bytes)
+            a = AvailableMemory{left, name};
+    };
+    limit("/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory.current", "cgroup memory.max");
+    limit("/sys/fs/cgroup/memory/memory.limit_in_bytes", "/sys/fs/cgroup/memory/memory.usage_in_bytes",
+          "cgroup memory.limit_in_bytes");
+    return a;
+}
+
+} // namespace roughgas
