@@ -1,5 +1,7 @@
 #include "roughgas/core/available_cpus.hpp"
 
+#include "roughgas/core/text_file.hpp"
+
 #include "roughgas/parallel/communicator.hpp"
 
 #include <sched.h>
@@ -14,13 +16,6 @@
 namespace roughgas {
 
 namespace {
-
-std::string read_text(const char* path) {
-    std::ifstream in(path);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 std::optional<int> positive_int(const char* text) {
     if (!text || !*text)
@@ -65,10 +60,10 @@ int default_threads() {
         n = std::min(n, std::max(1, CPU_COUNT(&set)));
         whole_machine = CPU_COUNT(&set) >= sysconf(_SC_NPROCESSORS_ONLN);
     }
-    if (const std::optional<int> q = cpus_of_cpu_max(read_text("/sys/fs/cgroup/cpu.max")))
+    if (const std::optional<int> q = cpus_of_cpu_max(read_text_file("/sys/fs/cgroup/cpu.max")))
         n = std::min(n, *q);
-    const std::string v1_quota = read_text("/sys/fs/cgroup/cpu/cpu.cfs_quota_us");
-    const std::string v1_period = read_text("/sys/fs/cgroup/cpu/cpu.cfs_period_us");
+    const std::string v1_quota = read_text_file("/sys/fs/cgroup/cpu/cpu.cfs_quota_us");
+    const std::string v1_period = read_text_file("/sys/fs/cgroup/cpu/cpu.cfs_period_us");
     if (!v1_quota.empty() && !v1_period.empty())
         if (const std::optional<int> q = quota_cpus(std::atof(v1_quota.c_str()), std::atof(v1_period.c_str())))
             n = std::min(n, *q);

@@ -1,17 +1,12 @@
 #include "roughgas/core/available_memory.hpp"
 
+#include "roughgas/core/text_file.hpp"
+
 #include <fstream>
 #include <sstream>
 
 namespace roughgas {
 namespace {
-
-std::string read_text(const char* path) {
-    std::ifstream in(path);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 std::optional<std::uint64_t> number(const std::string& text) {
     std::istringstream in(text);
@@ -39,10 +34,10 @@ std::optional<std::uint64_t> mem_available_of(const std::string& meminfo) {
 
 std::optional<AvailableMemory> available_memory() {
     std::optional<AvailableMemory> a;
-    if (const auto m = mem_available_of(read_text("/proc/meminfo")))
+    if (const auto m = mem_available_of(read_text_file("/proc/meminfo")))
         a = AvailableMemory{*m, "MemAvailable"};
     const auto limit = [&](const char* max_path, const char* use_path, const char* name) {
-        const auto max = number(read_text(max_path)), use = number(read_text(use_path));
+        const auto max = number(read_text_file(max_path)), use = number(read_text_file(use_path));
         if (!max || !use || *max >= (std::uint64_t{1} << 60)) // "max" (no number) or the v1 "unlimited" value
             return;
         const std::uint64_t left = *max > *use ? *max - *use : 0;

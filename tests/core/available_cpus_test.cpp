@@ -101,3 +101,4 @@ TEST(AvailableCpus, RanksOnOneNodeShareTheirMask) {
 
 } // namespace
 } // namespace roughgas
+
