@@ -19,6 +19,8 @@ struct CheckOptions {
 
 int run_check(const CheckOptions& o) {
     const CaseConfig cfg = load_case(o.case_file, o.sets, o.use); // throws InputError: exit 2
+    for (const std::string& u : cfg.unused)
+        std::cerr << o.case_file << ": warning: " << u << '\n';
     if (o.print) {
         std::cout << emit_case(cfg);
     } else {

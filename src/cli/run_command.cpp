@@ -283,6 +283,11 @@ int run_run(const RunOptions& o, const Communicator& comm) {
             "uniform shear flow u = a y x, a = {:.17g}: V = v - u; Strang steps of {:.17g} mean free times; "
             "rows at the end of the first step at or after each output's coll_per_particle",
             spec.shear->rate, spec.shear->time_step));
+    for (const std::string& u : cfg.unused) { // kept in the case, not used by this run
+        prov.notes.push_back("warning: " + u);
+        if (root)
+            std::cerr << "roughgas run: warning: " << u << '\n';
+    }
     if (spec.domain) { // the box and its cells in mean free paths, on stderr too
         double R = 0;
         for (const SpeciesSpec& s : spec.species)

@@ -192,6 +192,9 @@ int run_sweep(const SweepOptions& o, const Communicator& comm) {
     lock.lock(dir);
     });
 
+    if (root)
+        for (const std::string& u : cases[0].unused) // kept in the case, not used by the sweep's runs
+            std::cerr << "roughgas sweep: warning: " << u << '\n';
     // This rank's points: k = rank, rank + R, ... (all of them in one process).
     std::vector<long> mine;
     for (long k = comm.rank(); k < s.count; k += comm.size())

@@ -602,6 +602,7 @@ class Builder {
         }
         c.restitution = grid(Reader(root_["restitution"].as_table(), "restitution"));
         check(c);
+        note_unused(c);
         return c;
     }
 
@@ -761,6 +762,45 @@ class Builder {
             add(key, fmt::format("{}: required for {} but missing (must be {})", key, why, expectation(*s)),
                 at);
         }
+    }
+
+    // What a collision model reads of its table (case_schema.cpp's collision keys).
+    static bool model_uses(CollisionModel m, std::string_view key) {
+        switch (m) {
+        case CollisionModel::constant:
+            return key == "alpha" || key == "beta";
+        case CollisionModel::coulomb:
+            return key == "alpha" || key == "beta0" || key == "friction";
+        case CollisionModel::viscoelastic:
+            return key == "beta" || key == "direct";
+        case CollisionModel::brilliantov:
+            return key == "direct";
+        }
+        return true;
+    }
+
+    // Keys and tables the run will not read: kept in the case (a --set may switch the model or the
+    // run kind), reported as warnings (CaseConfig::unused).
+    void note_unused(CaseConfig& c) const {
+        const auto table_keys = [&](const toml::table* t, const CollisionConfig& cc, const std::string& prefix) {
+            if (t == nullptr)
+                return;
+            // (direct, a defaulted flag that emit_case always writes, is left out: a resumed run
+            // parses the emitted case and must report exactly what the first one did)
+            for (const char* k : {"alpha", "beta", "beta0", "friction"})
+                if (t->contains(k) && !model_uses(cc.model, k))
+                    c.unused.push_back(fmt::format("{}.{} is not used by {}.model = \"{}\"", prefix, k, prefix,
+                                                   name(cc.model)));
+        };
+        table_keys(root_["collision"].as_table(), c.collision, "collision");
+        if (const toml::array* a = root_["pair"].as_array())
+            for (std::size_t i = 0; i < a->size() && i < c.pairs.size(); ++i)
+                table_keys(a->get(i)->as_table(), c.pairs[i].collision, fmt::format("pair.{}", i));
+        if (root_["shear"].as_table() != nullptr && c.run.kind != RunKind::shear)
+            c.unused.push_back(fmt::format("[shear] is not used by run.kind = \"{}\"", name(c.run.kind)));
+        if (use_ == CaseUse::run && material_users_.empty() && root_["material"].as_table() != nullptr)
+            c.unused.push_back("[material] is not used: no species pair has model = \"viscoelastic\" or "
+                               "\"brilliantov\"");
     }
 
     void check(const CaseConfig& c) {

@@ -516,3 +516,30 @@ TEST(RunCli, FewGrainsWithDenseRowsRun) {
 
 } // namespace
 } // namespace roughgas
+
+namespace roughgas {
+namespace {
+
+// Keys and tables the run will not use are kept but reported: on stderr (check and run) and in the
+// CSV header; a case without them reports nothing.
+TEST(RunCli, WarnsOfKeysAndTablesTheRunDoesNotUse) {
+    const test::ScratchDir dir;
+    const std::string base = "[run]\nparticles = 2000\nend = 1.0\n\n[[species]]\nmass = 1.0\nradius = 0.5\n\n"
+                             "[collision]\nmodel = \"constant\"\nalpha = 0.9\nbeta = 0.4\n";
+    const fs::path f = dir.write("unused.toml", base + "beta0 = 0.3\n\n[shear]\nrate = 1.0\n");
+    const test::CommandResult c = test::run_roughgas("check '" + f.string() + "'", dir);
+    EXPECT_EQ(c.status, 0) << c.err;
+    EXPECT_NE(c.err.find("warning: collision.beta0 is not used by collision.model = \"constant\""), std::string::npos)
+        << c.err;
+    EXPECT_NE(c.err.find("warning: [shear] is not used by run.kind = \"cooling\""), std::string::npos) << c.err;
+    const test::CommandResult r =
+        test::run_roughgas("run '" + f.string() + "' --quiet --out '" + (dir / "out").string() + "'", dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(test::read_file(dir / "out" / "moments.csv").find("# warning: [shear] is not used"), std::string::npos);
+    const fs::path g = dir.write("clean.toml", base);
+    const test::CommandResult k = test::run_roughgas("check '" + g.string() + "'", dir);
+    EXPECT_EQ(k.err.find("warning"), std::string::npos) << k.err;
+}
+
+} // namespace
+} // namespace roughgas

@@ -197,6 +197,9 @@ struct CaseConfig {
     std::optional<ShearConfig> shear; // present iff [shear] was given (required for kind = shear)
     std::optional<DomainConfig> domain; // present iff [domain] was given: a spatially resolved run
     std::optional<InitialConfig> initial; // present iff [initial] was given
+    // Keys and tables given but not used by the chosen models or run kind (kept, not refused: a user
+    // may switch the model or kind with --set and back); commands print them as warnings.
+    std::vector<std::string> unused;
     RestitutionGridConfig restitution;
     friend bool operator==(const CaseConfig&, const CaseConfig&) = default;
 };
