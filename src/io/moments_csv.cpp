@@ -42,6 +42,14 @@ MomentsTable::MomentsTable(const RunSpec& spec) : solver_(dsmc_columns(spec)), r
                 columns_.push_back({"T_rot_theory." + s.name, "energy"});
                 columns_.push_back({"theta_theory." + s.name, "-"});
             }
+            // Beside the measured ratios: every species pair A before B, as in the solver's columns.
+            for (std::size_t a = 0; a < spec.species.size(); ++a)
+                for (std::size_t b = a + 1; b < spec.species.size(); ++b) {
+                    const std::string& A = spec.species[a].name;
+                    const std::string& B = spec.species[b].name;
+                    columns_.push_back({"T_tr." + A + "/T_tr." + B + "_theory", "-"});
+                    columns_.push_back({"T_rot." + A + "/T_rot." + B + "_theory", "-"});
+                }
         }
     }
 }
@@ -112,6 +120,11 @@ std::vector<double> MomentsTable::combine(std::span<const std::span<const double
                 out.push_back(T.T_rot[s]);
                 out.push_back(T.T_rot[s] / T.T_tr[s]);
             }
+            for (std::size_t a = 0; a < th.species_count(); ++a)
+                for (std::size_t b = a + 1; b < th.species_count(); ++b) {
+                    out.push_back(T.T_tr[a] / T.T_tr[b]);
+                    out.push_back(T.T_rot[a] / T.T_rot[b]);
+                }
         }
     }
     return out;
@@ -177,6 +190,10 @@ std::string moments_column_meaning(const std::string& name) {
         return moments_column_meaning(x).empty()
                    ? ""
                    : "standard error of the mean of " + x + " over the replicas";
+    }
+    if (name.ends_with("_theory") && name.find('/') != std::string::npos) {
+        const std::string m = moments_column_meaning(name.substr(0, name.size() - 7));
+        return m.empty() ? "" : m + ", in the Maxwellian approximation at t (constant alpha, beta)";
     }
     if (const std::size_t slash = name.find('/'); slash != std::string::npos) {
         const auto [num, a] = split(name.substr(0, slash));

@@ -147,7 +147,8 @@ std::vector<std::string> steady_monitored(const std::vector<std::string>& names,
         if (n.size() > 4 && n.compare(n.size() - 4, 4, "_err") == 0)
             continue;
         const std::string base = n.substr(0, n.find('.'));
-        const bool ratio = n.find('/') != std::string::npos && (base == "T_tr" || base == "T_rot");
+        const bool ratio = n.find('/') != std::string::npos && (base == "T_tr" || base == "T_rot") &&
+                           !n.ends_with("_theory"); // the measured ratios, not the theory's
         const bool scale_free = n == "theta" || n == "a20" || n == "a02" || n == "a11" ||
                                 (base == "theta" && n != "theta" && n.find("_theory") == std::string::npos &&
                                  n.find('/') == std::string::npos) ||

@@ -110,3 +110,32 @@ TEST(ScaledCli, SpeedDependentRestitutionHasNoScaledState) {
 
 } // namespace
 } // namespace roughgas
+
+namespace roughgas {
+namespace {
+
+// A mixture with constant restitution carries the theory's temperature ratios beside the measured
+// ones: the ratio of the theory's species temperatures in every row, and not among the columns the
+// scaled-state detector watches (it is not a measurement).
+TEST(ScaledCli, MixtureRatiosHaveTheirTheoryColumns) {
+    const test::ScratchDir dir;
+    const std::string mix = std::string(ROUGHGAS_SOURCE_DIR) + "/cases/hcs_mixture.toml";
+    const test::CommandResult r = test::run_roughgas(
+        "run '" + mix + "' --quiet --set run.particles=2000 --set run.end=5 --out '" + (dir / "mix").string() + "'",
+        dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto m = test::read_csv(dir / "mix" / "moments.csv");
+    const std::vector<double>& ratio = m.at("T_tr.small/T_tr.large_theory");
+    const std::vector<double>& rot = m.at("T_rot.small/T_rot.large_theory");
+    for (std::size_t k = 0; k < ratio.size(); ++k) {
+        EXPECT_NEAR(ratio[k], m.at("T_tr_theory.small")[k] / m.at("T_tr_theory.large")[k], 1e-15 * ratio[k]) << k;
+        EXPECT_NEAR(rot[k], m.at("T_rot_theory.small")[k] / m.at("T_rot_theory.large")[k], 1e-15 * rot[k]) << k;
+    }
+    const std::string scaled = test::read_file(dir / "mix" / "scaled.csv");
+    const std::size_t note = scaled.find("drift criterion on");
+    ASSERT_NE(note, std::string::npos);
+    EXPECT_EQ(scaled.substr(note, scaled.find('\n', note) - note).find("_theory"), std::string::npos);
+}
+
+} // namespace
+} // namespace roughgas
