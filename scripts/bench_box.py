@@ -21,7 +21,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_common import commit, cpu_times, loadavg, machine, stolen_since  # noqa: E402
+from bench_common import cpu_times, loadavg, machine, measured_line  # noqa: E402
 
 DENSITY = 0.02          # sigma = 1: mean free path 1/(sqrt(2) pi n) = 11.254
 STEPS = 300
@@ -88,10 +88,8 @@ def main():
         rows.append(f"| {n:.0e} | {fmt(times['smooth, 1 thread'])} | {fmt(times['rough, 1 thread'])} | "
                     f"{fmt(times['smooth, 2 threads'])} | {ratio('rough, 1 thread', 'smooth, 1 thread')} | "
                     f"{ratio('smooth, 1 thread', 'smooth, 2 threads')} |")
-    print(f"Measured {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())} on {machine()}; commit "
-          f"{commit()[:12]}; {a.rounds} alternating rounds; wall ns per particle and step (whole runs: "
-          f"start, initial state, 300 steps, one row): median (min-max); load (1 min) {load0} before, "
-          f"{loadavg()} after; CPU time stolen by the hypervisor {stolen_since(steal0)}.\n")
+    print(measured_line(a.rounds, "wall ns per particle and step (whole runs: start, initial state, 300 "
+                                  "steps, one row): median (min-max)", load0, steal0))
     print("| N | smooth, 1 thread | rough, 1 thread | smooth, 2 threads | rough/smooth | 1 thread/2 threads |")
     print("|---|------------------|-----------------|-------------------|--------------|--------------------|")
     for r in rows:

@@ -99,6 +99,21 @@ def commit():
     return head + ("+changes" if dirty else "")
 
 
+def short_commit():
+    """commit() shortened to 12 hex digits, keeping its '+changes' mark."""
+    c = commit()
+    return c[:12] + ("+changes" if c.endswith("+changes") else "")
+
+
+def measured_line(rounds, what, load0, steal0):
+    """The line a load or box benchmark prints above its table: date, machine, commit, rounds, what
+    the figures are (`what`), the load before and after and the CPU time the hypervisor took since
+    cpu_times() returned steal0."""
+    return (f"Measured {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())} on {machine()}; commit "
+            f"{short_commit()}; {rounds} alternating rounds; {what}; load (1 min) {load0} before, {loadavg()} "
+            f"after; CPU time stolen by the hypervisor {stolen_since(steal0)}.\n")
+
+
 def benchmark_iterations(binary, flt, reps, out_json):
     """Runs the benchmarks of one filter in one call, `reps` randomly interleaved repetitions each, the
     JSON kept in out_json; returns {name: [the repetitions' result dicts]}, the name without its

@@ -29,7 +29,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_common import commit, cpu_times, loadavg, machine, rough_case, stolen_since  # noqa: E402
+from bench_common import cpu_times, loadavg, machine, measured_line, rough_case  # noqa: E402
 
 
 def write_case(out, name, n, end, every, replicas=1):
@@ -126,10 +126,7 @@ def main():
         rows.append(compare("8 replicas of N = 1e5: mpirun -np 1 vs -np 2, one thread per rank",
                             lambda: timed([mpi(1, "a")], env), lambda: timed([mpi(2, "b")], env),
                             a.rounds, "t_np1/t_np2"))
-    print(f"Measured {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())} on {machine()}; "
-          f"commit {commit()[:12]}; {a.rounds} alternating rounds, wall seconds: median (min-max); "
-          f"load (1 min) {load0} before, {loadavg()} after; CPU time stolen by the hypervisor "
-          f"{stolen_since(steal0)}.\n")
+    print(measured_line(a.rounds, "wall seconds: median (min-max)", load0, steal0))
     print("| comparison | side A | side B | ratio |")
     print("|------------|--------|--------|-------|")
     for r in rows:

@@ -48,7 +48,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_common import (BENCH_ENV, commit, cpu_times, loadavg, machine, pair_rate, single_rate,  # noqa: E402
+from bench_common import (BENCH_ENV, cpu_times, short_commit, loadavg, machine, pair_rate, single_rate,  # noqa: E402
                           stolen_since)
 
 BENCHMARKS = [f"{k}/1000000/{t}" for t in (1, 2) for k in ("RoughConstant", "SmoothConstant", "Brilliantov")] + [
@@ -199,7 +199,7 @@ def main():
     minutes = (datetime.datetime.now(datetime.timezone.utc) - start).total_seconds() / 60
     rng = np.random.default_rng(1)
 
-    print(f"Measured {start:%Y-%m-%d %H:%M} UTC ({minutes:.0f} min) on {machine()}; commit {commit()[:12]}; "
+    print(f"Measured {start:%Y-%m-%d %H:%M} UTC ({minutes:.0f} min) on {machine()}; commit {short_commit()}; "
           f"{a.processes} calls of slices_bench, {a.rounds} rounds of quarter-second slices each; load (1 min) "
           f"{l0:.2f} before, {loadavg():.2f} after; CPU time stolen by the hypervisor {stolen_since(t0)}; "
           f"OMP_WAIT_POLICY={BENCH_ENV['OMP_WAIT_POLICY']}.\n")

@@ -130,21 +130,6 @@ std::vector<std::string> Communicator::gather(std::string_view bytes) const {
     return out;
 }
 
-std::string Communicator::broadcast(std::string bytes) const {
-    if (size_ == 1)
-        return bytes;
-    long long n = static_cast<long long>(bytes.size());
-    MPI_Request r;
-    check(MPI_Ibcast(&n, 1, MPI_LONG_LONG, 0, MPI_COMM_WORLD, &r), "MPI_Ibcast");
-    wait(r, "MPI_Ibcast");
-    if (n > std::numeric_limits<int>::max())
-        throw std::runtime_error("Communicator::broadcast: more than 2 GiB");
-    bytes.resize(static_cast<std::size_t>(n));
-    check(MPI_Ibcast(bytes.data(), static_cast<int>(n), MPI_BYTE, 0, MPI_COMM_WORLD, &r), "MPI_Ibcast");
-    wait(r, "MPI_Ibcast");
-    return bytes;
-}
-
 long long Communicator::max(long long value) const {
     if (size_ == 1)
         return value;
@@ -174,7 +159,6 @@ Communicator::Communicator(const Launch& launch) {
 Communicator::~Communicator() = default;
 
 std::vector<std::string> Communicator::gather(std::string_view bytes) const { return {std::string(bytes)}; }
-std::string Communicator::broadcast(std::string bytes) const { return bytes; }
 long long Communicator::max(long long value) const { return value; }
 void Communicator::abort(int status) const { std::_Exit(status); }
 

@@ -47,8 +47,6 @@ class Communicator {
 
     // Every rank's bytes, in rank order, on rank 0; an empty vector on the others.
     std::vector<std::string> gather(std::string_view bytes) const;
-    // Rank 0's bytes on every rank.
-    std::string broadcast(std::string bytes) const;
     // The largest of the ranks' values, on every rank.
     long long max(long long value) const;
 
