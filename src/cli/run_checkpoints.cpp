@@ -49,7 +49,7 @@ ReplicaCheckpoint read_replica(const fs::path& file, std::uint64_t r, const Chec
 // not fit would otherwise fail deep inside the CSV writer.
 void check_shape(const fs::path& file, const ReplicaCheckpoint& c, const RunSpec& spec) {
     const std::size_t rows = std::max<std::size_t>(1, spec.output_times.size()) + 1; // t = 0 first
-    const std::size_t columns = dsmc_columns(spec).size();
+    const std::size_t columns = replica_row_columns(spec).size();
     const std::size_t sets = spec.histogram_times.size();
     const bool finished = c.state.empty();
     if (c.rows.size() > rows || (finished && c.rows.size() != rows) || c.rows.empty())

@@ -70,6 +70,7 @@ constexpr const char* output_file = "moments.csv";
 constexpr const char* histograms_file = "histograms.csv";
 constexpr const char* steady_file = "steady.csv";
 constexpr const char* scaled_file = "scaled.csv";
+constexpr const char* walls_file = "walls.csv";
 
 struct RunOptions {
     std::string case_file;
@@ -118,7 +119,7 @@ std::pair<std::uint64_t, std::uint64_t> replica_range(const std::string& text, s
 
 // Never overwrite earlier results by accident: that is an input error, reported before any work.
 // A checkpoint of an earlier run counts too: it is continued with --resume, or replaced with --force.
-void check_output_dir(const fs::path& dir, bool force, bool histograms, bool shear) {
+void check_output_dir(const fs::path& dir, bool force, bool histograms, bool shear, bool walls) {
     if (fs::exists(dir) && !fs::is_directory(dir))
         throw InputError(dir.string(), "--out", "--out " + dir.string() + ": exists and is not a directory");
     if (force)
@@ -129,9 +130,9 @@ void check_output_dir(const fs::path& dir, bool force, bool histograms, bool she
                          fmt::format("--out {}: {} exists (continue that run with --resume {}, or start "
                                      "over with --force)",
                                      dir.string(), checkpoint_dir(dir).string(), dir.string()));
-    for (const char* file : {output_file, histograms_file, steady_file, scaled_file}) {
+    for (const char* file : {output_file, histograms_file, steady_file, scaled_file, walls_file}) {
         if ((file == histograms_file && !histograms) || (file == steady_file && !shear) ||
-            (file == scaled_file && shear))
+            (file == scaled_file && shear) || (file == walls_file && !walls))
             continue;
         if (fs::exists(dir / file))
             throw InputError(
@@ -167,7 +168,9 @@ RunSetup new_run(const RunOptions& o, bool root) {
     s.dir = o.out;
     if (root) {
         s.lock.lock_if_exists(s.dir); // before its files are checked: another run may be writing them
-        check_output_dir(s.dir, o.force, s.cfg.run.histogram_every > 0, s.cfg.run.kind == RunKind::shear);
+        check_output_dir(s.dir, o.force, s.cfg.run.histogram_every > 0, s.cfg.run.kind == RunKind::shear,
+                         s.cfg.domain && std::find(s.cfg.domain->boundary.begin(), s.cfg.domain->boundary.end(),
+                                                   Boundary::walls) != s.cfg.domain->boundary.end());
     }
     s.manifest.run = {roughgas_version(),
                       o.case_file,
@@ -297,14 +300,26 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         double edge = 0;
         for (int a = 0; a < 3; ++a)
             edge = std::max(edge, d.size[a] / d.cells[a]);
+        std::string walled; // "y", "x and z", ...
+        for (int a = 0; a < 3; ++a)
+            if (d.walled(a))
+                walled += std::string(walled.empty() ? "" : " and ") + "xyz"[a];
+        const std::string kind =
+            walled.empty() ? std::string("periodic box")
+                           : fmt::format("box with walls along {} (lower: {}, upper: {})", walled,
+                                         wall_kind_names[static_cast<std::size_t>(d.wall_lower.kind)],
+                                         wall_kind_names[static_cast<std::size_t>(d.wall_upper.kind)]);
+        const std::string gravity =
+            d.has_gravity() ? fmt::format("; gravity [{:.6g}, {:.6g}, {:.6g}]", d.gravity[0], d.gravity[1], d.gravity[2])
+                            : std::string();
         prov.notes.push_back(fmt::format(
-            "periodic box {:.6g} x {:.6g} x {:.6g} = {:.4g} x {:.4g} x {:.4g} mean free paths (lambda = {:.6g}, the "
+            "{} {:.6g} x {:.6g} x {:.6g} = {:.4g} x {:.4g} x {:.4g} mean free paths (lambda = {:.6g}, the "
             "largest diameter's), {} x {} x {} collision cells (edge up to {:.3g} lambda), {:.4g} grains per cell; "
-            "steps of {:.4g} mean free times; the columns are averages over the box",
-            d.size[0], d.size[1], d.size[2], d.size[0] / lambda, d.size[1] / lambda, d.size[2] / lambda, lambda,
+            "steps of {:.4g} mean free times{}; the columns are averages over the box",
+            kind, d.size[0], d.size[1], d.size[2], d.size[0] / lambda, d.size[1] / lambda, d.size[2] / lambda, lambda,
             d.cells[0], d.cells[1], d.cells[2], edge / lambda,
             static_cast<double>(spec.particles) / (static_cast<double>(d.cells[0]) * d.cells[1] * d.cells[2]),
-            d.time_step));
+            d.time_step, gravity));
         if (edge > 0.5 * lambda)
             prov.notes.push_back(fmt::format("warning: cells of up to {:.3g} mean free paths (more than 0.5): in "
                                              "gradients the viscosity comes out too large by about "
@@ -319,6 +334,17 @@ int run_run(const RunOptions& o, const Communicator& comm) {
                              "(observables/theory.hpp; Haff's law for smooth spheres)");
     prov.units = table.units();
     CsvWriter csv(table.names(), prov);
+    std::optional<CsvWriter> wcsv; // walls.csv
+    if (!table.wall_table_columns().empty()) {
+        CsvProvenance wprov = prov;
+        wprov.notes = {"per wall, over the interval since the previous row (physical grains: each simulated one "
+                       "stands for density x volume / particles): hits per area and time; P_ia, the column a of "
+                       "the pressure tensor at a wall normal to a (the +a flux of momentum component i); q_a, "
+                       "the +a flux of kinetic energy (translational and rotational)",
+                       prov.notes[1]};
+        wprov.units = column_units(table.wall_table_columns());
+        wcsv.emplace(column_names(table.wall_table_columns()), wprov);
+    }
     std::optional<HistogramsTable> htable;
     std::optional<CsvWriter> hcsv;
     if (!spec.histogram_times.empty()) {
@@ -415,10 +441,14 @@ int run_run(const RunOptions& o, const Communicator& comm) {
                 spans.emplace_back(r[combined]);
             table_rows.push_back(table.combine(spans));
             csv.add_row(table_rows.back());
+            if (wcsv)
+                wcsv->add_row(table.combine_walls(spans));
         }
         const auto t = std::chrono::steady_clock::now();
         if (csv.rows() > on_disk && (now || t - last_write >= 10 * write_cost)) {
             csv.write(path);
+            if (wcsv)
+                wcsv->write(dir / walls_file);
             on_disk = csv.rows();
             last_write = std::chrono::steady_clock::now();
             write_cost = last_write - t;
@@ -576,8 +606,11 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         // Stopped by a signal: the running replicas saved their states; the finished ones save their
         // rows now, so that a resume runs neither again (not-started ones start afresh).
         checkpoints.write_manifest_once();
-        if (on_disk == 0 && !partial)
+        if (on_disk == 0 && !partial) {
             csv.write(path); // the header, even when no row is complete yet: the run's file exists
+            if (wcsv)
+                wcsv->write(dir / walls_file);
+        }
         for (int r = from; r < to; ++r)
             if (finished[static_cast<std::size_t>(r)] && !final_saved[static_cast<std::size_t>(r)])
                 save_replica(r, {});

@@ -25,12 +25,33 @@
 namespace roughgas::detail {
 namespace {
 
-template <class Policy>
-ReplicaEnd run_box(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
+// The walls.csv columns (wall_columns, dsmc/run.hpp) from what the grains gave the walls between
+// two rows, `dt` apart: each simulated grain stands for F = n V / N physical ones, a wall of axis a
+// has the area V / L_a.
+void append_wall_columns(std::vector<double>& row, const DomainSpec& d, const WallFluxes& now,
+                         const WallFluxes& before, double density, double N, double dt) {
+    for (int a = 0; a < 3; ++a) {
+        if (!d.walled(a))
+            continue;
+        const double per_area_time = density * d.size[static_cast<std::size_t>(a)] / (N * dt); // F/(A dt)
+        for (int upper = 0; upper < 2; ++upper) {
+            const auto k = static_cast<std::size_t>(2 * a + upper);
+            const double sense = upper ? 1.0 : -1.0; // the +a flux: into the upper wall, out of the lower one
+            const Vec3 p = now[k].momentum - before[k].momentum;
+            row.push_back((now[k].hits - before[k].hits) * per_area_time);
+            for (double c : {p.x, p.y, p.z})
+                row.push_back(sense * c * per_area_time);
+            row.push_back(sense * (now[k].energy - before[k].energy) * per_area_time);
+        }
+    }
+}
+
+template <class Policy, bool General>
+ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
                    int replica, const ReplicaIo& io) {
     const auto wall0 = std::chrono::steady_clock::now();
     const DomainSpec& domain = *spec.domain;
-    SpatialEngine<Policy> engine(domain, blocks, std::move(policies), spec.density, spec.seed,
+    SpatialEngine<Policy, General> engine(domain, blocks, std::move(policies), spec.density, spec.seed,
                                  static_cast<std::uint64_t>(replica), std::max(1, spec.threads));
     const double N = static_cast<double>(engine.particles());
     const std::size_t S = blocks.size();
@@ -39,9 +60,10 @@ ReplicaEnd run_box(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks,
         slices[s] = {blocks[s].offset, blocks[s].count, blocks[s].grain.mass, blocks[s].moment_of_inertia()};
     const std::vector<PairType>& types = engine.pair_types();
     const bool clamp_column = has_brilliantov(spec);
-    const std::size_t columns = dsmc_columns(spec).size();
-    const std::string kernel = std::string("box of ") + std::to_string(engine.cells()) + " cells, " +
-                               std::string(Policy::name);
+    const std::size_t columns = replica_row_columns(spec).size();
+    const std::string kernel = std::string("box of ") + std::to_string(engine.cells()) + " cells" +
+                               (domain.has_walls() ? ", walls" : "") + (domain.has_gravity() ? ", gravity" : "") +
+                               ", " + std::string(Policy::name);
 
     std::vector<double> outputs = spec.output_times;
     if (outputs.empty())
@@ -57,6 +79,7 @@ ReplicaEnd run_box(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks,
     const double every = ck ? ck->every : 0;
     double next_save = every;
     std::int64_t resumed_at = 0;
+    WallFluxes walls_prev{}; // the walls' tallies at the previous row
 
     const auto state = [&] {
         ByteWriter w;
@@ -67,6 +90,8 @@ ReplicaEnd run_box(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks,
         w.put(c_prev);
         tally.save(w);
         w.f64(next_save);
+        if (domain.has_walls())
+            save(w, walls_prev);
         return w.take();
     };
 
@@ -86,6 +111,9 @@ ReplicaEnd run_box(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks,
             if (domain.initial.mode != Perturbation::none)
                 for (double a : engine.wave_amplitudes())
                     row.push_back(a);
+            append_wall_columns(row, domain, engine.wall_fluxes(), walls_prev, spec.density, N,
+                                first ? std::numeric_limits<double>::quiet_NaN() : t - t_prev);
+            walls_prev = engine.wall_fluxes();
             if (row.size() != columns)
                 throw std::logic_error("run_replica: row and columns differ");
             t_prev = t;
@@ -109,6 +137,8 @@ ReplicaEnd run_box(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks,
             if (tally.per_type.size() != pairs)
                 throw ResumeError("the state has another number of species pairs");
             next_save = in.f64();
+            if (domain.has_walls())
+                load(in, walls_prev);
             if (in.remaining() != 0 || next > outputs.size())
                 throw ResumeError("the state does not fit the case");
         } catch (const ResumeError&) {
@@ -161,6 +191,15 @@ ReplicaEnd run_box(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks,
         s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     }
     return next < outputs.size() ? ReplicaEnd::stopped : ReplicaEnd::finished;
+}
+
+template <class Policy>
+ReplicaEnd run_box(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
+                   int replica, const ReplicaIo& io) {
+    // No wall code in the flight of a periodic box without gravity.
+    if (spec.domain->has_walls() || spec.domain->has_gravity())
+        return run_box_flight<Policy, true>(spec, blocks, std::move(policies), replica, io);
+    return run_box_flight<Policy, false>(spec, blocks, std::move(policies), replica, io);
 }
 
 } // namespace

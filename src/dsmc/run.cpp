@@ -70,6 +70,19 @@ void validate(const RunSpec& spec) {
         require(!spec.shear, "a spatially resolved run has no uniform shear flow (Lees-Edwards boundaries)");
         require(spec.kernel == CollisionKernel::hard_sphere, "a spatially resolved run collides hard spheres");
         require(spec.histogram_times.empty(), "a spatially resolved run writes no histograms");
+        for (double g : spec.domain->gravity)
+            require(std::isfinite(g), "gravity must be finite");
+        for (const WallSpec* w : {&spec.domain->wall_lower, &spec.domain->wall_upper}) {
+            require(w->kind != WallKind::diffuse || (w->temperature > 0 && std::isfinite(w->temperature)),
+                    "a diffuse wall's temperature must be > 0");
+            require(w->kind != WallKind::rough || (w->alpha > 0 && w->alpha <= 1 && std::abs(w->beta) <= 1),
+                    "a rough wall needs 0 < alpha <= 1 and -1 <= beta <= 1");
+            for (int a = 0; a < 3; ++a) {
+                require(std::isfinite(w->velocity[static_cast<std::size_t>(a)]), "wall velocities must be finite");
+                require(!spec.domain->walled(a) || w->velocity[static_cast<std::size_t>(a)] == 0,
+                        "a wall moves only along itself (no velocity along its normal)");
+            }
+        }
     }
     if (spec.shear) {
         require(std::isfinite(spec.shear->rate) && spec.shear->rate > 0, "shear rate must be > 0");
@@ -102,6 +115,32 @@ std::size_t memory_per_replica_fixed_bound(const RunSpec& spec) {
     // tallies (one per 64 cells: a pair count each, and the unit's bookkeeping).
     const double per_cell = 4.0 * static_cast<double>(S + 1) + 4.0 * 64 + (8.0 * spec.pairs.size() + 64) / 64;
     return static_cast<std::size_t>(cells * per_cell);
+}
+
+std::vector<Column> wall_columns(const RunSpec& spec) {
+    std::vector<Column> c;
+    if (!spec.domain)
+        return c;
+    for (int a = 0; a < 3; ++a) {
+        if (!spec.domain->walled(a))
+            continue;
+        const char axis = "xyz"[a];
+        for (const char* side : {"lower", "upper"}) {
+            const std::string w = std::string(1, axis) + "_" + side + ".";
+            c.push_back({w + "hits", "1/(length^2*time)"});
+            for (const char i : {'x', 'y', 'z'})
+                c.push_back({w + "P_" + i + axis, "energy/volume"});
+            c.push_back({w + "q_" + axis, "energy/(length^2*time)"});
+        }
+    }
+    return c;
+}
+
+std::vector<Column> replica_row_columns(const RunSpec& spec) {
+    std::vector<Column> c = dsmc_columns(spec);
+    for (Column& w : wall_columns(spec))
+        c.push_back(std::move(w));
+    return c;
 }
 
 std::vector<Column> dsmc_columns(const RunSpec& spec) {
@@ -159,7 +198,12 @@ ReplicaEnd run_replica(const RunSpec& spec, const RestitutionTables& tables, int
         policies.push_back(make_policy(spec, tables, k, types[k]));
     // In a mixture with a rough pair, smooth pairs take their rough form (beta = -1), so that e.g.
     // constant smooth and constant rough pairs share one policy type and need no per-collision variant.
-    if (std::any_of(policies.begin(), policies.end(), [](const AnyPolicy& p) { return needs_rotation(p); }))
+    // A rough wall turns the spins of grains smooth among themselves: they need their rotation too.
+    const auto rough_wall = [&](const WallSpec& w) { return w.kind == WallKind::rough && w.beta != -1; };
+    const bool spun_by_walls = spec.domain && spec.domain->has_walls() &&
+                               (rough_wall(spec.domain->wall_lower) || rough_wall(spec.domain->wall_upper));
+    if (spun_by_walls ||
+        std::any_of(policies.begin(), policies.end(), [](const AnyPolicy& p) { return needs_rotation(p); }))
         for (AnyPolicy& p : policies)
             p = as_rough(p);
 

@@ -587,10 +587,22 @@ class Builder {
             for (std::size_t i = 0; i < 3; ++i)
                 d.boundary[i] = static_cast<Boundary>(
                     std::find(boundary_names.begin(), boundary_names.end(), b[i]) - boundary_names.begin());
+            d.gravity = r.real3("gravity");
             d.time_step = r.real("time_step");
             d.allow_coarse = r.boolean("allow_coarse");
             c.domain = d;
         }
+        for (const char* side : {"wall_lower", "wall_upper"})
+            if (const toml::table* t = root_[side].as_table()) {
+                const Reader r(t, side);
+                WallConfig w;
+                w.kind = r.choice<WallKind>("kind", wall_kind_names);
+                w.temperature = r.opt_real("temperature");
+                w.velocity = r.real3("velocity");
+                w.alpha = r.opt_real("alpha");
+                w.beta = r.opt_real("beta");
+                (std::string_view(side) == "wall_lower" ? c.wall_lower : c.wall_upper) = w;
+            }
         if (const toml::table* t = root_["initial"].as_table()) {
             const Reader r(t, "initial");
             InitialConfig w;
@@ -796,6 +808,22 @@ class Builder {
         if (const toml::array* a = root_["pair"].as_array())
             for (std::size_t i = 0; i < a->size() && i < c.pairs.size(); ++i)
                 table_keys(a->get(i)->as_table(), c.pairs[i].collision, fmt::format("pair.{}", i));
+        for (const auto& [side, w] : {std::pair{"wall_lower", &c.wall_lower}, std::pair{"wall_upper", &c.wall_upper}}) {
+            if (!*w)
+                continue;
+            if (!c.domain || !c.domain->has_walls()) {
+                c.unused.push_back(fmt::format("[{}] is not used: no axis of domain.boundary has \"walls\"", side));
+                continue;
+            }
+            const toml::table* t = root_[side].as_table();
+            for (const char* k : {"alpha", "beta"})
+                if (t->contains(k) && (*w)->kind != WallKind::rough)
+                    c.unused.push_back(fmt::format("{}.{} is not used by {}.kind = \"{}\"", side, k, side,
+                                                   name((*w)->kind)));
+            if (t->contains("temperature") && (*w)->kind != WallKind::diffuse)
+                c.unused.push_back(fmt::format("{}.temperature is not used by {}.kind = \"{}\"", side, side,
+                                               name((*w)->kind)));
+        }
         if (root_["shear"].as_table() != nullptr && c.run.kind != RunKind::shear)
             c.unused.push_back(fmt::format("[shear] is not used by run.kind = \"{}\"", name(c.run.kind)));
         if (use_ == CaseUse::run && material_users_.empty() && root_["material"].as_table() != nullptr)
@@ -862,6 +890,26 @@ class Builder {
         if (cells > 1e8)
             add("domain.cells", fmt::format("domain.cells = [{}, {}, {}]: {:.3g} cells, at most 1e8", d.cells[0],
                                             d.cells[1], d.cells[2], cells));
+        if (d.has_walls()) {
+            for (const auto& [side, w] : {std::pair{"wall_lower", &c.wall_lower}, std::pair{"wall_upper", &c.wall_upper}}) {
+                if (!*w) {
+                    add(side, fmt::format("domain.boundary has \"walls\" but [{}] is missing: give the wall at "
+                                          "{} of each walled axis (kind = \"diffuse\", \"specular\" or \"rough\")",
+                                          side, std::string_view(side) == "wall_lower" ? "0" : "L"));
+                    continue;
+                }
+                const WallConfig& wc = **w;
+                if (wc.kind == WallKind::diffuse)
+                    require(wc.temperature.has_value(), std::string(side) + ".temperature",
+                            std::string(side) + ".kind = \"diffuse\"", side);
+                for (std::size_t a = 0; a < 3; ++a)
+                    if (d.boundary[a] == Boundary::walls && wc.velocity[a] != 0)
+                        add(std::string(side) + ".velocity",
+                            fmt::format("{}.velocity = [{}, {}, {}]: a wall of axis {} moves along itself only "
+                                        "(component {} must be 0)",
+                                        side, wc.velocity[0], wc.velocity[1], wc.velocity[2], "xyz"[a], "xyz"[a]));
+            }
+        }
         double lambda = mean_free_path(c);
         // A density wave's crest is denser by 1 + |A|: its mean free path shorter by that.
         if (c.initial && c.initial->mode == Perturbation::density)
@@ -1206,8 +1254,20 @@ std::string emit_case(const CaseConfig& c) {
         e.put("boundary", std::array<std::string, 3>{std::string(name(c.domain->boundary[0])),
                                                       std::string(name(c.domain->boundary[1])),
                                                       std::string(name(c.domain->boundary[2]))});
+        e.put("gravity", c.domain->gravity);
         e.put("time_step", c.domain->time_step);
         e.put("allow_coarse", c.domain->allow_coarse);
+    }
+    for (const auto& [side, w] : {std::pair{"[wall_lower]", &c.wall_lower}, std::pair{"[wall_upper]", &c.wall_upper}}) {
+        if (!*w)
+            continue;
+        e.header(side);
+        e.put("kind", name((*w)->kind));
+        if ((*w)->temperature)
+            e.put("temperature", *(*w)->temperature);
+        e.put("velocity", (*w)->velocity);
+        e.put("alpha", (*w)->alpha);
+        e.put("beta", (*w)->beta);
     }
     e.header("[restitution]");
     e.put("g_n_min", c.restitution.g_n_min);

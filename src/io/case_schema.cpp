@@ -307,8 +307,13 @@ std::vector<Key> keys() {
                  "path unless domain.allow_coarse = true"),
         Key("domain.boundary", T::string3)
             .fallback(std::string("periodic"))
-            .one_of(std::array<std::string_view, 1>{"periodic"})
-            .doc("the boundary of each axis: periodic"),
+            .one_of(boundary_names)
+            .doc("the boundary of each axis: periodic, or walls (two flat walls, at 0 and at L, described "
+                 "in [wall_lower] and [wall_upper])"),
+        Key("domain.gravity", T::real3)
+            .unit("length/time^2")
+            .when("[0, 0, 0]")
+            .doc("uniform acceleration [g_x, g_y, g_z] of the free flight (v += g dt, x += v dt + g dt^2/2)"),
         Key("domain.time_step", T::real)
             .unit("mean free times")
             .fallback(0.2)
@@ -370,6 +375,43 @@ std::vector<Key> keys() {
             .doc("spacing of both grids: log (geometric) or linear"),
     };
     k.insert(k.end(), rest.begin(), rest.end());
+    // [wall_lower], [wall_upper]: after [initial]
+    std::vector<Key> walls;
+    for (const std::string side : {"wall_lower", "wall_upper"}) {
+        const std::string where = side == "wall_lower" ? "at 0" : "at L";
+        walls.push_back(Key(side + ".kind", T::string)
+                            .fallback(std::string("diffuse"))
+                            .one_of(wall_kind_names)
+                            .doc("the wall " + where +
+                                 " of every walled axis: diffuse (re-emits grains from the flux-weighted "
+                                 "Maxwellian at its temperature and velocity, spins from the Maxwellian at its "
+                                 "temperature), specular (reverses the normal velocity), rough (the collision "
+                                 "rule with an infinitely massive flat partner, its alpha and beta)"));
+        walls.push_back(Key(side + ".temperature", T::real)
+                            .unit("energy")
+                            .when("required for kind = diffuse")
+                            .gt(0)
+                            .doc("the diffuse wall's temperature T_w (k_B = 1)"));
+        walls.push_back(Key(side + ".velocity", T::real3)
+                            .unit("length/time")
+                            .when("[0, 0, 0]")
+                            .doc("the wall's velocity U_w, along the wall (0 along a walled axis): a Couette "
+                                 "flow between walls moving apart; diffuse and rough walls"));
+        walls.push_back(Key(side + ".alpha", T::real)
+                            .fallback(1.0)
+                            .gt(0)
+                            .le(1)
+                            .doc("rough wall: normal restitution coefficient of a grain with the wall"));
+        walls.push_back(Key(side + ".beta", T::real)
+                            .fallback(-1.0)
+                            .ge(-1)
+                            .le(1)
+                            .doc("rough wall: tangential restitution coefficient (-1 smooth, +1 perfectly "
+                                 "rough); beta > -1 spins the grains, which then carry their rotation even "
+                                 "when smooth among themselves"));
+    }
+    const auto at = std::find_if(k.begin(), k.end(), [](const Key& key) { return key.spec().path == "restitution.g_n_min"; });
+    k.insert(at, walls.begin(), walls.end());
     return k;
 }
 
@@ -506,6 +548,10 @@ const std::vector<TableSpec>& case_tables() {
         {"domain", false, "optional",
          "a spatially resolved run: grains with positions in a box of collision cells (docs/model.md §8)"},
         {"initial", false, "optional (with [domain])", "a wave on the uniform start of a spatially resolved run"},
+        {"wall_lower", false, "required for domain.boundary with \"walls\"",
+         "the wall at coordinate 0 of every walled axis"},
+        {"wall_upper", false, "required for domain.boundary with \"walls\"",
+         "the wall at coordinate L of every walled axis"},
         {"restitution", false, "optional", "the grid that roughgas restitution tabulates"},
     };
     return tables;

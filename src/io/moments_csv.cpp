@@ -22,9 +22,18 @@ std::pair<std::string, std::string> split(const std::string& name) {
 
 } // namespace
 
-MomentsTable::MomentsTable(const RunSpec& spec) : solver_(dsmc_columns(spec)), replicas_(spec.replicas) {
+MomentsTable::MomentsTable(const RunSpec& spec)
+    : solver_(dsmc_columns(spec)), wall_solver_(wall_columns(spec)), replicas_(spec.replicas) {
     if (replicas_ < 1)
         throw std::invalid_argument("MomentsTable: replicas must be >= 1");
+    if (!wall_solver_.empty()) {
+        wall_columns_ = {solver_[0], solver_[1]}; // t, coll_per_particle
+        for (const Column& c : wall_solver_) {
+            wall_columns_.push_back(c);
+            if (replicas_ > 1)
+                wall_columns_.push_back({c.name + "_err", c.unit});
+        }
+    }
     for (const Column& c : solver_) {
         columns_.push_back(c);
         if (replicas_ > 1)
@@ -54,13 +63,17 @@ MomentsTable::MomentsTable(const RunSpec& spec) : solver_(dsmc_columns(spec)), r
     }
 }
 
+const Column& MomentsTable::row_column(std::size_t j) const {
+    return j < solver_.size() ? solver_[j] : wall_solver_[j - solver_.size()];
+}
+
 void MomentsTable::check(std::span<const double> row) const {
-    if (row.size() != solver_.size())
-        throw std::invalid_argument(
-            fmt::format("moments row has {} values for {} columns", row.size(), solver_.size()));
+    if (row.size() != solver_.size() + wall_solver_.size())
+        throw std::invalid_argument(fmt::format("replica row has {} values for {} columns", row.size(),
+                                                solver_.size() + wall_solver_.size()));
     std::map<std::string, double> value;
     for (std::size_t j = 0; j < row.size(); ++j)
-        value[solver_[j].name] = row[j];
+        value[row_column(j).name] = row[j];
     const auto zero = [&](const std::string& name) {
         const auto it = value.find(name);
         return it != value.end() && it->second == 0;
@@ -70,9 +83,9 @@ void MomentsTable::check(std::span<const double> row) const {
     for (std::size_t j = 0; j < row.size(); ++j) {
         if (std::isfinite(row[j]))
             continue;
-        const std::string& name = solver_[j].name;
+        const std::string& name = row_column(j).name;
         const auto [base, suffix] = split(name);
-        bool undefined = false;
+        bool undefined = j >= solver_.size() && first; // walls.csv: no interval yet
         if (base == "coll_rate" || base == "E_diss_rate")
             undefined = first;
         if (base == "theta" || base == "a20" || base == "a11")
@@ -88,6 +101,25 @@ void MomentsTable::check(std::span<const double> row) const {
                             value.count("coll_per_particle") ? value["coll_per_particle"] : 0.0));
         }
     }
+}
+
+std::vector<double> MomentsTable::combine_walls(std::span<const std::span<const double>> rows) const {
+    if (rows.size() != static_cast<std::size_t>(replicas_))
+        throw std::invalid_argument(
+            fmt::format("MomentsTable: {} replica rows for {} replicas", rows.size(), replicas_));
+    std::vector<double> out;
+    std::vector<double> x(rows.size());
+    const std::size_t n = solver_.size();
+    for (std::size_t j = 0; j < 2 + wall_solver_.size(); ++j) {
+        const std::size_t k = j < 2 ? j : n + j - 2;
+        for (std::size_t r = 0; r < rows.size(); ++r)
+            x[r] = rows[r][k];
+        const ReplicaMean m = replica_mean(x);
+        out.push_back(m.mean);
+        if (replicas_ > 1 && j >= 2)
+            out.push_back(m.error);
+    }
+    return out;
 }
 
 std::vector<double> MomentsTable::combine(std::span<const std::span<const double>> rows) {

@@ -55,6 +55,21 @@ RunSpec run_spec_from_case(const CaseConfig& cfg) {
         for (std::size_t i = 0; i < 3; ++i)
             d.cells[i] = static_cast<int>(cfg.domain->cells[i]);
         d.time_step = cfg.domain->time_step;
+        d.boundary = cfg.domain->boundary;
+        d.gravity = cfg.domain->gravity;
+        const auto wall = [](const std::optional<WallConfig>& w) {
+            WallSpec s;
+            if (w) {
+                s.kind = w->kind;
+                s.temperature = w->temperature.value_or(1.0);
+                s.velocity = w->velocity;
+                s.alpha = w->alpha.value_or(1.0);
+                s.beta = w->beta.value_or(-1.0);
+            }
+            return s;
+        };
+        d.wall_lower = wall(cfg.wall_lower);
+        d.wall_upper = wall(cfg.wall_upper);
         if (cfg.initial) {
             d.initial.mode = cfg.initial->mode;
             d.initial.amplitude = cfg.initial->amplitude;

@@ -102,7 +102,7 @@ TEST(SpatialEngine, ConservesMomentumAndEnergyAndKeepsGrainsInTheBox) {
     std::vector<SpeciesBlock> blocks = two_species(5000);
     const std::vector<PairType> types = make_pair_types(blocks);
     std::vector<AnyRoughPolicy> policies;
-    for (const PairType& t : types)
+    for (std::size_t k = 0; k < types.size(); ++k)
         policies.push_back(to_any_rough(AnyPolicy(make_rough_constant(1.0, 1.0))));
     SpatialEngine<AnyRoughPolicy> e(d, blocks, policies, 0.05, 7, 0, 2);
     const Vec3 p0 = momentum(e);

@@ -44,6 +44,16 @@ std::string box() {
            "[domain]\nsize = [40.0, 40.0, 40.0]\ncells = [8, 8, 8]\n";
 }
 
+// Between a diffuse wall at rest (below) and a rough one moving along x (above), under gravity: the
+// flight's random emission and the walls' tallies (walls.csv) in the checkpoint too.
+std::string box_walls() {
+    return test::replaced(box(), "cells = [8, 8, 8]\n",
+                        "cells = [8, 8, 8]\nboundary = [\"periodic\", \"walls\", \"periodic\"]\n"
+                        "gravity = [0.0, -0.01, 0.0]\n\n"
+                        "[wall_lower]\nkind = \"diffuse\"\ntemperature = 2.0\n\n"
+                        "[wall_upper]\nkind = \"rough\"\nvelocity = [0.5, 0.0, 0.0]\nalpha = 0.9\nbeta = 0.5\n");
+}
+
 std::string shear() {
     return "[run]\nkind = \"shear\"\nparticles = 10000\nend = 30.0\noutput_every = 1.0\nreplicas = 2\nseed = "
            "5\n\n"
@@ -68,7 +78,7 @@ void run_to_end(const std::string& args, const test::ScratchDir& dir) {
 }
 
 void expect_same_outputs(const fs::path& reference, const fs::path& out, const std::string& context) {
-    for (const char* f : {"moments.csv", "histograms.csv", "steady.csv"}) {
+    for (const char* f : {"moments.csv", "histograms.csv", "steady.csv", "walls.csv"}) {
         ASSERT_EQ(fs::exists(reference / f), fs::exists(out / f)) << f << ", " << context;
         if (!fs::exists(reference / f))
             continue;
@@ -150,7 +160,7 @@ INSTANTIATE_TEST_SUITE_P(
     E2e, KillAndResume,
     ::testing::Values(Scenario{"RoughCooling3Replicas", rough_cooling(20000, 40.0), "1.5"},
                       Scenario{"Shear", shear(), "1"}, Scenario{"RoughMixture", rough_mixture(), "2"},
-                      Scenario{"Box", box(), "2"}),
+                      Scenario{"Box", box(), "2"}, Scenario{"BoxWalls", box_walls(), "2"}),
     [](const ::testing::TestParamInfo<Scenario>& info) { return info.param.name; });
 
 // Every line after the '#' lines has as many cells as the header: a CSV that a reader takes as is.

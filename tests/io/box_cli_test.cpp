@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <string>
 
 namespace roughgas {
@@ -51,6 +52,9 @@ TEST(BoxCli, ThreadsAndReplicaRangesGiveTheSameBytes) {
 TEST(BoxCli, RefusesWhatTheBoxCannotRunBeforeAnyWork) {
     const test::ScratchDir dir;
     const std::string base = box_case();
+    const std::string walls = replaced(base, "cells = [5, 5, 5]", "cells = [5, 5, 5]\nboundary = [\"periodic\", \"walls\", \"periodic\"]") + "\n";
+    const std::string lower = "[wall_lower]\nkind = \"diffuse\"\ntemperature = 1.0\nvelocity = [0.0, 0.0, 0.3]\n";
+    const std::string upper = "[wall_upper]\nkind = \"rough\"\nalpha = 0.9\nbeta = 0.5\n";
     const struct {
         std::string text, key, says;
     } bad[] = {
@@ -70,6 +74,13 @@ TEST(BoxCli, RefusesWhatTheBoxCannotRunBeforeAnyWork) {
         {replaced(base, "particles = 4000", "particles = 4000000000000"), "run.particles", "GB"},
         {replaced(base, "seed = 4", "seed = 4\nkind = \"shear\"") + "\n[shear]\nrate = 1.0\n", "run.kind",
          "Lees-Edwards"},
+        {walls + "[wall_upper]\nkind = \"specular\"\n", "wall_lower", "[wall_lower] is missing"},
+        {walls + lower + "[wall_upper]\nkind = \"diffuse\"\n", "wall_upper.temperature",
+         "required for wall_upper.kind = \"diffuse\""},
+        {walls + replaced(lower, "[0.0, 0.0, 0.3]", "[0.0, 0.2, 0.3]") + upper, "wall_lower.velocity",
+         "moves along itself only"},
+        {walls + lower + replaced(upper, "alpha = 0.9", "alpha = 0.0"), "wall_upper.alpha", "in (0, 1]"},
+        {walls + lower + replaced(upper, "beta = 0.5", "beta = 1.5"), "wall_upper.beta", "in [-1, 1]"},
     };
     for (const auto& b : bad) {
         const fs::path f = dir.write("bad.toml", b.text);
@@ -85,6 +96,44 @@ TEST(BoxCli, RefusesWhatTheBoxCannotRunBeforeAnyWork) {
     const test::CommandResult r = test::run_roughgas("run " + q(f) + " --out " + q(dir / "coarse"), dir);
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.err.find("warning: cells of up to 2.22 mean free paths"), std::string::npos) << r.err;
+}
+
+// Elastic smooth grains between two diffuse walls at their temperature (normal to y): walls.csv has
+// a row per moments.csv row, the same bytes for one and two threads; averaged over the rows after
+// the first, each wall's pressure P_yy is n T_w and its hit rate n sqrt(T_w/(2 pi m)) (5 standard
+// errors of the row-to-row scatter), the header names the walls.
+TEST(BoxCli, WallsFileHasTheWallsPressureAndHitRate) {
+    const test::ScratchDir dir;
+    const std::string text =
+        replaced(replaced(replaced(box_case(20000, 1, 20.0), "alpha = 0.9\nbeta = 0.4", "alpha = 1.0\nbeta = -1.0"),
+                          "cells = [5, 5, 5]", "cells = [5, 5, 5]\nboundary = [\"periodic\", \"walls\", \"periodic\"]"),
+                 "output_spacing = \"log\"", "output_spacing = \"linear\"") +
+        "\n[wall_lower]\ntemperature = 1.0\n\n[wall_upper]\ntemperature = 1.0\n";
+    const fs::path f = dir.write("walls.toml", text);
+    const std::string run = "run " + q(f) + " --quiet --out ";
+    ASSERT_EQ(test::run_roughgas(run + q(dir / "t1") + " --threads 1", dir).status, 0);
+    const test::CommandResult r2 = test::run_roughgas(run + q(dir / "t2") + " --threads 2", dir);
+    ASSERT_EQ(r2.status, 0) << r2.err;
+    const std::string walls = test::read_file(dir / "t1" / "walls.csv");
+    EXPECT_EQ(test::read_file(dir / "t2" / "walls.csv"), walls);
+    EXPECT_NE(test::read_file(dir / "t1" / "moments.csv").find("walls along y"), std::string::npos);
+    const auto csv = test::read_csv(dir / "t1" / "walls.csv");
+    ASSERT_EQ(csv.at("t"), test::read_csv(dir / "t1" / "moments.csv").at("t"));
+    const double n = 0.02;
+    for (const char* wall : {"y_lower", "y_upper"}) {
+        for (const auto& [column, expected] :
+             {std::pair{std::string(wall) + ".P_yy", n}, std::pair{std::string(wall) + ".hits", n / std::sqrt(2 * std::numbers::pi)}}) {
+            const std::vector<double>& x = csv.at(column);
+            ASSERT_TRUE(std::isnan(x[0])) << column << " at t = 0: no interval yet";
+            double mean = 0, ss = 0;
+            const double K = static_cast<double>(x.size() - 1);
+            for (std::size_t k = 1; k < x.size(); ++k)
+                mean += x[k] / K;
+            for (std::size_t k = 1; k < x.size(); ++k)
+                ss += (x[k] - mean) * (x[k] - mean);
+            EXPECT_NEAR(mean, expected, 5 * std::sqrt(ss / (K * (K - 1)))) << column;
+        }
+    }
 }
 
 // The box of 4.4 mean free paths against the homogeneous gas (the same case without [domain]) at

@@ -36,6 +36,21 @@ using HistogramSink = std::function<void(const HistogramSet&)>;
 // beta_clamped: collisions so far whose model beta left [-1, 1] (restitution_policy.hpp, clamp_beta).
 std::vector<Column> dsmc_columns(const RunSpec& spec);
 
+// Columns of walls.csv after t and coll_per_particle (runs with walls; empty otherwise): per walled
+// axis a (x, y, z in order), its lower wall (at 0) then its upper wall (at L_a), each
+//   a_lower.hits            grains hitting the wall per area and time,
+//   a_lower.P_xa, P_ya, P_za  the column a of the pressure tensor at the wall: the flux of momentum
+//                            component i in the +a direction (at the lower wall minus, at the upper
+//                            wall plus the momentum the grains give the wall per area and time),
+//   a_lower.q_a             the energy flux in the +a direction (translational and rotational
+//                            kinetic energy; in the same sense),
+// over the interval since the previous row, for the physical grains (each simulated one standing
+// for n V / N); NaN in the row at t = 0.
+std::vector<Column> wall_columns(const RunSpec& spec);
+
+// What a replica's row holds (the RowSink's values): dsmc_columns, then wall_columns.
+std::vector<Column> replica_row_columns(const RunSpec& spec);
+
 // An upper bound of the memory one replica holds per grain while it runs (the particle store, the
 // engine's index and sort arrays, a row's scratch): what a command checks against the machine's
 // free memory before any work (core/available_memory.hpp).

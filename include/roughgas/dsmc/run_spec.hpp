@@ -57,12 +57,37 @@ struct InitialSpec {
     std::array<int, 3> wave{1, 0, 0};
 };
 
-// A spatially resolved run (dsmc/spatial_engine.hpp): a periodic box of collision cells.
+// The boundary of one axis of the box: periodic, or two flat walls (at 0 and at L).
+enum class Boundary { periodic, walls };
+
+// A flat wall (collision/wall_rule.hpp): the grain collides with an infinitely massive partner
+// moving at `velocity` (tangential to the wall) without spin.
+//   specular  the normal velocity reversed, nothing else changed;
+//   diffuse   re-emitted from the flux-weighted half-Maxwellian at (temperature, velocity), the spin
+//             from the Maxwellian at `temperature` (full accommodation);
+//   rough     the collision rule with the wall's alpha, beta.
+enum class WallKind { specular, diffuse, rough };
+struct WallSpec {
+    WallKind kind = WallKind::diffuse;
+    double temperature = 1;
+    std::array<double, 3> velocity{0, 0, 0};
+    double alpha = 1, beta = -1;
+};
+
+// A spatially resolved run (dsmc/spatial_engine.hpp): a box of collision cells.
 struct DomainSpec {
     std::array<double, 3> size{1, 1, 1}; // L_x, L_y, L_z (the case's length unit)
     std::array<int, 3> cells{1, 1, 1};   // collision cells along each axis
+    std::array<Boundary, 3> boundary{Boundary::periodic, Boundary::periodic, Boundary::periodic};
+    // The walls at coordinate 0 (lower) and L (upper) of every walled axis.
+    WallSpec wall_lower, wall_upper;
+    std::array<double, 3> gravity{0, 0, 0}; // uniform acceleration
     double time_step = 0.2;              // in mean free times of the current state
     InitialSpec initial;
+
+    bool walled(int axis) const { return boundary[static_cast<std::size_t>(axis)] == Boundary::walls; }
+    bool has_walls() const { return walled(0) || walled(1) || walled(2); }
+    bool has_gravity() const { return gravity[0] != 0 || gravity[1] != 0 || gravity[2] != 0; }
 };
 
 struct RunSpec {

@@ -1,9 +1,12 @@
 #pragma once
 // The DSMC of the spatially resolved gas (docs/model.md §8): the Boltzmann equation with its
 // streaming term, (d/dt + v.grad) f = J[f, f] (Brilliantov, Spahn, Hertzsch & Poeschel 1996,
-// eq. 40), for grains with positions in a periodic box, split into steps of length dt:
+// eq. 40), for grains with positions in a box, split into steps of length dt:
 //
-//   1. free flight: x += v dt (v and omega unchanged), wrapped into the box [0, L_x) x [0, L_y) x [0, L_z);
+//   1. free flight: x += v dt + g dt^2/2, v += g dt (omega unchanged), wrapped into [0, L_a) along a
+//      periodic axis; along a walled axis the grain meets the wall at 0 or L_a at the exact time of
+//      its parabola's crossing, collides with it (collision/wall_rule.hpp) and flies on for the rest
+//      of the step (any number of walls per step);
 //   2. the grains sorted by collision cell (a uniform grid of n_x x n_y x n_z cells; within each
 //      species, so that a species stays one contiguous range of the store and the observables'
 //      species slices apply unchanged);
@@ -30,10 +33,15 @@
 // replica, step, u) and has its own observer copy, merged in unit order: the results depend on
 // the cells per unit (fixed), never on the thread count. The flight runs over fixed chunks of
 // grains, the sort over chunks fixed by the grain and cell counts (sort_into_cells).
+//
+// Compiled twice: `General` = false for a periodic box without gravity (a flight that only adds and
+// wraps), true for walls or gravity (the exact crossing times, the walls' random emission from the
+// stream (seed, wall_emission, replica, step, chunk) and their momentum and energy tallies).
 #include "roughgas/collision/pair_constants.hpp"
 #include "roughgas/collision/record.hpp"
 #include "roughgas/collision/rule.hpp"
 #include "roughgas/collision/sampling.hpp"
+#include "roughgas/collision/wall_rule.hpp"
 #include "roughgas/core/bytes.hpp"
 #include "roughgas/core/rng.hpp"
 #include "roughgas/core/vec.hpp"
@@ -56,9 +64,45 @@
 
 namespace roughgas {
 
-template <class Policy> class SpatialEngine {
+// What the grains gave one wall since the start: hits, momentum (sum of m (v_before - v_after)) and
+// energy (translational and rotational kinetic energy lost by the grains).
+struct WallFlux {
+    double hits = 0;
+    Vec3 momentum{};
+    double energy = 0;
+    WallFlux& operator+=(const WallFlux& o) {
+        hits += o.hits;
+        momentum += o.momentum;
+        energy += o.energy;
+        return *this;
+    }
+};
+// Wall 2a is the lower wall of axis a (at 0, normal +e_a into the gas), wall 2a + 1 the upper one
+// (at L_a, normal -e_a).
+using WallFluxes = std::array<WallFlux, 6>;
+
+inline void save(ByteWriter& out, const WallFluxes& fluxes) {
+    for (const WallFlux& f : fluxes)
+        for (double c : {f.hits, f.momentum.x, f.momentum.y, f.momentum.z, f.energy})
+            out.f64(c);
+}
+inline void load(ByteReader& in, WallFluxes& fluxes) {
+    for (WallFlux& f : fluxes) {
+        f.hits = in.f64();
+        f.momentum.x = in.f64();
+        f.momentum.y = in.f64();
+        f.momentum.z = in.f64();
+        f.energy = in.f64();
+    }
+}
+
+template <class Policy, bool General = false> class SpatialEngine {
   public:
     static constexpr bool rough = Policy::needs_rotation;
+    // A grain that would meet a wall more often in one step (an inelastic grain coming to rest on
+    // a floor under gravity meets it infinitely often in a finite time) stays where the last wall
+    // left it for the rest of the step.
+    static constexpr int max_wall_hits_per_step = 64;
     // Cells per work unit of the collision phase: enough work per unit to amortise claiming it and
     // seeding its stream (a few hundred grains), small enough to balance two threads on small boxes.
     static constexpr std::size_t cells_per_unit = 64;
@@ -73,6 +117,16 @@ template <class Policy> class SpatialEngine {
           team_(std::make_unique<WorkerTeam>(std::max(1, threads))) {
         if (policies_.size() != types_.size())
             throw std::invalid_argument("SpatialEngine: one policy per species pair needed");
+        if (!General && (domain_.has_walls() || domain_.has_gravity()))
+            throw std::invalid_argument("SpatialEngine: walls and gravity need the General flight");
+        for (const SpeciesBlock& b : blocks_)
+            wall_pc_.push_back(wall_pair_constants(b.grain));
+        for (const WallSpec* w : {&domain_.wall_lower, &domain_.wall_upper}) {
+            if (w->kind == WallKind::rough && !rough && w->beta != -1)
+                throw std::invalid_argument("SpatialEngine: a rough wall (beta > -1) needs rough grains");
+            if (w->kind == WallKind::rough && !(w->alpha > 0 && w->alpha <= 1 && std::abs(w->beta) <= 1))
+                throw std::invalid_argument("SpatialEngine: a rough wall needs 0 < alpha <= 1, |beta| <= 1");
+        }
         for (int a = 0; a < 3; ++a)
             if (!(domain_.size[a] > 0) || domain_.cells[a] < 1)
                 throw std::invalid_argument("SpatialEngine: box sizes must be > 0 and cells >= 1");
@@ -138,13 +192,16 @@ template <class Policy> class SpatialEngine {
     // One step of length dt: flight, sort, collisions. `obs(record, pair_type)` sees every collision
     // (ForkableObserver of dsmc/engine.hpp: a copy per work unit, merged in unit order).
     template <class Observer> void step(double dt, Observer& obs) {
-        stream(dt);
+        if constexpr (General)
+            stream_general(dt);
+        else
+            stream(dt);
         sort_into_cells();
         const std::size_t units = (cells_ + cells_per_unit - 1) / cells_per_unit;
         std::vector<Observer> local(units, obs.fork());
         std::vector<std::int64_t> counts(units, 0);
         team_->for_each(units, [&](std::size_t u) {
-            CollisionRng rng = make_collision_stream(StreamKey{seed_, Stream::cell_collisions, replica_, steps_, u});
+            CollisionRng rng = make_collision_stream(StreamKey{seed_, Stream::cell_collisions, replica_, static_cast<std::uint64_t>(steps_), u});
             const std::size_t end = std::min(cells_, (u + 1) * cells_per_unit);
             for (std::size_t c = u * cells_per_unit; c < end; ++c)
                 counts[u] += collide_cell(c, dt, rng, local[u]);
@@ -164,9 +221,14 @@ template <class Policy> class SpatialEngine {
         std::vector<double> T_over_m(blocks_.size());
         for (std::size_t s = 0; s < blocks_.size(); ++s) {
             double sum = 0;
-            for (std::size_t i = blocks_[s].offset; i < blocks_[s].offset + blocks_[s].count; ++i)
+            Vec3 mean{};
+            for (std::size_t i = blocks_[s].offset; i < blocks_[s].offset + blocks_[s].count; ++i) {
                 sum += norm2(v_[i]);
-            T_over_m[s] = blocks_[s].count > 0 ? sum / (3.0 * static_cast<double>(blocks_[s].count)) : 0.0;
+                mean += v_[i];
+            }
+            const double n = static_cast<double>(blocks_[s].count);
+            // About the species' mean velocity (walls and gravity move the centre of mass).
+            T_over_m[s] = n > 0 ? std::max(0.0, sum / n - norm2((1.0 / n) * mean)) / 3.0 : 0.0;
         }
         return maxwellian_collision_frequency(types_, T_over_m, volume(), static_cast<double>(particles_));
     }
@@ -178,6 +240,8 @@ template <class Policy> class SpatialEngine {
     std::int64_t steps() const { return steps_; }
     std::size_t particles() const { return particles_; }
     std::size_t cells() const { return cells_; }
+    const WallFluxes& wall_fluxes() const { return wall_flux_; }
+    const DomainSpec& domain() const { return domain_; }
     const std::vector<SpeciesBlock>& species() const { return blocks_; }
     const std::vector<PairType>& pair_types() const { return types_; }
     const std::vector<Vec3>& positions() const { return x_; }
@@ -211,6 +275,8 @@ template <class Policy> class SpatialEngine {
         out.f64(t_);
         out.put(steps_);
         out.put(collisions_);
+        if (domain_.has_walls())
+            roughgas::save(out, wall_flux_);
     }
     void restore(ByteReader& in) {
         for (std::vector<Vec3>* a : {&x_, &v_, &w_}) {
@@ -225,6 +291,8 @@ template <class Policy> class SpatialEngine {
         t_ = in.f64();
         steps_ = in.get<std::int64_t>();
         collisions_ = in.get<std::int64_t>();
+        if (domain_.has_walls())
+            roughgas::load(in, wall_flux_);
         sort_into_cells();
     }
 
@@ -297,6 +365,141 @@ template <class Policy> class SpatialEngine {
                 }
             }
         });
+    }
+
+    static double& component(Vec3& q, int a) { return a == 0 ? q.x : a == 1 ? q.y : q.z; }
+    static double component(const Vec3& q, int a) { return a == 0 ? q.x : a == 1 ? q.y : q.z; }
+
+    // The earliest time in [0, limit) at which q(t) = q + v t + g t^2/2 leaves [0, L]: through 0
+    // with q'(t) < 0 or through L with q'(t) > 0 (so a grain just sent back from a wall, on it with
+    // its velocity pointing inwards, is not caught by the same wall at t = 0). `limit` if none;
+    // `upper` says which wall.
+    static double exit_time(double q, double v, double g, double L, double limit, bool& upper) {
+        double best = limit;
+        for (const bool up : {false, true}) {
+            const double c = q - (up ? L : 0.0);
+            const auto consider = [&](double t) {
+                const double speed = v + g * t;
+                if (t >= 0 && t < best && (up ? speed > 0 : speed < 0)) {
+                    best = t;
+                    upper = up;
+                }
+            };
+            if (g == 0) {
+                if (v != 0)
+                    consider(-c / v);
+                continue;
+            }
+            const double D = v * v - 2.0 * g * c;
+            if (D < 0)
+                continue;
+            // The roots of (g/2) t^2 + v t + c without cancellation: 2Q/g and c/Q.
+            const double Q = -0.5 * (v + std::copysign(std::sqrt(D), v));
+            if (Q == 0) {
+                consider(0.0);
+                continue;
+            }
+            consider(2.0 * Q / g);
+            consider(c / Q);
+        }
+        return best;
+    }
+
+    // The flight with walls or gravity (the header's step 1): chunks of one species' grains, each
+    // with its stream and wall tallies, merged in chunk order.
+    void stream_general(double dt) {
+        struct Chunk {
+            std::size_t species, first, last;
+        };
+        std::vector<Chunk> chunks;
+        const std::size_t chunk = 65536;
+        for (std::size_t s = 0; s < blocks_.size(); ++s)
+            for (std::size_t f = blocks_[s].offset; f < blocks_[s].offset + blocks_[s].count; f += chunk)
+                chunks.push_back({s, f, std::min(f + chunk, blocks_[s].offset + blocks_[s].count)});
+        std::vector<WallFluxes> flux(chunks.size());
+        team_->for_each(chunks.size(), [&](std::size_t u) {
+            CollisionRng rng = make_collision_stream(StreamKey{seed_, Stream::wall_emission, replica_, static_cast<std::uint64_t>(steps_), u});
+            for (std::size_t i = chunks[u].first; i < chunks[u].last; ++i)
+                fly(i, chunks[u].species, dt, rng, flux[u]);
+        });
+        for (const WallFluxes& f : flux)
+            for (std::size_t k = 0; k < 6; ++k)
+                wall_flux_[k] += f[k];
+    }
+
+    void fly(std::size_t i, std::size_t s, double dt, CollisionRng& rng, WallFluxes& flux) {
+        const Vec3 g{domain_.gravity[0], domain_.gravity[1], domain_.gravity[2]};
+        Vec3 x = x_[i], v = v_[i];
+        double rest = dt;
+        for (int hits = 0; hits < max_wall_hits_per_step; ++hits) {
+            double t = rest;
+            int wall = -1;
+            for (int a = 0; a < 3; ++a)
+                if (domain_.walled(a)) {
+                    bool upper = false;
+                    const double ta =
+                        exit_time(component(x, a), component(v, a), component(g, a), domain_.size[a], t, upper);
+                    if (ta < t) {
+                        t = ta;
+                        wall = 2 * a + (upper ? 1 : 0);
+                    }
+                }
+            x += t * v + (0.5 * t * t) * g;
+            v += t * g;
+            for (int a = 0; a < 3; ++a) {
+                const double L = domain_.size[a];
+                double& q = component(x, a);
+                if (domain_.walled(a)) {
+                    q = std::clamp(q, 0.0, L); // round-off of a crossing found just after the step
+                } else if (q < 0 || q >= L) {
+                    q -= L * std::floor(q / L);
+                    if (q >= L || q < 0)
+                        q = 0;
+                }
+            }
+            if (wall < 0)
+                break;
+            const int a = wall / 2;
+            const bool upper = wall % 2 == 1;
+            component(x, a) = upper ? domain_.size[a] : 0.0;
+            hit_wall(i, s, a, upper, v, rng, flux[static_cast<std::size_t>(wall)]);
+            rest -= t;
+        }
+        x_[i] = x;
+        v_[i] = v;
+    }
+
+    // Grain i (species s, velocity v at the wall) meets the wall of axis a.
+    void hit_wall(std::size_t i, std::size_t s, int a, bool upper, Vec3& v, CollisionRng& rng, WallFlux& flux) {
+        const WallSpec& wall = upper ? domain_.wall_upper : domain_.wall_lower;
+        const double sign = upper ? -1.0 : 1.0; // n = sign e_a, from the wall into the gas
+        Vec3 U{wall.velocity[0], wall.velocity[1], wall.velocity[2]};
+        component(U, a) = 0;
+        const Vec3 v0 = v, w0 = w_[i];
+        const GrainProperties& grain = blocks_[s].grain;
+        switch (wall.kind) {
+        case WallKind::specular:
+            component(v, a) = -component(v, a);
+            break;
+        case WallKind::diffuse:
+            emit_from_diffuse_wall<rough>(rng, wall.temperature, grain.mass, blocks_[s].moment_of_inertia(), U, a,
+                                          sign, v, w_[i]);
+            break;
+        case WallKind::rough: {
+            Vec3 n{};
+            component(n, a) = sign;
+            if constexpr (rough)
+                collide_with_wall(wall_pc_[s], make_rough_constant(wall.alpha, wall.beta), v, w_[i], U, n);
+            else
+                collide_with_wall(wall_pc_[s], make_smooth_constant(wall.alpha), v, n);
+            break;
+        }
+        }
+        flux.hits += 1;
+        flux.momentum += grain.mass * (v0 - v);
+        flux.energy += 0.5 * grain.mass * (norm2(v0) - norm2(v));
+        if constexpr (rough)
+            flux.energy += 0.5 * blocks_[s].moment_of_inertia() * (norm2(w0) - norm2(w_[i]));
     }
 
     // A stable counting sort of each species' grains by cell (the grains themselves move, so a
@@ -438,6 +641,8 @@ template <class Policy> class SpatialEngine {
     std::size_t particles_ = 0, cells_ = 1;
     double cs_max_ = 0;
     std::array<double, 3> k_{}; // the initial wave's wave vector
+    std::vector<PairConstants> wall_pc_; // per species: the grain with an infinitely massive wall
+    WallFluxes wall_flux_{};
     std::vector<Vec3> x_, v_, w_, x2_, v2_, w2_;
     std::vector<std::uint32_t> key_, cell_start_, counts_;
     std::array<double, 3> cells_per_length_{};

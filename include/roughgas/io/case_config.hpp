@@ -8,6 +8,7 @@
 #include "roughgas/contact/tolerance.hpp"
 #include "roughgas/dsmc/run_spec.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -147,16 +148,33 @@ struct ShearConfig {
     friend bool operator==(const ShearConfig&, const ShearConfig&) = default;
 };
 
-// [domain]: a spatially resolved run (dsmc/spatial_engine.hpp).
-enum class Boundary { periodic };
-inline constexpr std::array<std::string_view, 1> boundary_names{"periodic"};
+// [domain]: a spatially resolved run (dsmc/spatial_engine.hpp); Boundary and WallKind are the
+// solver's (dsmc/run_spec.hpp).
+inline constexpr std::array<std::string_view, 2> boundary_names{"periodic", "walls"};
 struct DomainConfig {
     std::array<double, 3> size{};            // L_x, L_y, L_z
     std::array<std::int64_t, 3> cells{};     // collision cells per axis
     std::array<Boundary, 3> boundary{Boundary::periodic, Boundary::periodic, Boundary::periodic};
+    std::array<double, 3> gravity{};         // uniform acceleration
     double time_step = 0.2;                  // in mean free times of the current state
     bool allow_coarse = false;               // cells longer than a mean free path accepted
     friend bool operator==(const DomainConfig&, const DomainConfig&) = default;
+    bool has_walls() const {
+        return std::find(boundary.begin(), boundary.end(), Boundary::walls) != boundary.end();
+    }
+};
+
+// [wall_lower], [wall_upper]: the walls at coordinate 0 and L of every walled axis (WallSpec).
+inline constexpr std::array<std::string_view, 3> wall_kind_names{"specular", "diffuse", "rough"};
+constexpr std::string_view name(WallKind k) {
+    return wall_kind_names[static_cast<std::size_t>(k)];
+}
+struct WallConfig {
+    WallKind kind = WallKind::diffuse;
+    std::optional<double> temperature; // required for diffuse walls
+    std::array<double, 3> velocity{};
+    std::optional<double> alpha, beta; // rough walls (defaults 1 and -1), echoed only when given
+    friend bool operator==(const WallConfig&, const WallConfig&) = default;
 };
 constexpr std::string_view name(Boundary b) {
     return boundary_names[static_cast<std::size_t>(b)];
@@ -197,6 +215,7 @@ struct CaseConfig {
     std::optional<ShearConfig> shear; // present iff [shear] was given (required for kind = shear)
     std::optional<DomainConfig> domain; // present iff [domain] was given: a spatially resolved run
     std::optional<InitialConfig> initial; // present iff [initial] was given
+    std::optional<WallConfig> wall_lower, wall_upper; // present iff given
     // Keys and tables given but not used by the chosen models or run kind (kept, not refused: a user
     // may switch the model or kind with --set and back); commands print them as warnings.
     std::vector<std::string> unused;

@@ -40,11 +40,15 @@ class MomentsTable {
     std::vector<std::string> names() const { return column_names(columns_); }
     std::vector<std::string> units() const { return column_units(columns_); }
     const std::vector<Column>& solver_columns() const { return solver_; }
+    // walls.csv (runs with walls; empty otherwise): t, coll_per_particle, then wall_columns
+    // (dsmc/run.hpp), with replicas > 1 each followed by X_err.
+    const std::vector<Column>& wall_table_columns() const { return wall_columns_; }
     bool has_theory() const { return trajectory_.has_value(); }
     int replicas() const { return replicas_; }
 
-    // Throws NonFiniteValue, naming the column and t, unless every value of a solver row (one
-    // replica, dsmc_columns order) is finite or undefined by definition:
+    // Throws NonFiniteValue, naming the column and t, unless every value of a replica's row
+    // (replica_row_columns order: dsmc_columns, then wall_columns) is finite or undefined by definition:
+    //   the wall columns in the row at t = 0 (no interval yet);
     //   coll_rate, coll_rate.NAME, E_diss_rate in the row at t = 0 (no interval yet);
     //   theta, a20, a11, T_tr.A/T_tr.B with the T_tr they divide by equal to 0;
     //   a02, a11, A_cw, T_rot.A/T_rot.B with the T_rot they divide by equal to 0 (e.g. smooth
@@ -56,9 +60,12 @@ class MomentsTable {
     // sqrt(sum (x - mean)^2/(K (K - 1))), then the theory at the mean t. Call once per output
     // time, in order (the theory is integrated on from the previous row).
     std::vector<double> combine(std::span<const std::span<const double>> replica_rows);
+    // The walls.csv row from the same replica rows.
+    std::vector<double> combine_walls(std::span<const std::span<const double>> replica_rows) const;
 
   private:
-    std::vector<Column> solver_, columns_;
+    const Column& row_column(std::size_t j) const;
+    std::vector<Column> solver_, columns_, wall_solver_, wall_columns_;
     std::vector<std::string> species_names_;
     int replicas_ = 1;
     std::optional<HcsTrajectory> trajectory_;
