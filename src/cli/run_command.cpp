@@ -71,6 +71,7 @@ constexpr const char* histograms_file = "histograms.csv";
 constexpr const char* steady_file = "steady.csv";
 constexpr const char* scaled_file = "scaled.csv";
 constexpr const char* walls_file = "walls.csv";
+constexpr const char* profiles_file = "profiles.csv";
 
 struct RunOptions {
     std::string case_file;
@@ -119,7 +120,7 @@ std::pair<std::uint64_t, std::uint64_t> replica_range(const std::string& text, s
 
 // Never overwrite earlier results by accident: that is an input error, reported before any work.
 // A checkpoint of an earlier run counts too: it is continued with --resume, or replaced with --force.
-void check_output_dir(const fs::path& dir, bool force, bool histograms, bool shear, bool walls) {
+void check_output_dir(const fs::path& dir, bool force, bool histograms, bool shear, bool walls, bool box) {
     if (fs::exists(dir) && !fs::is_directory(dir))
         throw InputError(dir.string(), "--out", "--out " + dir.string() + ": exists and is not a directory");
     if (force)
@@ -130,9 +131,9 @@ void check_output_dir(const fs::path& dir, bool force, bool histograms, bool she
                          fmt::format("--out {}: {} exists (continue that run with --resume {}, or start "
                                      "over with --force)",
                                      dir.string(), checkpoint_dir(dir).string(), dir.string()));
-    for (const char* file : {output_file, histograms_file, steady_file, scaled_file, walls_file}) {
+    for (const char* file : {output_file, histograms_file, steady_file, scaled_file, walls_file, profiles_file}) {
         if ((file == histograms_file && !histograms) || (file == steady_file && !shear) ||
-            (file == scaled_file && shear) || (file == walls_file && !walls))
+            (file == scaled_file && shear) || (file == walls_file && !walls) || (file == profiles_file && !box))
             continue;
         if (fs::exists(dir / file))
             throw InputError(
@@ -169,8 +170,7 @@ RunSetup new_run(const RunOptions& o, bool root) {
     if (root) {
         s.lock.lock_if_exists(s.dir); // before its files are checked: another run may be writing them
         check_output_dir(s.dir, o.force, s.cfg.run.histogram_every > 0, s.cfg.run.kind == RunKind::shear,
-                         s.cfg.domain && std::find(s.cfg.domain->boundary.begin(), s.cfg.domain->boundary.end(),
-                                                   Boundary::walls) != s.cfg.domain->boundary.end());
+                         s.cfg.domain && s.cfg.domain->has_walls(), s.cfg.domain.has_value());
     }
     s.manifest.run = {roughgas_version(),
                       o.case_file,
@@ -345,6 +345,17 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         wprov.units = column_units(table.wall_table_columns());
         wcsv.emplace(column_names(table.wall_table_columns()), wprov);
     }
+    std::optional<CsvWriter> pcsv; // profiles.csv
+    if (!table.profile_table_columns().empty()) {
+        CsvProvenance pp = prov;
+        pp.notes = {"one block of rows per moments.csv row, one row per bin (slab normal to the profile axis, one "
+                    "per collision cell along it), at that row's t: n, u, T_tr, T_rot, theta, the kinetic (P_ab) "
+                    "and collisional (Pc_ab, over the interval since the previous row) pressure tensor, the "
+                    "kinetic heat flux q, the mean spin omega (observables/profiles.hpp)",
+                    prov.notes[1]};
+        pp.units = column_units(table.profile_table_columns());
+        pcsv.emplace(column_names(table.profile_table_columns()), pp);
+    }
     std::optional<HistogramsTable> htable;
     std::optional<CsvWriter> hcsv;
     if (!spec.histogram_times.empty()) {
@@ -443,12 +454,17 @@ int run_run(const RunOptions& o, const Communicator& comm) {
             csv.add_row(table_rows.back());
             if (wcsv)
                 wcsv->add_row(table.combine_walls(spans));
+            if (pcsv)
+                for (const std::vector<double>& r : table.combine_profiles(spans))
+                    pcsv->add_row(r);
         }
         const auto t = std::chrono::steady_clock::now();
         if (csv.rows() > on_disk && (now || t - last_write >= 10 * write_cost)) {
             csv.write(path);
             if (wcsv)
                 wcsv->write(dir / walls_file);
+            if (pcsv)
+                pcsv->write(dir / profiles_file);
             on_disk = csv.rows();
             last_write = std::chrono::steady_clock::now();
             write_cost = last_write - t;
@@ -610,6 +626,8 @@ int run_run(const RunOptions& o, const Communicator& comm) {
             csv.write(path); // the header, even when no row is complete yet: the run's file exists
             if (wcsv)
                 wcsv->write(dir / walls_file);
+            if (pcsv)
+                pcsv->write(dir / profiles_file);
         }
         for (int r = from; r < to; ++r)
             if (finished[static_cast<std::size_t>(r)] && !final_saved[static_cast<std::size_t>(r)])

@@ -80,6 +80,15 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
     double next_save = every;
     std::int64_t resumed_at = 0;
     WallFluxes walls_prev{}; // the walls' tallies at the previous row
+    ProfileGeometry profile_geometry;
+    profile_geometry.axis = domain.profile_axis;
+    profile_geometry.bins = domain.cells[static_cast<std::size_t>(domain.profile_axis)];
+    profile_geometry.length = domain.size[static_cast<std::size_t>(domain.profile_axis)];
+    const double box_volume = domain.size[0] * domain.size[1] * domain.size[2];
+    profile_geometry.bin_volume = box_volume / profile_geometry.bins;
+    profile_geometry.weight = spec.density * box_volume / N;
+    profile_geometry.periodic = !domain.walled(domain.profile_axis);
+    profile_geometry.gravity = {domain.gravity[0], domain.gravity[1], domain.gravity[2]};
 
     const auto state = [&] {
         ByteWriter w;
@@ -114,6 +123,15 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
             append_wall_columns(row, domain, engine.wall_fluxes(), walls_prev, spec.density, N,
                                 first ? std::numeric_limits<double>::quiet_NaN() : t - t_prev);
             walls_prev = engine.wall_fluxes();
+            // Sampled in the middle of the flight of the step that follows (its length before any
+            // shortening for an output).
+            const double nu = engine.collision_frequency();
+            profile_geometry.half_flight = nu > 0 && std::isfinite(nu) ? 0.5 * domain.time_step / nu : 0.0;
+            const std::vector<double> profiles =
+                compute_profiles(profile_geometry, engine.positions(), engine.velocities(),
+                                 engine.angular_velocities(), blocks, engine.take_virial(),
+                                 first ? std::numeric_limits<double>::quiet_NaN() : t - t_prev);
+            row.insert(row.end(), profiles.begin(), profiles.end());
             if (row.size() != columns)
                 throw std::logic_error("run_replica: row and columns differ");
             t_prev = t;

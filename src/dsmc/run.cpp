@@ -4,6 +4,7 @@
 #include "roughgas/dsmc/run.hpp"
 
 #include "drive.hpp"
+#include "roughgas/observables/profiles.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -70,6 +71,7 @@ void validate(const RunSpec& spec) {
         require(!spec.shear, "a spatially resolved run has no uniform shear flow (Lees-Edwards boundaries)");
         require(spec.kernel == CollisionKernel::hard_sphere, "a spatially resolved run collides hard spheres");
         require(spec.histogram_times.empty(), "a spatially resolved run writes no histograms");
+        require(spec.domain->profile_axis >= 0 && spec.domain->profile_axis <= 2, "the profile axis must be 0, 1 or 2");
         for (double g : spec.domain->gravity)
             require(std::isfinite(g), "gravity must be finite");
         for (const WallSpec* w : {&spec.domain->wall_lower, &spec.domain->wall_upper}) {
@@ -113,7 +115,8 @@ std::size_t memory_per_replica_fixed_bound(const RunSpec& spec) {
     const std::size_t S = spec.species.size();
     // Per cell: each species' start, the sort's counts of up to 64 chunks, a share of the per-unit
     // tallies (one per 64 cells: a pair count each, and the unit's bookkeeping).
-    const double per_cell = 4.0 * static_cast<double>(S + 1) + 4.0 * 64 + (8.0 * spec.pairs.size() + 64) / 64;
+    const double per_cell =
+        4.0 * static_cast<double>(S + 1) + 4.0 * 64 + (8.0 * spec.pairs.size() + 64) / 64 + 6 * sizeof(double);
     return static_cast<std::size_t>(cells * per_cell);
 }
 
@@ -136,10 +139,22 @@ std::vector<Column> wall_columns(const RunSpec& spec) {
     return c;
 }
 
+std::vector<Column> profile_columns(const RunSpec& spec) {
+    std::vector<Column> c;
+    if (!spec.domain)
+        return c;
+    const std::vector<Column> fields = profile_field_columns();
+    for (int b = 0; b < spec.domain->cells[static_cast<std::size_t>(spec.domain->profile_axis)]; ++b)
+        for (const Column& f : fields)
+            c.push_back({"bin" + std::to_string(b) + "." + f.name, f.unit});
+    return c;
+}
+
 std::vector<Column> replica_row_columns(const RunSpec& spec) {
     std::vector<Column> c = dsmc_columns(spec);
-    for (Column& w : wall_columns(spec))
-        c.push_back(std::move(w));
+    for (std::vector<Column> part : {wall_columns(spec), profile_columns(spec)})
+        for (Column& w : part)
+            c.push_back(std::move(w));
     return c;
 }
 

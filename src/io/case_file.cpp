@@ -588,6 +588,12 @@ class Builder {
                 d.boundary[i] = static_cast<Boundary>(
                     std::find(boundary_names.begin(), boundary_names.end(), b[i]) - boundary_names.begin());
             d.gravity = r.real3("gravity");
+            if (r.has("profile_axis")) {
+                d.profile_axis = static_cast<int>(r.string("profile_axis")[0] - 'x');
+            } else {
+                const auto walled = std::find(d.boundary.begin(), d.boundary.end(), Boundary::walls);
+                d.profile_axis = walled == d.boundary.end() ? 0 : static_cast<int>(walled - d.boundary.begin());
+            }
             d.time_step = r.real("time_step");
             d.allow_coarse = r.boolean("allow_coarse");
             c.domain = d;
@@ -1255,6 +1261,7 @@ std::string emit_case(const CaseConfig& c) {
                                                       std::string(name(c.domain->boundary[1])),
                                                       std::string(name(c.domain->boundary[2]))});
         e.put("gravity", c.domain->gravity);
+        e.put("profile_axis", std::string_view(&"xyz"[c.domain->profile_axis], 1));
         e.put("time_step", c.domain->time_step);
         e.put("allow_coarse", c.domain->allow_coarse);
     }

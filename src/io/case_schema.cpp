@@ -314,6 +314,10 @@ std::vector<Key> keys() {
             .unit("length/time^2")
             .when("[0, 0, 0]")
             .doc("uniform acceleration [g_x, g_y, g_z] of the free flight (v += g dt, x += v dt + g dt^2/2)"),
+        Key("domain.profile_axis", T::string)
+            .when("the first walled axis, else \"x\"")
+            .one_of(std::array<std::string_view, 3>{"x", "y", "z"})
+            .doc("profiles.csv: the fields averaged over slabs normal to this axis, one slab per cell along it"),
         Key("domain.time_step", T::real)
             .unit("mean free times")
             .fallback(0.2)

@@ -2,6 +2,7 @@
 
 #include "roughgas/dsmc/run.hpp"
 #include "roughgas/io/replica_mean.hpp"
+#include "roughgas/observables/profiles.hpp"
 
 #include <fmt/format.h>
 
@@ -23,9 +24,24 @@ std::pair<std::string, std::string> split(const std::string& name) {
 } // namespace
 
 MomentsTable::MomentsTable(const RunSpec& spec)
-    : solver_(dsmc_columns(spec)), wall_solver_(wall_columns(spec)), replicas_(spec.replicas) {
+    : solver_(dsmc_columns(spec)), wall_solver_(wall_columns(spec)), profile_solver_(profile_columns(spec)),
+      replicas_(spec.replicas) {
     if (replicas_ < 1)
         throw std::invalid_argument("MomentsTable: replicas must be >= 1");
+    profile_start_ = solver_.size() + wall_solver_.size();
+    if (spec.domain) {
+        const int a = spec.domain->profile_axis;
+        const int bins = spec.domain->cells[static_cast<std::size_t>(a)];
+        const double L = spec.domain->size[static_cast<std::size_t>(a)];
+        for (int b = 0; b < bins; ++b)
+            bin_centres_.push_back((b + 0.5) * L / bins);
+        profile_columns_ = {solver_[0], solver_[1], {"bin", "-"}, {std::string(1, "xyz"[a]), "length"}};
+        for (const Column& c : profile_field_columns()) {
+            profile_columns_.push_back(c);
+            if (replicas_ > 1)
+                profile_columns_.push_back({c.name + "_err", c.unit});
+        }
+    }
     if (!wall_solver_.empty()) {
         wall_columns_ = {solver_[0], solver_[1]}; // t, coll_per_particle
         for (const Column& c : wall_solver_) {
@@ -64,13 +80,15 @@ MomentsTable::MomentsTable(const RunSpec& spec)
 }
 
 const Column& MomentsTable::row_column(std::size_t j) const {
-    return j < solver_.size() ? solver_[j] : wall_solver_[j - solver_.size()];
+    return j < solver_.size()         ? solver_[j]
+           : j < profile_start_       ? wall_solver_[j - solver_.size()]
+                                      : profile_solver_[j - profile_start_];
 }
 
 void MomentsTable::check(std::span<const double> row) const {
-    if (row.size() != solver_.size() + wall_solver_.size())
+    if (row.size() != profile_start_ + profile_solver_.size())
         throw std::invalid_argument(fmt::format("replica row has {} values for {} columns", row.size(),
-                                                solver_.size() + wall_solver_.size()));
+                                                profile_start_ + profile_solver_.size()));
     std::map<std::string, double> value;
     for (std::size_t j = 0; j < row.size(); ++j)
         value[row_column(j).name] = row[j];
@@ -85,7 +103,17 @@ void MomentsTable::check(std::span<const double> row) const {
             continue;
         const std::string& name = row_column(j).name;
         const auto [base, suffix] = split(name);
-        bool undefined = j >= solver_.size() && first; // walls.csv: no interval yet
+        bool undefined = j >= solver_.size() && j < profile_start_ && first; // walls.csv: no interval yet
+        if (j >= profile_start_) { // a profile bin's field
+            const std::size_t f = (j - profile_start_) % profile_field_count, bin = j - profile_start_ - f;
+            const double n = row[profile_start_ + bin], T_tr = row[profile_start_ + bin + 4];
+            undefined = f > 0 && (n == 0 || (f >= profile_collisional_first && f < profile_collisional_first + 6 && first) ||
+                                  (f == profile_theta && T_tr == 0));
+            if (!undefined)
+                throw NonFiniteValue(name, t, row[j],
+                                     fmt::format("profile field {} is {} at t = {:.17g}", name, row[j], t));
+            continue;
+        }
         if (base == "coll_rate" || base == "E_diss_rate")
             undefined = first;
         if (base == "theta" || base == "a20" || base == "a11")
@@ -118,6 +146,35 @@ std::vector<double> MomentsTable::combine_walls(std::span<const std::span<const 
         out.push_back(m.mean);
         if (replicas_ > 1 && j >= 2)
             out.push_back(m.error);
+    }
+    return out;
+}
+
+std::vector<std::vector<double>>
+MomentsTable::combine_profiles(std::span<const std::span<const double>> rows) const {
+    if (rows.size() != static_cast<std::size_t>(replicas_))
+        throw std::invalid_argument(
+            fmt::format("MomentsTable: {} replica rows for {} replicas", rows.size(), replicas_));
+    std::vector<std::vector<double>> out;
+    std::vector<double> x(rows.size());
+    for (std::size_t b = 0; b < bin_centres_.size(); ++b) {
+        std::vector<double> row;
+        for (std::size_t j = 0; j < 2; ++j) { // t, coll_per_particle: the replicas' mean
+            for (std::size_t r = 0; r < rows.size(); ++r)
+                x[r] = rows[r][j];
+            row.push_back(replica_mean(x).mean);
+        }
+        row.push_back(static_cast<double>(b));
+        row.push_back(bin_centres_[b]);
+        for (std::size_t f = 0; f < profile_field_count; ++f) {
+            for (std::size_t r = 0; r < rows.size(); ++r)
+                x[r] = rows[r][profile_start_ + b * profile_field_count + f];
+            const ReplicaMean m = replica_mean(x);
+            row.push_back(m.mean);
+            if (replicas_ > 1)
+                row.push_back(m.error);
+        }
+        out.push_back(std::move(row));
     }
     return out;
 }

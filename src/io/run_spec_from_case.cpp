@@ -57,6 +57,7 @@ RunSpec run_spec_from_case(const CaseConfig& cfg) {
         d.time_step = cfg.domain->time_step;
         d.boundary = cfg.domain->boundary;
         d.gravity = cfg.domain->gravity;
+        d.profile_axis = cfg.domain->profile_axis;
         const auto wall = [](const std::optional<WallConfig>& w) {
             WallSpec s;
             if (w) {

@@ -78,7 +78,7 @@ void run_to_end(const std::string& args, const test::ScratchDir& dir) {
 }
 
 void expect_same_outputs(const fs::path& reference, const fs::path& out, const std::string& context) {
-    for (const char* f : {"moments.csv", "histograms.csv", "steady.csv", "walls.csv"}) {
+    for (const char* f : {"moments.csv", "histograms.csv", "steady.csv", "walls.csv", "profiles.csv"}) {
         ASSERT_EQ(fs::exists(reference / f), fs::exists(out / f)) << f << ", " << context;
         if (!fs::exists(reference / f))
             continue;

@@ -48,7 +48,12 @@ std::vector<Column> dsmc_columns(const RunSpec& spec);
 // for n V / N); NaN in the row at t = 0.
 std::vector<Column> wall_columns(const RunSpec& spec);
 
-// What a replica's row holds (the RowSink's values): dsmc_columns, then wall_columns.
+// The profiles.csv fields of every bin (box runs; empty otherwise): bin b's fields
+// (observables/profiles.hpp, profile_fields) named "binB.FIELD", bin after bin; the bins are the
+// cells along domain.profile_axis.
+std::vector<Column> profile_columns(const RunSpec& spec);
+
+// What a replica's row holds (the RowSink's values): dsmc_columns, wall_columns, profile_columns.
 std::vector<Column> replica_row_columns(const RunSpec& spec);
 
 // An upper bound of the memory one replica holds per grain while it runs (the particle store, the

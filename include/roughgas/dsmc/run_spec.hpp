@@ -82,6 +82,7 @@ struct DomainSpec {
     // The walls at coordinate 0 (lower) and L (upper) of every walled axis.
     WallSpec wall_lower, wall_upper;
     std::array<double, 3> gravity{0, 0, 0}; // uniform acceleration
+    int profile_axis = 0;                   // profiles.csv: slabs normal to this axis, one per cell along it
     double time_step = 0.2;              // in mean free times of the current state
     InitialSpec initial;
 

@@ -50,6 +50,7 @@
 #include "roughgas/dsmc/run_spec.hpp"
 #include "roughgas/dsmc/species.hpp"
 #include "roughgas/observables/moments.hpp"
+#include "roughgas/observables/profiles.hpp"
 
 #include <algorithm>
 #include <array>
@@ -144,6 +145,10 @@ template <class Policy, bool General = false> class SpatialEngine {
         x_.resize(particles_);
         v_.resize(particles_);
         w_.resize(particles_);
+        if (domain_.profile_axis < 0 || domain_.profile_axis > 2)
+            throw std::invalid_argument("SpatialEngine: the profile axis must be 0, 1 or 2");
+        cell_virial_.assign(cells_, Virial{});
+        bin_virial_.assign(static_cast<std::size_t>(domain_.cells[domain_.profile_axis]), Virial{});
         const InitialSpec& wave = domain_.initial;
         for (int a = 0; a < 3; ++a)
             k_[a] = 2.0 * std::numbers::pi * wave.wave[a] / domain_.size[a];
@@ -210,6 +215,7 @@ template <class Policy, bool General = false> class SpatialEngine {
             obs.merge(local[u]);
             collisions_ += counts[u];
         }
+        add_cell_virials();
         t_ += dt;
         ++steps_;
     }
@@ -241,6 +247,13 @@ template <class Policy, bool General = false> class SpatialEngine {
     std::size_t particles() const { return particles_; }
     std::size_t cells() const { return cells_; }
     const WallFluxes& wall_fluxes() const { return wall_flux_; }
+    // The collisional virial sums of each profile bin since the last call (observables/profiles.hpp),
+    // in the simulated grains' units; zeroed.
+    std::vector<Virial> take_virial() {
+        std::vector<Virial> v(bin_virial_.size(), Virial{});
+        v.swap(bin_virial_);
+        return v;
+    }
     const DomainSpec& domain() const { return domain_; }
     const std::vector<SpeciesBlock>& species() const { return blocks_; }
     const std::vector<PairType>& pair_types() const { return types_; }
@@ -277,6 +290,9 @@ template <class Policy, bool General = false> class SpatialEngine {
         out.put(collisions_);
         if (domain_.has_walls())
             roughgas::save(out, wall_flux_);
+        for (const Virial& b : bin_virial_)
+            for (double c : b)
+                out.f64(c);
     }
     void restore(ByteReader& in) {
         for (std::vector<Vec3>* a : {&x_, &v_, &w_}) {
@@ -293,6 +309,9 @@ template <class Policy, bool General = false> class SpatialEngine {
         collisions_ = in.get<std::int64_t>();
         if (domain_.has_walls())
             roughgas::load(in, wall_flux_);
+        for (Virial& b : bin_virial_)
+            for (double& c : b)
+                c = in.f64();
         sort_into_cells();
     }
 
@@ -502,6 +521,18 @@ template <class Policy, bool General = false> class SpatialEngine {
             flux.energy += 0.5 * blocks_[s].moment_of_inertia() * (norm2(w0) - norm2(w_[i]));
     }
 
+    // Each cell's collisional virial of this step into its profile bin (cells in order: the sums do
+    // not depend on the threads).
+    void add_cell_virials() {
+        const int a = domain_.profile_axis;
+        const std::size_t nx = static_cast<std::size_t>(domain_.cells[0]), ny = static_cast<std::size_t>(domain_.cells[1]);
+        for (std::size_t c = 0; c < cells_; ++c) {
+            const std::size_t k = a == 0 ? c % nx : a == 1 ? (c / nx) % ny : c / (nx * ny);
+            for (std::size_t q = 0; q < 6; ++q)
+                bin_virial_[k][q] += cell_virial_[c][q];
+        }
+    }
+
     // A stable counting sort of each species' grains by cell (the grains themselves move, so a
     // cell's grains are adjacent in memory while they collide), in parallel over P chunks of the
     // species' range (P fixed by the grain and cell counts, never by the threads): each chunk counts
@@ -573,6 +604,8 @@ template <class Policy, bool General = false> class SpatialEngine {
     // Collisions of cell c for a time dt (the header's kernel); returns how many.
     template <class Observer> std::int64_t collide_cell(std::size_t c, double dt, CollisionRng& rng, Observer& obs) {
         const std::size_t S = blocks_.size();
+        Virial& virial = cell_virial_[c];
+        virial = Virial{};
         std::size_t n = 0;
         Vec3 u{};
         for (std::size_t s = 0; s < S; ++s) {
@@ -619,6 +652,7 @@ template <class Policy, bool General = false> class SpatialEngine {
             const double g = std::sqrt(norm2(g_c));
             if (!(uniform01(rng) * cs_max_ * g_max < pc.cross_section * g))
                 continue;
+            const Vec3 v_before = v_[i];
             if constexpr (rough) {
                 const Vec3 normal = sample_impact_normal(rng, g_c, g);
                 obs(collide(pc, policies_[type], v_[i], w_[i], v_[j], w_[j], normal), type);
@@ -627,6 +661,14 @@ template <class Policy, bool General = false> class SpatialEngine {
                 obs(collide_normal_part(pc, policies_[type], v_[i], v_[j], g_N), type);
             }
             ++done;
+            // The impulse on i times the separation (observables/profiles.hpp, Pc).
+            const Vec3 dp = blocks_[sa].grain.mass * (v_[i] - v_before), r = x_[i] - x_[j];
+            virial[0] += dp.x * r.x;
+            virial[1] += dp.y * r.y;
+            virial[2] += dp.z * r.z;
+            virial[3] += 0.5 * (dp.x * r.y + dp.y * r.x);
+            virial[4] += 0.5 * (dp.x * r.z + dp.z * r.x);
+            virial[5] += 0.5 * (dp.y * r.z + dp.z * r.y);
             b = std::max({b, std::sqrt(norm2(v_[i] - u)), std::sqrt(norm2(v_[j] - u))});
         }
     }
@@ -643,6 +685,7 @@ template <class Policy, bool General = false> class SpatialEngine {
     std::array<double, 3> k_{}; // the initial wave's wave vector
     std::vector<PairConstants> wall_pc_; // per species: the grain with an infinitely massive wall
     WallFluxes wall_flux_{};
+    std::vector<Virial> cell_virial_, bin_virial_; // this step's per cell; since the last row per bin
     std::vector<Vec3> x_, v_, w_, x2_, v2_, w2_;
     std::vector<std::uint32_t> key_, cell_start_, counts_;
     std::array<double, 3> cells_per_length_{};

@@ -156,6 +156,7 @@ struct DomainConfig {
     std::array<std::int64_t, 3> cells{};     // collision cells per axis
     std::array<Boundary, 3> boundary{Boundary::periodic, Boundary::periodic, Boundary::periodic};
     std::array<double, 3> gravity{};         // uniform acceleration
+    int profile_axis = 0;                    // 0, 1, 2: profiles.csv's axis (resolved: the first walled axis, else x)
     double time_step = 0.2;                  // in mean free times of the current state
     bool allow_coarse = false;               // cells longer than a mean free path accepted
     friend bool operator==(const DomainConfig&, const DomainConfig&) = default;

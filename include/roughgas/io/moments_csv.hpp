@@ -43,12 +43,17 @@ class MomentsTable {
     // walls.csv (runs with walls; empty otherwise): t, coll_per_particle, then wall_columns
     // (dsmc/run.hpp), with replicas > 1 each followed by X_err.
     const std::vector<Column>& wall_table_columns() const { return wall_columns_; }
+    // profiles.csv (box runs; empty otherwise): t, coll_per_particle, bin, the bin centre's
+    // coordinate (named x, y or z), then the fields of observables/profiles.hpp, with replicas > 1
+    // each followed by X_err; one row per bin.
+    const std::vector<Column>& profile_table_columns() const { return profile_columns_; }
     bool has_theory() const { return trajectory_.has_value(); }
     int replicas() const { return replicas_; }
 
     // Throws NonFiniteValue, naming the column and t, unless every value of a replica's row
     // (replica_row_columns order: dsmc_columns, then wall_columns) is finite or undefined by definition:
-    //   the wall columns in the row at t = 0 (no interval yet);
+    //   the wall columns and the profiles' collisional fields in the row at t = 0 (no interval yet);
+    //   a profile bin's fields but n when the bin holds no grain, its theta when its T_tr is 0;
     //   coll_rate, coll_rate.NAME, E_diss_rate in the row at t = 0 (no interval yet);
     //   theta, a20, a11, T_tr.A/T_tr.B with the T_tr they divide by equal to 0;
     //   a02, a11, A_cw, T_rot.A/T_rot.B with the T_rot they divide by equal to 0 (e.g. smooth
@@ -62,10 +67,14 @@ class MomentsTable {
     std::vector<double> combine(std::span<const std::span<const double>> replica_rows);
     // The walls.csv row from the same replica rows.
     std::vector<double> combine_walls(std::span<const std::span<const double>> replica_rows) const;
+    // The profiles.csv rows (one per bin) from the same replica rows.
+    std::vector<std::vector<double>> combine_profiles(std::span<const std::span<const double>> replica_rows) const;
 
   private:
     const Column& row_column(std::size_t j) const;
-    std::vector<Column> solver_, columns_, wall_solver_, wall_columns_;
+    std::vector<Column> solver_, columns_, wall_solver_, wall_columns_, profile_solver_, profile_columns_;
+    std::size_t profile_start_ = 0;     // the first profile value in a replica row
+    std::vector<double> bin_centres_;
     std::vector<std::string> species_names_;
     int replicas_ = 1;
     std::optional<HcsTrajectory> trajectory_;
