@@ -88,6 +88,7 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
     profile_geometry.bin_volume = box_volume / profile_geometry.bins;
     profile_geometry.weight = spec.density * box_volume / N;
     profile_geometry.periodic = !domain.walled(domain.profile_axis);
+    profile_geometry.rotation = Policy::needs_rotation;
     profile_geometry.gravity = {domain.gravity[0], domain.gravity[1], domain.gravity[2]};
 
     const auto state = [&] {

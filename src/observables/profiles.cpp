@@ -80,7 +80,7 @@ std::vector<double> compute_profiles(const ProfileGeometry& g, const std::vector
             b.cc[3] += m * c.x * c.y;
             b.cc[4] += m * c.x * c.z;
             b.cc[5] += m * c.y * c.z;
-            b.heat += (0.5 * m * norm2(c) + 0.5 * J * norm2(w[i])) * c;
+            b.heat += (0.5 * m * norm2(c) + (g.rotation ? 0.5 * J * norm2(w[i]) : 0.0)) * c;
         }
     }
     const double nan = std::numeric_limits<double>::quiet_NaN();

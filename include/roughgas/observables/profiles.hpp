@@ -22,7 +22,8 @@
 //     symmetrised (Delta p_i,a r_ij,b + Delta p_i,b r_ij,a)/2, Delta p_i the impulse on grain i and
 //     r_ij = x_i - x_j (the momentum a collision carries across the distance between its grains: in
 //     the DSMC the source of the cell-size error of the viscosity, zero on average in a uniform gas);
-//   q_a = (F / V_b) sum (m c^2/2 + J omega^2/2) c_a (kinetic; rotational energy included);
+//   q_a = (F / V_b) sum (m c^2/2 + J omega^2/2) c_a (kinetic; the rotational energy only where
+//     collisions or walls change the spins: smooth grains carry theirs unchanged, a noise of zero mean);
 //   omega = sum omega / N_b.
 // A bin without grains has n = 0 and every other field NaN.
 #include "roughgas/core/vec.hpp"
@@ -56,6 +57,7 @@ struct ProfileGeometry {
     double bin_volume = 1;   // V_b (the case's volume unit)
     double weight = 1;       // F: physical grains per simulated one
     bool periodic = true;    // along the axis (else walls)
+    bool rotation = true;    // the spins take part in the energy exchange (rough grains or walls)
     double half_flight = 0;  // h/2: the grains are taken in the middle of a flight of length h
     Vec3 gravity{};
 };
