@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # Redraws the pictures in docs/ from the shipped cases, each with the command named in the doc
-# that shows it (about two minutes on two cores, most of it the ice cases' eps^T tables):
+# that shows it (about three minutes on two cores, most of it the ice cases' eps^T tables):
 #   docs/ice_normal.png        roughgas restitution cases/ice.toml, plot_restitution.py --bridges
 #   docs/fig2c_tangential.png  roughgas restitution cases/ice_fig2c.toml, plot_restitution.py
 #   docs/hcs_mixture.png       roughgas run cases/hcs_mixture.toml, plot.py
 #   docs/usf_rough.png         roughgas run cases/usf_rough.toml, plot_shear.py
 #   docs/usf_sweep_alpha.png   roughgas sweep of cases/usf_rough.toml over alpha, plot_shear.py --sweep
+#   docs/box_*.png             roughgas run cases/box_{couette,fourier,thermal_walls,heated_bed,shear_mode}.toml,
+#                              plot_profiles.py (the shear mode's last block: --from 100)
 # docs/accuracy.png is the work-precision study of docs/accuracy.md (scripts/bench_accuracy.py,
 # minutes of CPU): it is not redrawn here.
 # Usage: scripts/docs_figures.sh [WORK_DIR]   (default out/docs_figures; the build must exist)
@@ -42,4 +44,14 @@ cp "$work/usf_rough/moments_shear.png" "$root/docs/usf_rough.png"
 "$py" "$root/scripts/plot_shear.py" --sweep "$work/usf_alpha"
 cp "$work/usf_alpha/sweep.png" "$root/docs/usf_sweep_alpha.png"
 
-echo "docs_figures: redrew docs/ice_normal.png, fig2c_tangential.png, hcs_mixture.png, usf_rough.png, usf_sweep_alpha.png"
+for c in couette fourier thermal_walls heated_bed shear_mode; do
+  "$roughgas" run "$root/cases/box_$c.toml" --out "$work/box_$c" --force --quiet
+  if [ "$c" = shear_mode ]; then
+    "$py" "$root/scripts/plot_profiles.py" "$work/box_$c" --from 100
+  else
+    "$py" "$root/scripts/plot_profiles.py" "$work/box_$c"
+  fi
+  cp "$work/box_$c/profiles.png" "$root/docs/box_$c.png"
+done
+
+echo "docs_figures: redrew docs/ice_normal.png, fig2c_tangential.png, hcs_mixture.png, usf_rough.png, usf_sweep_alpha.png, box_*.png"

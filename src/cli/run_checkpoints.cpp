@@ -146,10 +146,9 @@ void remove_stale_temporaries(const fs::path& dir) {
         std::error_code ec;
         for (const auto& e : fs::directory_iterator(d, ec)) {
             const std::string name = e.path().filename().string();
-            const bool ours = name.starts_with("moments.csv.tmp.") ||
-                              name.starts_with("histograms.csv.tmp.") ||
-                              name.starts_with("steady.csv.tmp.") || name.starts_with("scaled.csv.tmp.") ||
-                              (d != dir && name.find(".bin.tmp.") != std::string::npos);
+            bool ours = d != dir && name.find(".bin.tmp.") != std::string::npos;
+            for (const char* csv : {"moments", "histograms", "steady", "scaled", "walls", "profiles", "steady_profiles"})
+                ours |= name.starts_with(std::string(csv) + ".csv.tmp.");
             if (ours && e.is_regular_file())
                 fs::remove(e.path(), ec);
         }

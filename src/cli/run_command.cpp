@@ -72,6 +72,21 @@ constexpr const char* steady_file = "steady.csv";
 constexpr const char* scaled_file = "scaled.csv";
 constexpr const char* walls_file = "walls.csv";
 constexpr const char* profiles_file = "profiles.csv";
+constexpr const char* steady_profiles_file = "steady_profiles.csv";
+
+// Runs that reach a steady state (steady.csv) rather than a scaled cooling state (scaled.csv):
+// uniform shear flow, and boxes whose walls drive the gas (a diffuse wall holds its temperature, a
+// moving wall shears).
+bool driven(const CaseConfig& c) {
+    if (c.run.kind == RunKind::shear)
+        return true;
+    if (!c.domain || !c.domain->has_walls())
+        return false;
+    for (const std::optional<WallConfig>* w : {&c.wall_lower, &c.wall_upper})
+        if (*w && ((*w)->kind == WallKind::diffuse || (*w)->velocity != std::array<double, 3>{}))
+            return true;
+    return false;
+}
 
 struct RunOptions {
     std::string case_file;
@@ -131,8 +146,10 @@ void check_output_dir(const fs::path& dir, bool force, bool histograms, bool she
                          fmt::format("--out {}: {} exists (continue that run with --resume {}, or start "
                                      "over with --force)",
                                      dir.string(), checkpoint_dir(dir).string(), dir.string()));
-    for (const char* file : {output_file, histograms_file, steady_file, scaled_file, walls_file, profiles_file}) {
+    for (const char* file :
+         {output_file, histograms_file, steady_file, scaled_file, walls_file, profiles_file, steady_profiles_file}) {
         if ((file == histograms_file && !histograms) || (file == steady_file && !shear) ||
+            (file == steady_profiles_file && !(shear && box)) ||
             (file == scaled_file && shear) || (file == walls_file && !walls) || (file == profiles_file && !box))
             continue;
         if (fs::exists(dir / file))
@@ -169,7 +186,7 @@ RunSetup new_run(const RunOptions& o, bool root) {
     s.dir = o.out;
     if (root) {
         s.lock.lock_if_exists(s.dir); // before its files are checked: another run may be writing them
-        check_output_dir(s.dir, o.force, s.cfg.run.histogram_every > 0, s.cfg.run.kind == RunKind::shear,
+        check_output_dir(s.dir, o.force, s.cfg.run.histogram_every > 0, driven(s.cfg),
                          s.cfg.domain && s.cfg.domain->has_walls(), s.cfg.domain.has_value());
     }
     s.manifest.run = {roughgas_version(),
@@ -291,6 +308,7 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         if (root)
             std::cerr << "roughgas run: warning: " << u << '\n';
     }
+    std::string box_note; // the box's description, also in walls.csv and profiles.csv
     if (spec.domain) { // the box and its cells in mean free paths, on stderr too
         double R = 0;
         for (const SpeciesSpec& s : spec.species)
@@ -315,11 +333,12 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         prov.notes.push_back(fmt::format(
             "{} {:.6g} x {:.6g} x {:.6g} = {:.4g} x {:.4g} x {:.4g} mean free paths (lambda = {:.6g}, the "
             "largest diameter's), {} x {} x {} collision cells (edge up to {:.3g} lambda), {:.4g} grains per cell; "
-            "steps of {:.4g} mean free times{}; the columns are averages over the box",
+            "steps of {:.4g} mean free times{}; moments.csv's columns are averages over the box",
             kind, d.size[0], d.size[1], d.size[2], d.size[0] / lambda, d.size[1] / lambda, d.size[2] / lambda, lambda,
             d.cells[0], d.cells[1], d.cells[2], edge / lambda,
             static_cast<double>(spec.particles) / (static_cast<double>(d.cells[0]) * d.cells[1] * d.cells[2]),
             d.time_step, gravity));
+        box_note = prov.notes.back();
         if (edge > 0.5 * lambda)
             prov.notes.push_back(fmt::format("warning: cells of up to {:.3g} mean free paths (more than 0.5): in "
                                              "gradients the viscosity comes out too large by about "
@@ -341,7 +360,7 @@ int run_run(const RunOptions& o, const Communicator& comm) {
                        "stands for density x volume / particles): hits per area and time; P_ia, the column a of "
                        "the pressure tensor at a wall normal to a (the +a flux of momentum component i); q_a, "
                        "the +a flux of kinetic energy (translational and rotational)",
-                       prov.notes[1]};
+                       prov.notes[1], box_note};
         wprov.units = column_units(table.wall_table_columns());
         wcsv.emplace(column_names(table.wall_table_columns()), wprov);
     }
@@ -352,7 +371,7 @@ int run_run(const RunOptions& o, const Communicator& comm) {
                     "per collision cell along it), at that row's t: n, u, T_tr, T_rot, theta, the kinetic (P_ab) "
                     "and collisional (Pc_ab, over the interval since the previous row) pressure tensor, the "
                     "kinetic heat flux q, the mean spin omega (observables/profiles.hpp)",
-                    prov.notes[1]};
+                    prov.notes[1], box_note};
         pp.units = column_units(table.profile_table_columns());
         pcsv.emplace(column_names(table.profile_table_columns()), pp);
     }
@@ -434,6 +453,7 @@ int run_run(const RunOptions& o, const Communicator& comm) {
     std::mutex mutex;
     std::size_t combined = 0, on_disk = 0;
     std::vector<std::vector<double>> table_rows; // the combined rows, for the steady-state summary
+    std::vector<std::vector<std::vector<double>>> profile_blocks; // profiles.csv's rows per output time
     // The file is rewritten (atomically: temporary, fsync, rename) at every output time whose row
     // is complete, so a crash keeps every row computed; only when rewriting would take more than a
     // tenth of the run's time (a large file and dense outputs: each rewrite costs O(file size)) are
@@ -454,9 +474,11 @@ int run_run(const RunOptions& o, const Communicator& comm) {
             csv.add_row(table_rows.back());
             if (wcsv)
                 wcsv->add_row(table.combine_walls(spans));
-            if (pcsv)
-                for (const std::vector<double>& r : table.combine_profiles(spans))
+            if (pcsv) {
+                profile_blocks.push_back(table.combine_profiles(spans));
+                for (const std::vector<double>& r : profile_blocks.back())
                     pcsv->add_row(r);
+            }
         }
         const auto t = std::chrono::steady_clock::now();
         if (csv.rows() > on_disk && (now || t - last_write >= 10 * write_cost)) {
@@ -655,7 +677,7 @@ int run_run(const RunOptions& o, const Communicator& comm) {
     std::string steady_note, scaled_headline;
     {
         const std::vector<std::string> names = table.names();
-        const bool shear = spec.shear.has_value();
+        const bool shear = driven(cfg); // a steady state (uniform shear, driving walls): steady.csv
         const SteadyResult st = steady_summary(names, table_rows, shear);
         const char* file = shear ? steady_file : scaled_file;
         CsvProvenance sp = prov;
@@ -666,6 +688,41 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         CsvWriter steady(steady_csv_columns(st), sp);
         steady.add_row(steady_csv_row(st, names, table_rows));
         steady.write(dir / file);
+        if (shear && pcsv && profile_blocks.size() == table_rows.size()) {
+            // The profiles over the same window: per bin, every field's batch mean and error.
+            const std::vector<Column>& pc = table.profile_table_columns();
+            std::vector<std::string> names_p = {pc[2].name, pc[3].name};
+            std::vector<std::string> units_p = {pc[2].unit, pc[3].unit};
+            std::vector<std::size_t> fields;
+            for (std::size_t j = 4; j < pc.size(); ++j)
+                if (!pc[j].name.ends_with("_err")) {
+                    fields.push_back(j);
+                    names_p.insert(names_p.end(), {pc[j].name, pc[j].name + "_err"});
+                    units_p.insert(units_p.end(), {pc[j].unit, pc[j].unit});
+                }
+            CsvProvenance spp = prov;
+            spp.notes = {fmt::format("profiles.csv averaged over the steady window of moments.csv ({} rows from "
+                                     "coll_per_particle = {:.6g}{}); X_err = batch-means standard error",
+                                     st.rows, table_rows[st.first_row][1],
+                                     st.reached ? "" : "; NOT steady: the second half of the run"),
+                         prov.notes[1], box_note};
+            spp.units = units_p;
+            CsvWriter sp_csv(names_p, spp);
+            for (std::size_t b = 0; b < profile_blocks[0].size(); ++b) {
+                std::vector<double> row = {profile_blocks[0][b][2], profile_blocks[0][b][3]};
+                std::vector<double> x;
+                for (std::size_t j : fields) {
+                    x.clear();
+                    for (std::size_t r = st.first_row; r < profile_blocks.size(); ++r)
+                        x.push_back(profile_blocks[r][b][j]);
+                    const SteadyValue v = batch_mean(x, SteadyOptions{}.batches);
+                    row.push_back(v.mean);
+                    row.push_back(v.err);
+                }
+                sp_csv.add_row(row);
+            }
+            sp_csv.write(dir / steady_profiles_file);
+        }
         const auto cpp = std::find(names.begin(), names.end(), "coll_per_particle") - names.begin();
         const char* what = shear ? "steady" : "scaled state";
         // With restitution that depends on the impact speed, a cooling gas has no scaled state: its

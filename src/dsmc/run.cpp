@@ -117,7 +117,9 @@ std::size_t memory_per_replica_fixed_bound(const RunSpec& spec) {
     // tallies (one per 64 cells: a pair count each, and the unit's bookkeeping).
     const double per_cell =
         4.0 * static_cast<double>(S + 1) + 4.0 * 64 + (8.0 * spec.pairs.size() + 64) / 64 + 6 * sizeof(double);
-    return static_cast<std::size_t>(cells * per_cell);
+    // The step's local collision frequencies: per chunk of grains (up to 64 per species), bin and species, 5 sums.
+    const double bins = d.cells[static_cast<std::size_t>(d.profile_axis)];
+    return static_cast<std::size_t>(cells * per_cell + 64.0 * static_cast<double>(S) * bins * 5 * 8);
 }
 
 std::vector<Column> wall_columns(const RunSpec& spec) {

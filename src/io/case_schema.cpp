@@ -323,9 +323,10 @@ std::vector<Key> keys() {
             .fallback(0.2)
             .gt(0)
             .le(1)
-            .doc("step of free flight and cell collisions, in mean free times of the current state "
-                 "(re-evaluated every step: a cooling gas keeps its steps per collision); shortened to "
-                 "end at each output row"),
+            .doc("step of free flight and cell collisions, in mean free times of the current state's "
+                 "densest slab (the largest local collision frequency over the profile bins, re-evaluated "
+                 "every step: a cooling gas keeps its steps per collision); shortened to end at each "
+                 "output row"),
         Key("domain.allow_coarse", T::boolean)
             .fallback(false)
             .doc("accept cells longer than one mean free path (the DSMC's transport errors grow as the "

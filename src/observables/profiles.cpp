@@ -39,16 +39,25 @@ std::vector<double> compute_profiles(const ProfileGeometry& g, const std::vector
     const double per_length = g.bins / g.length;
     const double tau = g.half_flight, L = g.length;
     const Vec3 dv = tau * g.gravity;
-    // The coordinate along the axis in the middle of the flight (profiles.hpp), in [0, L].
-    const auto midflight = [&](std::size_t i) {
-        double q = coordinate(x[i], g.axis) + tau * coordinate(v[i], g.axis) + 0.5 * tau * coordinate(dv, g.axis);
-        if (g.periodic)
-            q -= L * std::floor(q / L);
-        return std::clamp(q, 0.0, L);
-    };
+    // Each grain's bin and velocity in the middle of the flight (profiles.hpp). Along a walled axis
+    // a grain that would pass a wall in that half flight is reflected specularly (position mirrored,
+    // normal velocity reversed): without it, the grains flying into a wall would pile up in the
+    // wall's bin and give it a flow into the wall.
     std::vector<std::size_t> bin(x.size());
-    for (std::size_t i = 0; i < x.size(); ++i)
-        bin[i] = static_cast<std::size_t>(std::clamp(static_cast<int>(midflight(i) * per_length), 0, g.bins - 1));
+    std::vector<Vec3> vel(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        Vec3 u_i = v[i] + dv;
+        double q = coordinate(x[i], g.axis) + tau * coordinate(v[i], g.axis) + 0.5 * tau * coordinate(dv, g.axis);
+        if (g.periodic) {
+            q -= L * std::floor(q / L);
+        } else if (q < 0 || q > L) {
+            q = q < 0 ? -q : 2 * L - q;
+            double& n = g.axis == 0 ? u_i.x : g.axis == 1 ? u_i.y : u_i.z;
+            n = -n;
+        }
+        bin[i] = static_cast<std::size_t>(std::clamp(static_cast<int>(std::clamp(q, 0.0, L) * per_length), 0, g.bins - 1));
+        vel[i] = u_i;
+    }
 
     struct Sums {
         double count = 0, mass = 0, rot = 0;
@@ -62,7 +71,7 @@ std::vector<double> compute_profiles(const ProfileGeometry& g, const std::vector
             Sums& b = s[bin[i]];
             b.count += 1;
             b.mass += sp.grain.mass;
-            b.momentum += sp.grain.mass * (v[i] + dv);
+            b.momentum += sp.grain.mass * vel[i];
             b.spin += w[i];
             b.rot += sp.moment_of_inertia() * norm2(w[i]);
         }
@@ -73,7 +82,7 @@ std::vector<double> compute_profiles(const ProfileGeometry& g, const std::vector
         const double m = sp.grain.mass, J = sp.moment_of_inertia();
         for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i) {
             Sums& b = s[bin[i]];
-            const Vec3 c = v[i] + dv - u[bin[i]];
+            const Vec3 c = vel[i] - u[bin[i]];
             b.cc[0] += m * c.x * c.x;
             b.cc[1] += m * c.y * c.y;
             b.cc[2] += m * c.z * c.z;

@@ -79,10 +79,11 @@ TEST(Profiles, GrainsAreTakenInTheMiddleOfTheFlight) {
     const std::vector<double> p = compute_profiles(g, x, v, w, b, {Virial{}, Virial{}}, 1.0);
     EXPECT_EQ(p[0], 0.0);
     EXPECT_EQ(p[profile_field_count], 2.0);
-    // Along a walled axis the grain leaving through 0 is held at the wall: bin 0.
+    // Along a walled axis the grain leaving through 0 is reflected: at 0.1 in bin 0, moving at +1.
     g.periodic = false;
     const std::vector<double> q = compute_profiles(g, x, v, w, b, {Virial{}, Virial{}}, 1.0);
     EXPECT_EQ(q[0], 1.0);
+    EXPECT_EQ(q[1], 1.0); // u_x of bin 0
     // Gravity: the velocity at mid-flight.
     g.gravity = {0, 0, -10};
     const std::vector<double> r = compute_profiles(g, x, v, w, b, {Virial{}, Virial{}}, 1.0);

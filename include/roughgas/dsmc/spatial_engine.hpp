@@ -220,23 +220,72 @@ template <class Policy, bool General = false> class SpatialEngine {
         ++steps_;
     }
 
-    // The Maxwellian collision frequency per grain of the current state, n pi sigma^2 <g> per pair
-    // type at the species' temperatures (m <v^2>/3 about the total mean velocity, which is zero in a
-    // periodic box up to round-off): the unit of the step length (domain.time_step).
-    double collision_frequency() const {
-        std::vector<double> T_over_m(blocks_.size());
-        for (std::size_t s = 0; s < blocks_.size(); ++s) {
-            double sum = 0;
-            Vec3 mean{};
-            for (std::size_t i = blocks_[s].offset; i < blocks_[s].offset + blocks_[s].count; ++i) {
-                sum += norm2(v_[i]);
-                mean += v_[i];
-            }
-            const double n = static_cast<double>(blocks_[s].count);
-            // About the species' mean velocity (walls and gravity move the centre of mass).
-            T_over_m[s] = n > 0 ? std::max(0.0, sum / n - norm2((1.0 / n) * mean)) / 3.0 : 0.0;
+    // The largest local collision frequency per grain: over the profile bins (the slabs of
+    // profiles.csv), the Maxwellian n_b pi sigma^2 <g> per pair type at the slab's densities and
+    // species temperatures (m <|v - u_b|^2>/3 about the species' mean velocity in the slab). The
+    // unit of the step length (domain.time_step): the densest, hottest slab keeps its steps per
+    // collision (a heated bed's floor, a cluster's slab), where the box's mean frequency would give
+    // it steps of several of its mean free times. In a uniform gas the slabs' sampling noise makes
+    // it a few per cent above the mean.
+    double collision_frequency() {
+        const std::size_t S = blocks_.size(), B = bin_virial_.size();
+        const int a = domain_.profile_axis;
+        const double per_length = static_cast<double>(B) / domain_.size[static_cast<std::size_t>(a)];
+        // Per (bin, species): count, sum of v, sum of |v|^2; over fixed chunks of each species'
+        // grains (never the threads), merged in chunk order.
+        constexpr std::size_t fields = 5;
+        struct Chunk {
+            std::size_t species, first, last;
+        };
+        std::vector<Chunk> chunks;
+        for (std::size_t s = 0; s < S; ++s) {
+            const std::size_t P = std::clamp<std::size_t>(blocks_[s].count / 65536, 1, 64);
+            for (std::size_t p = 0; p < P; ++p)
+                chunks.push_back({s, blocks_[s].offset + blocks_[s].count * p / P,
+                                  blocks_[s].offset + blocks_[s].count * (p + 1) / P});
         }
-        return maxwellian_collision_frequency(types_, T_over_m, volume(), static_cast<double>(particles_));
+        frequency_sums_.assign(chunks.size() * B * fields, 0.0);
+        team_->for_each(chunks.size(), [&](std::size_t u) {
+            double* sums = frequency_sums_.data() + u * B * fields;
+            for (std::size_t i = chunks[u].first; i < chunks[u].last; ++i) {
+                const double q = component(x_[i], a) * per_length;
+                const auto b = static_cast<std::size_t>(std::clamp(static_cast<int>(q), 0, static_cast<int>(B) - 1));
+                double* f = sums + b * fields;
+                f[0] += 1;
+                f[1] += v_[i].x;
+                f[2] += v_[i].y;
+                f[3] += v_[i].z;
+                f[4] += norm2(v_[i]);
+            }
+        });
+        std::vector<double> total(B * S * fields, 0.0); // (bin, species, field)
+        for (std::size_t u = 0; u < chunks.size(); ++u)
+            for (std::size_t b = 0; b < B; ++b)
+                for (std::size_t k = 0; k < fields; ++k)
+                    total[(b * S + chunks[u].species) * fields + k] += frequency_sums_[(u * B + b) * fields + k];
+        double nu_max = 0;
+        std::vector<double> T_over_m(S);
+        std::vector<PairType> types = types_;
+        const double bin_volume = volume() / static_cast<double>(B);
+        for (std::size_t b = 0; b < B; ++b) {
+            double in_bin = 0;
+            for (std::size_t s = 0; s < S; ++s) {
+                const double* f = &total[(b * S + s) * fields];
+                const double n = f[0];
+                in_bin += n;
+                // About the species' mean velocity in the slab (walls and gravity make flows).
+                const Vec3 mean = n > 0 ? (1.0 / n) * Vec3{f[1], f[2], f[3]} : Vec3{};
+                T_over_m[s] = n > 0 ? std::max(0.0, f[4] / n - norm2(mean)) / 3.0 : 0.0;
+            }
+            if (in_bin < 2)
+                continue;
+            for (PairType& t : types) {
+                const double na = total[(b * S + t.a) * fields], nb = total[(b * S + t.b) * fields];
+                t.pairs = t.a == t.b ? 0.5 * na * (na - 1) : na * nb;
+            }
+            nu_max = std::max(nu_max, maxwellian_collision_frequency(types, T_over_m, bin_volume, in_bin));
+        }
+        return nu_max;
     }
 
     // The simulated volume N/n (the homogeneous engine's): energies per unit volume use it.
@@ -686,6 +735,7 @@ template <class Policy, bool General = false> class SpatialEngine {
     std::vector<PairConstants> wall_pc_; // per species: the grain with an infinitely massive wall
     WallFluxes wall_flux_{};
     std::vector<Virial> cell_virial_, bin_virial_; // this step's per cell; since the last row per bin
+    std::vector<double> frequency_sums_;           // collision_frequency's scratch
     std::vector<Vec3> x_, v_, w_, x2_, v2_, w2_;
     std::vector<std::uint32_t> key_, cell_start_, counts_;
     std::array<double, 3> cells_per_length_{};

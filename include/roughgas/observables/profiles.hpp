@@ -10,8 +10,8 @@
 // carries through a plane is its average over the flight. Sampled right after the collisions, P_xy
 // misses h/2 p du/dy (7 % of the viscosity at h = 0.2 mean free times); sampled at mid-flight, the
 // kinetic fluxes agree with what the walls receive. Each grain is taken at x + v h/2 + g h^2/8
-// with the velocity v + g h/2 (wrapped along a periodic axis, held inside along a walled one),
-// h being the flight that follows.
+// with the velocity v + g h/2 (wrapped along a periodic axis; along a walled one, a grain that
+// would pass the wall is reflected specularly), h being the flight that follows.
 //
 // Per bin, with N_b grains of masses m and moments of inertia J,
 // V_b the slab's volume and F the physical grains per simulated one:
