@@ -7,7 +7,7 @@
 #   docs/usf_rough.png         roughgas run cases/usf_rough.toml, plot_shear.py
 #   docs/usf_sweep_alpha.png   roughgas sweep of cases/usf_rough.toml over alpha, plot_shear.py --sweep
 #   docs/box_*.png             roughgas run cases/box_{couette,fourier,thermal_walls,heated_bed,shear_mode}.toml,
-#                              plot_profiles.py (the shear mode's last block: --from 100)
+#                              plot_profiles.py (the shear mode's last block: --from 60)
 # docs/accuracy.png is the work-precision study of docs/accuracy.md (scripts/bench_accuracy.py,
 # minutes of CPU): it is not redrawn here.
 # Usage: scripts/docs_figures.sh [WORK_DIR]   (default out/docs_figures; the build must exist)
@@ -47,7 +47,7 @@ cp "$work/usf_alpha/sweep.png" "$root/docs/usf_sweep_alpha.png"
 for c in couette fourier thermal_walls heated_bed shear_mode; do
   "$roughgas" run "$root/cases/box_$c.toml" --out "$work/box_$c" --force --quiet
   if [ "$c" = shear_mode ]; then
-    "$py" "$root/scripts/plot_profiles.py" "$work/box_$c" --from 100
+    "$py" "$root/scripts/plot_profiles.py" "$work/box_$c" --from 60
   else
     "$py" "$root/scripts/plot_profiles.py" "$work/box_$c"
   fi

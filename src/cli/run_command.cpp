@@ -454,6 +454,36 @@ int run_run(const RunOptions& o, const Communicator& comm) {
     std::size_t combined = 0, on_disk = 0;
     std::vector<std::vector<double>> table_rows; // the combined rows, for the steady-state summary
     std::vector<std::vector<std::vector<double>>> profile_blocks; // profiles.csv's rows per output time
+    // Box runs: the cells' resolution of the densest slab, watched as the rows come (a cooling gas's
+    // clusters, a heated floor): a warning in the CSV headers and on stderr once it passes 0.5, and
+    // again at 1 local mean free path.
+    const std::vector<std::string> moment_names = table.names();
+    const auto resolution_at = std::find(moment_names.begin(), moment_names.end(), "cell_over_lambda");
+    double resolution_threshold = resolution_at == moment_names.end() ? HUGE_VAL : 0.5;
+    const auto cpp_at = static_cast<std::size_t>(
+        std::find(moment_names.begin(), moment_names.end(), "coll_per_particle") - moment_names.begin());
+    const auto watch_resolution = [&](const std::vector<double>& row) {
+        const double r = row[static_cast<std::size_t>(resolution_at - moment_names.begin())];
+        while (r > resolution_threshold) {
+            const std::string note =
+                resolution_threshold < 1
+                    ? fmt::format("warning: from t = {:.6g} ({:.4g} collisions per particle) the cells reach {:.3g} "
+                                  "local mean free paths in the densest slab (more than 0.5): in gradients there the "
+                                  "viscosity comes out too large by about 16/(45 pi) (edge/lambda)^2 = {:.2g} "
+                                  "(cell_over_lambda in moments.csv)",
+                                  row[0], row[cpp_at], r, 16.0 / (45.0 * std::numbers::pi) * r * r)
+                    : fmt::format("warning: from t = {:.6g} ({:.4g} collisions per particle) the cells reach {:.3g} "
+                                  "local mean free paths in the densest slab (more than 1): the cells no longer "
+                                  "resolve the gas there (refine domain.cells)",
+                                  row[0], row[cpp_at], r);
+            csv.add_note(note);
+            if (pcsv)
+                pcsv->add_note(note);
+            if (!quiet)
+                std::cerr << "roughgas run: " << note << '\n';
+            resolution_threshold = resolution_threshold < 1 ? 1.0 : HUGE_VAL;
+        }
+    };
     // The file is rewritten (atomically: temporary, fsync, rename) at every output time whose row
     // is complete, so a crash keeps every row computed; only when rewriting would take more than a
     // tenth of the run's time (a large file and dense outputs: each rewrite costs O(file size)) are
@@ -472,6 +502,7 @@ int run_run(const RunOptions& o, const Communicator& comm) {
                 spans.emplace_back(r[combined]);
             table_rows.push_back(table.combine(spans));
             csv.add_row(table_rows.back());
+            watch_resolution(table_rows.back());
             if (wcsv)
                 wcsv->add_row(table.combine_walls(spans));
             if (pcsv) {

@@ -89,6 +89,11 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
     profile_geometry.weight = spec.density * box_volume / N;
     profile_geometry.periodic = !domain.walled(domain.profile_axis);
     profile_geometry.rotation = Policy::needs_rotation;
+    double edge = 0, sigma_max = 0; // the longest cell edge, the largest diameter
+    for (std::size_t a = 0; a < 3; ++a)
+        edge = std::max(edge, domain.size[a] / domain.cells[a]);
+    for (const SpeciesBlock& b : blocks)
+        sigma_max = std::max(sigma_max, 2 * b.grain.radius);
     profile_geometry.gravity = {domain.gravity[0], domain.gravity[1], domain.gravity[2]};
 
     const auto state = [&] {
@@ -121,17 +126,21 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
             if (domain.initial.mode != Perturbation::none)
                 for (double a : engine.wave_amplitudes())
                     row.push_back(a);
-            append_wall_columns(row, domain, engine.wall_fluxes(), walls_prev, spec.density, N,
-                                first ? std::numeric_limits<double>::quiet_NaN() : t - t_prev);
-            walls_prev = engine.wall_fluxes();
-            // Sampled in the middle of the flight of the step that follows (its length before any
-            // shortening for an output).
+            // The profiles, sampled in the middle of the flight of the step that follows (its length
+            // before any shortening for an output), give the cells' resolution of the densest slab.
             const double nu = engine.collision_frequency();
             profile_geometry.half_flight = nu > 0 && std::isfinite(nu) ? 0.5 * domain.time_step / nu : 0.0;
             const std::vector<double> profiles =
                 compute_profiles(profile_geometry, engine.positions(), engine.velocities(),
                                  engine.angular_velocities(), blocks, engine.take_virial(),
                                  first ? std::numeric_limits<double>::quiet_NaN() : t - t_prev);
+            double n_max = 0;
+            for (std::size_t b = 0; b < profiles.size(); b += profile_field_count)
+                n_max = std::max(n_max, profiles[b]);
+            row.push_back(edge / mean_free_path(n_max, sigma_max));
+            append_wall_columns(row, domain, engine.wall_fluxes(), walls_prev, spec.density, N,
+                                first ? std::numeric_limits<double>::quiet_NaN() : t - t_prev);
+            walls_prev = engine.wall_fluxes();
             row.insert(row.end(), profiles.begin(), profiles.end());
             if (row.size() != columns)
                 throw std::logic_error("run_replica: row and columns differ");

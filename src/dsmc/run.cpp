@@ -199,6 +199,8 @@ std::vector<Column> dsmc_columns(const RunSpec& spec) {
     if (spec.domain && spec.domain->initial.mode != Perturbation::none) // the initial wave's amplitudes
         for (const Column& w : {Column{"u_wave", "length/time"}, Column{"n_wave", "-"}, Column{"e_wave", "-"}})
             c.push_back(w);
+    if (spec.domain) // the cells' resolution of the densest slab
+        c.push_back({"cell_over_lambda", "-"});
     return c;
 }
 

@@ -70,6 +70,7 @@ CsvWriter::CsvWriter(std::vector<std::string> columns, const CsvProvenance& p)
     for (const std::string& n : p.notes) {
         comment(text_, n);
     }
+    notes_end_ = text_.size();
     if (!p.resolved_case.empty()) {
         comment(text_, "resolved case (every default filled in):");
         comment_block(text_, p.resolved_case);
@@ -89,6 +90,13 @@ CsvWriter::CsvWriter(std::vector<std::string> columns, const CsvProvenance& p)
         text_ += (i ? "," : "") + columns_[i];
     }
     text_ += '\n';
+}
+
+void CsvWriter::add_note(const std::string& note) {
+    std::string line;
+    comment(line, note);
+    text_.insert(notes_end_, line);
+    notes_end_ += line.size();
 }
 
 void CsvWriter::add_row(std::span<const double> values) {

@@ -236,6 +236,9 @@ const std::map<std::string, std::string>& meanings() {
         {"E_diss_rate", "energy dissipated per unit volume and time since the previous row (NaN at t = 0)"},
         {"beta_clamped",
          "collisions so far whose brilliantov beta left [-1, 1] and was clamped (brilliantov runs)"},
+        {"cell_over_lambda", "box runs: the largest cell edge over the local mean free path "
+                             "1/(sqrt(2) pi n_b sigma^2) among the profile slabs (n_b the slab's density, sigma the "
+                             "largest diameter); run warns once it exceeds 0.5 and 1"},
         {"u_wave", "box runs with an [initial] wave: its velocity amplitude, (2/N) sum of v.e sin(k.x) over the "
                    "grains (e: the transverse direction of a transverse wave, k/|k| for the other waves)"},
         {"n_wave", "box runs with an [initial] wave: the relative amplitude of the density wave, (2/N) sum of "

@@ -34,6 +34,9 @@ using HistogramSink = std::function<void(const HistogramSet&)>;
 // (coll_rate.NAME: collisions of a NAME grain per NAME grain and unit time), then T_tr.A/T_tr.B and
 // T_rot.A/T_rot.B for every species pair A before B. Runs with a brilliantov pair end with
 // beta_clamped: collisions so far whose model beta left [-1, 1] (restitution_policy.hpp, clamp_beta).
+// Box runs: u_wave, n_wave, e_wave (with an [initial] wave), then cell_over_lambda: the largest cell
+// edge over the local mean free path 1/(sqrt(2) pi n_b sigma^2) among the profile slabs (n_b the
+// slab's density, sigma the largest diameter).
 std::vector<Column> dsmc_columns(const RunSpec& spec);
 
 // Columns of walls.csv after t and coll_per_particle (runs with walls; empty otherwise): per walled

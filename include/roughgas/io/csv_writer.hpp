@@ -32,6 +32,9 @@ class CsvWriter {
     void add_row(std::span<const double> values);
     void add_row(std::initializer_list<double> values) { add_row(std::span(values.begin(), values.size())); }
 
+    // A '#' line after the provenance notes (e.g. a warning found while the run proceeds).
+    void add_note(const std::string& note);
+
     std::size_t rows() const { return rows_; }
     const std::vector<std::string>& columns() const { return columns_; }
     const std::string& text() const { return text_; }
@@ -42,6 +45,7 @@ class CsvWriter {
     std::vector<std::string> columns_;
     std::string text_;
     std::size_t rows_ = 0;
+    std::size_t notes_end_ = 0; // where add_note inserts
 };
 
 std::string roughgas_version();
