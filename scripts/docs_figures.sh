@@ -6,7 +6,7 @@
 #   docs/hcs_mixture.png       roughgas run cases/hcs_mixture.toml, plot.py
 #   docs/usf_rough.png         roughgas run cases/usf_rough.toml, plot_shear.py
 #   docs/usf_sweep_alpha.png   roughgas sweep of cases/usf_rough.toml over alpha, plot_shear.py --sweep
-#   docs/box_*.png             roughgas run cases/box_{couette,fourier,thermal_walls,heated_bed,shear_mode}.toml,
+#   docs/box_*.png             roughgas run cases/box_{couette,fourier,thermal_walls,heated_bed,usf,shear_mode}.toml,
 #                              plot_profiles.py (the shear mode's last block: --from 60)
 # docs/accuracy.png is the work-precision study of docs/accuracy.md (scripts/bench_accuracy.py,
 # minutes of CPU): it is not redrawn here.
@@ -44,7 +44,7 @@ cp "$work/usf_rough/moments_shear.png" "$root/docs/usf_rough.png"
 "$py" "$root/scripts/plot_shear.py" --sweep "$work/usf_alpha"
 cp "$work/usf_alpha/sweep.png" "$root/docs/usf_sweep_alpha.png"
 
-for c in couette fourier thermal_walls heated_bed shear_mode; do
+for c in couette fourier thermal_walls heated_bed usf shear_mode; do
   "$roughgas" run "$root/cases/box_$c.toml" --out "$work/box_$c" --force --quiet
   if [ "$c" = shear_mode ]; then
     "$py" "$root/scripts/plot_profiles.py" "$work/box_$c" --from 60

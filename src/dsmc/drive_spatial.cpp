@@ -16,6 +16,7 @@
 
 #include "roughgas/core/bytes.hpp"
 #include "roughgas/dsmc/spatial_engine.hpp"
+#include "roughgas/observables/pressure.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -63,6 +64,7 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
     const std::size_t columns = replica_row_columns(spec).size();
     const std::string kernel = std::string("box of ") + std::to_string(engine.cells()) + " cells" +
                                (domain.has_walls() ? ", walls" : "") + (domain.has_gravity() ? ", gravity" : "") +
+                               (domain.lees_edwards() ? ", Lees-Edwards" : "") +
                                ", " + std::string(Policy::name);
 
     std::vector<double> outputs = spec.output_times;
@@ -89,6 +91,13 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
     profile_geometry.weight = spec.density * box_volume / N;
     profile_geometry.periodic = !domain.walled(domain.profile_axis);
     profile_geometry.rotation = Policy::needs_rotation;
+    profile_geometry.shear_rate = domain.shear_rate;
+    profile_geometry.box = domain.size;
+    const bool sheared = domain.lees_edwards();
+    std::vector<Vec3> peculiar(sheared ? engine.particles() : 0), spin(sheared ? engine.particles() : 0);
+    std::vector<UsfSpecies> usf_species;
+    for (const SpeciesBlock& b : blocks)
+        usf_species.push_back({static_cast<double>(b.count) / N, b.grain.mass, b.grain.radius});
     double edge = 0, sigma_max = 0; // the longest cell edge, the largest diameter
     for (std::size_t a = 0; a < 3; ++a)
         edge = std::max(edge, domain.size[a] / domain.cells[a]);
@@ -113,27 +122,65 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
     std::vector<double> row;
     const auto emit = [&](bool repeat) {
         if (!repeat) {
-            const Moments m = compute_moments(column_of(engine.velocities().data(), 0),
-                                              column_of(engine.angular_velocities().data(), 0), slices,
-                                              engine.team());
             const double t = engine.time();
             const std::int64_t c = engine.collisions();
             const bool first = c == 0 && t == 0;
-            const double inv_dt = !first && t > t_prev ? 1.0 / (t - t_prev) : std::numeric_limits<double>::quiet_NaN();
-            row.clear();
-            append_row_head(row, t, c, c_prev, N, m, inv_dt, tally, engine.volume());
-            append_row_tail(row, m, tally, types, blocks, inv_dt, clamp_column);
-            if (domain.initial.mode != Perturbation::none)
-                for (double a : engine.wave_amplitudes())
-                    row.push_back(a);
+            const double nan = std::numeric_limits<double>::quiet_NaN();
+            const double inv_dt = !first && t > t_prev ? 1.0 / (t - t_prev) : nan;
             // The profiles, sampled in the middle of the flight of the step that follows (its length
             // before any shortening for an output), give the cells' resolution of the densest slab.
             const double nu = engine.collision_frequency();
             profile_geometry.half_flight = nu > 0 && std::isfinite(nu) ? 0.5 * domain.time_step / nu : 0.0;
+            profile_geometry.time = t;
+            const std::vector<Virial> virial = engine.take_virial();
             const std::vector<double> profiles =
                 compute_profiles(profile_geometry, engine.positions(), engine.velocities(),
-                                 engine.angular_velocities(), blocks, engine.take_virial(),
-                                 first ? std::numeric_limits<double>::quiet_NaN() : t - t_prev);
+                                 engine.angular_velocities(), blocks, virial, first ? nan : t - t_prev);
+            // A sheared box: the moments of the peculiar velocities (about the images' flow) in the
+            // middle of the next flight, as the profiles (observables/profiles.hpp) and as the
+            // homogeneous shear runs' Strang steps report them (half a stream after the collisions:
+            // V_x - a (h/2) V_y); the spins about their mean.
+            Vec3 Omega{};
+            Vec3Column v_col = column_of(engine.velocities().data(), 0);
+            Vec3Column w_col = column_of(engine.angular_velocities().data(), 0);
+            if (sheared) {
+                Omega = mean_spin(w_col, slices);
+                for (std::size_t i = 0; i < engine.particles(); ++i) {
+                    peculiar[i] = engine.peculiar_velocity(i, profile_geometry.half_flight);
+                    spin[i] = engine.angular_velocities()[i] - Omega;
+                }
+                v_col = column_of(peculiar.data(), 0);
+                w_col = column_of(spin.data(), 0);
+            }
+            const Moments m = compute_moments(v_col, w_col, slices, engine.team());
+            row.clear();
+            append_row_head(row, t, c, c_prev, N, m, inv_dt, tally, engine.volume());
+            if (sheared) {
+                // Kinetic plus collisional (the interval's cell collisions: impulse times separation).
+                PressureTensor P = pressure_tensor(v_col, slices, engine.volume(), m.mean_velocity);
+                if (!first) {
+                    const double f = 1.0 / (engine.volume() * (t - t_prev));
+                    for (const Virial& b : virial) {
+                        P.xx += f * b[0];
+                        P.yy += f * b[1];
+                        P.zz += f * b[2];
+                        P.xy += f * b[3];
+                        P.xz += f * b[4];
+                        P.yz += f * b[5];
+                    }
+                }
+                const double T = m.all.T_tr;
+                const UsfReduced r =
+                    usf_reduced(P, spec.shear->rate, usf_nu(usf_species, spec.density, T), spec.density, T);
+                for (double x : {P.xx, P.yy, P.zz, P.xy, P.xz, P.yz, Omega.x, Omega.y, Omega.z, r.a_star,
+                                 r.eta_star, r.P_star.xx, r.P_star.yy, r.P_star.zz, r.P_star.xy, r.P_star.xz,
+                                 r.P_star.yz, r.N1_star, r.N2_star})
+                    row.push_back(x);
+            }
+            append_row_tail(row, m, tally, types, blocks, inv_dt, clamp_column);
+            if (domain.initial.mode != Perturbation::none)
+                for (double a : engine.wave_amplitudes())
+                    row.push_back(a);
             double n_max = 0;
             for (std::size_t b = 0; b < profiles.size(); b += profile_field_count)
                 n_max = std::max(n_max, profiles[b]);
@@ -225,7 +272,7 @@ template <class Policy>
 ReplicaEnd run_box(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
                    int replica, const ReplicaIo& io) {
     // No wall code in the flight of a periodic box without gravity.
-    if (spec.domain->has_walls() || spec.domain->has_gravity())
+    if (spec.domain->general_flight())
         return run_box_flight<Policy, true>(spec, blocks, std::move(policies), replica, io);
     return run_box_flight<Policy, false>(spec, blocks, std::move(policies), replica, io);
 }

@@ -68,7 +68,11 @@ void validate(const RunSpec& spec) {
             require(spec.domain->size[a] > 0 && std::isfinite(spec.domain->size[a]) && spec.domain->cells[a] >= 1,
                     "domain sizes must be > 0 and cells >= 1");
         require(spec.domain->time_step > 0 && std::isfinite(spec.domain->time_step), "domain time step must be > 0");
-        require(!spec.shear, "a spatially resolved run has no uniform shear flow (Lees-Edwards boundaries)");
+        require(spec.shear.has_value() == spec.domain->lees_edwards() &&
+                    (!spec.shear || spec.shear->rate == spec.domain->shear_rate),
+                "a sheared box has Lees-Edwards boundaries at the shear rate, and only a sheared box");
+        require(!spec.domain->lees_edwards() || (!spec.domain->walled(0) && !spec.domain->walled(1)),
+                "Lees-Edwards boundaries need x and y periodic");
         require(spec.kernel == CollisionKernel::hard_sphere, "a spatially resolved run collides hard spheres");
         require(spec.histogram_times.empty(), "a spatially resolved run writes no histograms");
         require(spec.domain->profile_axis >= 0 && spec.domain->profile_axis <= 2, "the profile axis must be 0, 1 or 2");

@@ -590,6 +590,8 @@ class Builder {
             d.gravity = r.real3("gravity");
             if (r.has("profile_axis")) {
                 d.profile_axis = static_cast<int>(r.string("profile_axis")[0] - 'x');
+            } else if (root_["run"]["kind"].value_or(std::string()) == "shear") {
+                d.profile_axis = 1; // the Lees-Edwards gradient
             } else {
                 const auto walled = std::find(d.boundary.begin(), d.boundary.end(), Boundary::walls);
                 d.profile_axis = walled == d.boundary.end() ? 0 : static_cast<int>(walled - d.boundary.begin());
@@ -882,10 +884,14 @@ class Builder {
     // that resolve the mean free path.
     void check_domain(const CaseConfig& c) {
         const DomainConfig& d = *c.domain;
-        if (c.run.kind == RunKind::shear)
-            add("run.kind", "run.kind = \"shear\" with [domain]: the box has periodic boundaries only; a "
-                            "sheared box needs Lees-Edwards boundaries (use the homogeneous uniform shear flow: "
-                            "no [domain])");
+        if (c.run.kind == RunKind::shear) // Lees-Edwards along y: x and y periodic
+            for (std::size_t a : {0, 1})
+                if (d.boundary[a] == Boundary::walls)
+                    add("domain.boundary",
+                        fmt::format("domain.boundary[{}] = \"walls\" with run.kind = \"shear\": a sheared box has "
+                                    "Lees-Edwards boundaries along y and flows along x, both periodic (walls "
+                                    "along z only)",
+                                    a));
         if (c.run.kernel == CollisionKernel::maxwell)
             add("run.kernel", "run.kernel = \"maxwell\" with [domain]: cells collide hard spheres only");
         if (c.run.histogram_every > 0)

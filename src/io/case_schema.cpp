@@ -290,7 +290,7 @@ std::vector<Key> keys() {
             .le(1)
             .doc("Strang splitting step h (stream h/2, collide h, stream h/2), in mean free times of the "
                  "state each step's collisions start from; the error of the steady P*_xy is O(h^2) "
-                 "(docs/model.md)"),
+                 "(docs/model.md); a sheared box ([domain]) steps by domain.time_step instead"),
         // [domain]
         Key("domain.size", T::real3)
             .unit("length")
@@ -309,13 +309,14 @@ std::vector<Key> keys() {
             .fallback(std::string("periodic"))
             .one_of(boundary_names)
             .doc("the boundary of each axis: periodic, or walls (two flat walls, at 0 and at L, described "
-                 "in [wall_lower] and [wall_upper])"),
+                 "in [wall_lower] and [wall_upper]); with run.kind = shear, y is Lees-Edwards (the images "
+                 "above and below move at +-shear.rate L_y along x) and x must be periodic too"),
         Key("domain.gravity", T::real3)
             .unit("length/time^2")
             .when("[0, 0, 0]")
             .doc("uniform acceleration [g_x, g_y, g_z] of the free flight (v += g dt, x += v dt + g dt^2/2)"),
         Key("domain.profile_axis", T::string)
-            .when("the first walled axis, else \"x\"")
+            .when("y for run.kind = shear, else the first walled axis, else \"x\"")
             .one_of(std::array<std::string_view, 3>{"x", "y", "z"})
             .doc("profiles.csv: the fields averaged over slabs normal to this axis, one slab per cell along it"),
         Key("domain.time_step", T::real)

@@ -58,6 +58,8 @@ RunSpec run_spec_from_case(const CaseConfig& cfg) {
         d.boundary = cfg.domain->boundary;
         d.gravity = cfg.domain->gravity;
         d.profile_axis = cfg.domain->profile_axis;
+        if (spec.shear)
+            d.shear_rate = spec.shear->rate; // Lees-Edwards along y
         const auto wall = [](const std::optional<WallConfig>& w) {
             WallSpec s;
             if (w) {

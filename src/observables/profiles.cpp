@@ -48,6 +48,15 @@ std::vector<double> compute_profiles(const ProfileGeometry& g, const std::vector
     for (std::size_t i = 0; i < x.size(); ++i) {
         Vec3 u_i = v[i] + dv;
         double q = coordinate(x[i], g.axis) + tau * coordinate(v[i], g.axis) + 0.5 * tau * coordinate(dv, g.axis);
+        if (g.shear_rate != 0) { // Lees-Edwards: the image's grain after a crossing of y
+            const double Lx = g.box[0], Ly = g.box[1];
+            const double k = std::floor((x[i].y + tau * v[i].y + 0.5 * tau * dv.y) / Ly);
+            if (k != 0) {
+                u_i.x -= k * g.shear_rate * Ly;
+                if (g.axis == 0)
+                    q -= k * std::fmod(g.shear_rate * Ly * (g.time + tau), Lx);
+            }
+        }
         if (g.periodic) {
             q -= L * std::floor(q / L);
         } else if (q < 0 || q > L) {

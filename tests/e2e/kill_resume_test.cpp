@@ -54,6 +54,14 @@ std::string box_walls() {
                         "[wall_upper]\nkind = \"rough\"\nvelocity = [0.5, 0.0, 0.0]\nalpha = 0.9\nbeta = 0.5\n");
 }
 
+// A sheared box (Lees-Edwards along y): the images' offset follows the time in the checkpoint.
+std::string box_shear() {
+    return "[run]\nkind = \"shear\"\nparticles = 40000\nend = 30.0\noutput_every = 1.0\nreplicas = 2\n"
+           "density = 0.02\nseed = 13\n\n[[species]]\nmass = 1.0\nradius = 0.5\ntemperature = 0.01\n"
+           "rotational_temperature = 0.002\n\n[collision]\nmodel = \"constant\"\nalpha = 0.9\nbeta = 0.0\n\n"
+           "[shear]\nrate = 0.01\n\n[domain]\nsize = [45.0, 45.0, 45.0]\ncells = [4, 16, 4]\n";
+}
+
 std::string shear() {
     return "[run]\nkind = \"shear\"\nparticles = 10000\nend = 30.0\noutput_every = 1.0\nreplicas = 2\nseed = "
            "5\n\n"
@@ -160,7 +168,8 @@ INSTANTIATE_TEST_SUITE_P(
     E2e, KillAndResume,
     ::testing::Values(Scenario{"RoughCooling3Replicas", rough_cooling(20000, 40.0), "1.5"},
                       Scenario{"Shear", shear(), "1"}, Scenario{"RoughMixture", rough_mixture(), "2"},
-                      Scenario{"Box", box(), "2"}, Scenario{"BoxWalls", box_walls(), "2"}),
+                      Scenario{"Box", box(), "2"}, Scenario{"BoxWalls", box_walls(), "2"},
+                      Scenario{"BoxShear", box_shear(), "2"}),
     [](const ::testing::TestParamInfo<Scenario>& info) { return info.param.name; });
 
 // Every line after the '#' lines has as many cells as the header: a CSV that a reader takes as is.

@@ -83,12 +83,18 @@ struct DomainSpec {
     WallSpec wall_lower, wall_upper;
     std::array<double, 3> gravity{0, 0, 0}; // uniform acceleration
     int profile_axis = 0;                   // profiles.csv: slabs normal to this axis, one per cell along it
+    // Lees-Edwards boundaries along y (run.kind = shear): the images above and below move at
+    // +-a L_y along x; the gas starts with the flow u_x = a (y - L_y/2). 0: plain periodic.
+    double shear_rate = 0;
     double time_step = 0.2;              // in mean free times of the current state
     InitialSpec initial;
 
     bool walled(int axis) const { return boundary[static_cast<std::size_t>(axis)] == Boundary::walls; }
     bool has_walls() const { return walled(0) || walled(1) || walled(2); }
     bool has_gravity() const { return gravity[0] != 0 || gravity[1] != 0 || gravity[2] != 0; }
+    bool lees_edwards() const { return shear_rate != 0; }
+    // The flight needs more than adding and wrapping.
+    bool general_flight() const { return has_walls() || has_gravity() || lees_edwards(); }
 };
 
 struct RunSpec {

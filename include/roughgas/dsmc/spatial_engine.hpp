@@ -118,8 +118,10 @@ template <class Policy, bool General = false> class SpatialEngine {
           team_(std::make_unique<WorkerTeam>(std::max(1, threads))) {
         if (policies_.size() != types_.size())
             throw std::invalid_argument("SpatialEngine: one policy per species pair needed");
-        if (!General && (domain_.has_walls() || domain_.has_gravity()))
-            throw std::invalid_argument("SpatialEngine: walls and gravity need the General flight");
+        if (!General && domain_.general_flight())
+            throw std::invalid_argument("SpatialEngine: walls, gravity and Lees-Edwards need the General flight");
+        if (domain_.lees_edwards() && (domain_.walled(0) || domain_.walled(1)))
+            throw std::invalid_argument("SpatialEngine: Lees-Edwards boundaries need x and y periodic");
         for (const SpeciesBlock& b : blocks_)
             wall_pc_.push_back(wall_pair_constants(b.grain));
         for (const WallSpec* w : {&domain_.wall_lower, &domain_.wall_upper}) {
@@ -148,6 +150,8 @@ template <class Policy, bool General = false> class SpatialEngine {
         if (domain_.profile_axis < 0 || domain_.profile_axis > 2)
             throw std::invalid_argument("SpatialEngine: the profile axis must be 0, 1 or 2");
         cell_virial_.assign(cells_, Virial{});
+        if (domain_.lees_edwards())
+            lees_edwards_crossings_.assign(particles_, 0);
         bin_virial_.assign(static_cast<std::size_t>(domain_.cells[domain_.profile_axis]), Virial{});
         const InitialSpec& wave = domain_.initial;
         for (int a = 0; a < 3; ++a)
@@ -167,6 +171,11 @@ template <class Policy, bool General = false> class SpatialEngine {
         }
         init_maxwellian(*this, blocks_, seed, replica);
         perturb_velocities();
+        if (domain_.lees_edwards()) { // the uniform shear flow u_x = a (y - L_y/2) of the images
+            for (std::size_t i = 0; i < particles_; ++i)
+                v_[i].x += domain_.shear_rate * (x_[i].y - 0.5 * domain_.size[1]);
+            remove_mean_velocity(*this, blocks_);
+        }
         sort_into_cells();
     }
 
@@ -286,6 +295,15 @@ template <class Policy, bool General = false> class SpatialEngine {
             nu_max = std::max(nu_max, maxwellian_collision_frequency(types, T_over_m, bin_volume, in_bin));
         }
         return nu_max;
+    }
+
+    // The peculiar velocity of grain i after a free flight of s: v minus the uniform shear flow of
+    // the Lees-Edwards images, a (y - L_y/2) along x, at its position then (a crossing of y = L_y
+    // changes v_x and the flow there alike); v itself without them.
+    Vec3 peculiar_velocity(std::size_t i, double s = 0) const {
+        const double y = x_[i].y + s * v_[i].y + 0.5 * s * s * domain_.gravity[1];
+        return {v_[i].x - domain_.shear_rate * (y - 0.5 * domain_.size[1]), v_[i].y + s * domain_.gravity[1],
+                v_[i].z};
     }
 
     // The simulated volume N/n (the homogeneous engine's): energies per unit volume use it.
@@ -489,10 +507,32 @@ template <class Policy, bool General = false> class SpatialEngine {
             CollisionRng rng = make_collision_stream(StreamKey{seed_, Stream::wall_emission, replica_, static_cast<std::uint64_t>(steps_), u});
             for (std::size_t i = chunks[u].first; i < chunks[u].last; ++i)
                 fly(i, chunks[u].species, dt, rng, flux[u]);
+            if (domain_.lees_edwards())
+                for (std::size_t i = chunks[u].first; i < chunks[u].last; ++i)
+                    cross_lees_edwards(i, dt);
         });
         for (const WallFluxes& f : flux)
             for (std::size_t k = 0; k < 6; ++k)
                 wall_flux_[k] += f[k];
+    }
+
+    // Lees-Edwards (Lees & Edwards 1972): the periodic images above y = L_y move at +a L_y along x,
+    // those below 0 at -a L_y, their x offset being a L_y t. A grain that left through y = L_y k
+    // times (k < 0: through 0) during the step re-enters as the image's grain: v_x - k a L_y and
+    // x - k a L_y t_end. Applied at the step's end t_end whatever the crossing time: from the crossing
+    // on, the grain flies with the new velocity, and x_cross - offset(t_c) + (v_x - a L_y)(t_end - t_c)
+    // = x(t_end) - offset(t_end). `lees_edwards_crossings_` holds each grain's k, found in fly().
+    void cross_lees_edwards(std::size_t i, double dt) {
+        const int k = lees_edwards_crossings_[i];
+        if (k == 0)
+            return;
+        lees_edwards_crossings_[i] = 0;
+        const double Lx = domain_.size[0], Ly = domain_.size[1];
+        const double offset = std::fmod(domain_.shear_rate * Ly * (t_ + dt), Lx);
+        v_[i].x -= k * domain_.shear_rate * Ly;
+        double q = x_[i].x - k * offset;
+        q -= Lx * std::floor(q / Lx);
+        x_[i].x = q >= Lx || q < 0 ? 0.0 : q;
     }
 
     void fly(std::size_t i, std::size_t s, double dt, CollisionRng& rng, WallFluxes& flux) {
@@ -520,9 +560,16 @@ template <class Policy, bool General = false> class SpatialEngine {
                 if (domain_.walled(a)) {
                     q = std::clamp(q, 0.0, L); // round-off of a crossing found just after the step
                 } else if (q < 0 || q >= L) {
-                    q -= L * std::floor(q / L);
-                    if (q >= L || q < 0)
+                    double k = std::floor(q / L);
+                    q -= L * k;
+                    if (q >= L) { // rounded onto L: the image of 0, one crossing more
                         q = 0;
+                        k += 1;
+                    } else if (q < 0) {
+                        q = 0;
+                    }
+                    if (a == 1 && domain_.lees_edwards())
+                        lees_edwards_crossings_[i] += static_cast<int>(k);
                 }
             }
             if (wall < 0)
@@ -736,6 +783,7 @@ template <class Policy, bool General = false> class SpatialEngine {
     WallFluxes wall_flux_{};
     std::vector<Virial> cell_virial_, bin_virial_; // this step's per cell; since the last row per bin
     std::vector<double> frequency_sums_;           // collision_frequency's scratch
+    std::vector<int> lees_edwards_crossings_;      // per grain within a step: its crossings of y = L_y
     std::vector<Vec3> x_, v_, w_, x2_, v2_, w2_;
     std::vector<std::uint32_t> key_, cell_start_, counts_;
     std::array<double, 3> cells_per_length_{};

@@ -11,7 +11,8 @@
 // misses h/2 p du/dy (7 % of the viscosity at h = 0.2 mean free times); sampled at mid-flight, the
 // kinetic fluxes agree with what the walls receive. Each grain is taken at x + v h/2 + g h^2/8
 // with the velocity v + g h/2 (wrapped along a periodic axis; along a walled one, a grain that
-// would pass the wall is reflected specularly), h being the flight that follows.
+// would pass the wall is reflected specularly; across Lees-Edwards boundaries it becomes the image's
+// grain), h being the flight that follows.
 //
 // Per bin, with N_b grains of masses m and moments of inertia J,
 // V_b the slab's volume and F the physical grains per simulated one:
@@ -60,6 +61,10 @@ struct ProfileGeometry {
     bool rotation = true;    // the spins take part in the energy exchange (rough grains or walls)
     double half_flight = 0;  // h/2: the grains are taken in the middle of a flight of length h
     Vec3 gravity{};
+    // Lees-Edwards along y (a sheared box): a grain passing y = L_y or 0 in the half flight is
+    // taken as the image's grain (v_x -/+ a L_y, x -/+ a L_y t at t = time + h/2).
+    double shear_rate = 0, time = 0;
+    std::array<double, 3> box{1, 1, 1};
 };
 
 // The fields of every bin, bin after bin (profile_field_count each). `virial[b]` are bin b's sums
