@@ -177,13 +177,7 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
         if (spec.shear) {
             const PressureTensor P =
                 pressure_tensor(engine.store().velocities(), slices, engine.volume(), m.mean_velocity);
-            const double T = m.all.T_tr;
-            const UsfReduced r =
-                usf_reduced(P, spec.shear->rate, usf_nu(usf_species, spec.density, T), spec.density, T);
-            for (double x : {P.xx, P.yy, P.zz, P.xy, P.xz, P.yz, Omega.x, Omega.y, Omega.z, r.a_star,
-                             r.eta_star, r.P_star.xx, r.P_star.yy, r.P_star.zz, r.P_star.xy, r.P_star.xz,
-                             r.P_star.yz, r.N1_star, r.N2_star})
-                row.push_back(x);
+            append_shear_columns(row, P, Omega, spec.shear->rate, usf_species, spec.density, m.all.T_tr);
         }
         append_row_tail(row, m, tally, types, blocks, inv_dt, clamp_column);
         if (row.size() != columns)

@@ -1,5 +1,5 @@
 #pragma once
-// What a row of moments.csv holds besides the shear columns (dsmc_columns, dsmc/run.hpp), from the
+// What a row of moments.csv holds (dsmc_columns, dsmc/run.hpp), from the
 // moments of the state and the collisions since the previous row: shared by the homogeneous
 // (drive_impl.hpp) and the spatially resolved (drive_spatial.cpp) runs, so that both write the same
 // columns with the same definitions.
@@ -7,6 +7,7 @@
 #include "roughgas/core/bytes.hpp"
 #include "roughgas/dsmc/species.hpp"
 #include "roughgas/observables/moments.hpp"
+#include "roughgas/observables/pressure.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -99,6 +100,17 @@ inline void append_row_tail(std::vector<double>& row, const Moments& m, const Ta
     }
     if (clamp_column)
         row.push_back(static_cast<double>(tally.clamped));
+}
+
+// The shear columns (shear runs: dsmc_columns, dsmc/run.hpp) from the pressure tensor P, the mean
+// spin Omega and the gas temperature T: P_ij, Omega, then the reduced a*, eta*, P*_ij, N1*, N2*.
+inline void append_shear_columns(std::vector<double>& row, const PressureTensor& P, const Vec3& Omega, double rate,
+                                 const std::vector<UsfSpecies>& species, double density, double T) {
+    const UsfReduced r = usf_reduced(P, rate, usf_nu(species, density, T), density, T);
+    for (double x : {P.xx, P.yy, P.zz, P.xy, P.xz, P.yz, Omega.x, Omega.y, Omega.z, r.a_star, r.eta_star,
+                     r.P_star.xx, r.P_star.yy, r.P_star.zz, r.P_star.xy, r.P_star.xz, r.P_star.yz, r.N1_star,
+                     r.N2_star})
+        row.push_back(x);
 }
 
 } // namespace roughgas::detail
