@@ -459,10 +459,12 @@ int run_run(const RunOptions& o, const Communicator& comm) {
     // again at 1 local mean free path.
     const std::vector<std::string> moment_names = table.names();
     const auto resolution_at = std::find(moment_names.begin(), moment_names.end(), "cell_over_lambda");
-    double resolution_threshold = resolution_at == moment_names.end() ? HUGE_VAL : 0.5;
+    double resolution_threshold = 0.5;
     const auto cpp_at = static_cast<std::size_t>(
         std::find(moment_names.begin(), moment_names.end(), "coll_per_particle") - moment_names.begin());
     const auto watch_resolution = [&](const std::vector<double>& row) {
+        if (resolution_at == moment_names.end()) // not a box run
+            return;
         const double r = row[static_cast<std::size_t>(resolution_at - moment_names.begin())];
         while (r > resolution_threshold) {
             const std::string note =
