@@ -353,28 +353,35 @@ int run_run(const RunOptions& o, const Communicator& comm) {
                              "(observables/theory.hpp; Haff's law for smooth spheres)");
     prov.units = table.units();
     CsvWriter csv(table.names(), prov);
-    std::optional<CsvWriter> wcsv; // walls.csv
-    if (!table.wall_table_columns().empty()) {
-        CsvProvenance wprov = prov;
-        wprov.notes = {"per wall, over the interval since the previous row (physical grains: each simulated one "
-                       "stands for density x volume / particles): hits per area and time; P_ia, the column a of "
-                       "the pressure tensor at a wall normal to a (the +a flux of momentum component i); q_a, "
-                       "the +a flux of kinetic energy (translational and rotational)",
-                       prov.notes[1], box_note};
-        wprov.units = column_units(table.wall_table_columns());
-        wcsv.emplace(column_names(table.wall_table_columns()), wprov);
-    }
-    std::optional<CsvWriter> pcsv; // profiles.csv
-    if (!table.profile_table_columns().empty()) {
-        CsvProvenance pp = prov;
-        pp.notes = {"one block of rows per moments.csv row, one row per bin (slab normal to the profile axis, one "
-                    "per collision cell along it), at that row's t: n, u, T_tr, T_rot, theta, the kinetic (P_ab) "
-                    "and collisional (Pc_ab, over the interval since the previous row) pressure tensor, the "
-                    "kinetic heat flux q, the mean spin omega (observables/profiles.hpp)",
-                    prov.notes[1], box_note};
-        pp.units = column_units(table.profile_table_columns());
-        pcsv.emplace(column_names(table.profile_table_columns()), pp);
-    }
+    // A box run's walls.csv and profiles.csv: what the file holds, the replicas, the box.
+    const auto box_csv = [&](const std::vector<Column>& columns, const char* what) {
+        std::optional<CsvWriter> w;
+        if (!columns.empty()) {
+            CsvProvenance p = prov;
+            p.notes = {what, prov.notes[1], box_note};
+            p.units = column_units(columns);
+            w.emplace(column_names(columns), p);
+        }
+        return w;
+    };
+    std::optional<CsvWriter> wcsv = box_csv(
+        table.wall_table_columns(),
+        "per wall, over the interval since the previous row (physical grains: each simulated one stands for "
+        "density x volume / particles): hits per area and time; P_ia, the column a of the pressure tensor at a "
+        "wall normal to a (the +a flux of momentum component i); q_a, the +a flux of kinetic energy "
+        "(translational and rotational)");
+    std::optional<CsvWriter> pcsv = box_csv(
+        table.profile_table_columns(),
+        "one block of rows per moments.csv row, one row per bin (slab normal to the profile axis, one per "
+        "collision cell along it), at that row's t: n, u, T_tr, T_rot, theta, the kinetic (P_ab) and collisional "
+        "(Pc_ab, over the interval since the previous row) pressure tensor, the kinetic heat flux q, the mean spin "
+        "omega (observables/profiles.hpp)");
+    const auto write_box_csvs = [&] { // beside every write of moments.csv
+        if (wcsv)
+            wcsv->write(dir / walls_file);
+        if (pcsv)
+            pcsv->write(dir / profiles_file);
+    };
     std::optional<HistogramsTable> htable;
     std::optional<CsvWriter> hcsv;
     if (!spec.histogram_times.empty()) {
@@ -516,10 +523,7 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         const auto t = std::chrono::steady_clock::now();
         if (csv.rows() > on_disk && (now || t - last_write >= 10 * write_cost)) {
             csv.write(path);
-            if (wcsv)
-                wcsv->write(dir / walls_file);
-            if (pcsv)
-                pcsv->write(dir / profiles_file);
+            write_box_csvs();
             on_disk = csv.rows();
             last_write = std::chrono::steady_clock::now();
             write_cost = last_write - t;
@@ -679,10 +683,7 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         checkpoints.write_manifest_once();
         if (on_disk == 0 && !partial) {
             csv.write(path); // the header, even when no row is complete yet: the run's file exists
-            if (wcsv)
-                wcsv->write(dir / walls_file);
-            if (pcsv)
-                pcsv->write(dir / profiles_file);
+            write_box_csvs();
         }
         for (int r = from; r < to; ++r)
             if (finished[static_cast<std::size_t>(r)] && !final_saved[static_cast<std::size_t>(r)])

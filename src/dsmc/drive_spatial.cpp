@@ -21,6 +21,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
 namespace roughgas::detail {
@@ -120,6 +121,7 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
     };
 
     std::vector<double> row;
+    std::optional<double> nu_ahead; // the collision frequency a row found for the step that follows it
     const auto emit = [&](bool repeat) {
         if (!repeat) {
             const double t = engine.time();
@@ -130,6 +132,7 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
             // The profiles, sampled in the middle of the flight of the step that follows (its length
             // before any shortening for an output), give the cells' resolution of the densest slab.
             const double nu = engine.collision_frequency();
+            nu_ahead = nu; // the next step starts from this state
             profile_geometry.half_flight = nu > 0 && std::isfinite(nu) ? 0.5 * domain.time_step / nu : 0.0;
             profile_geometry.time = t;
             const std::vector<Virial> virial = engine.take_virial();
@@ -222,7 +225,8 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
 
     const auto coll_per_particle = [&] { return 2.0 * static_cast<double>(engine.collisions()) / N; };
     while (next < outputs.size()) {
-        const double nu = engine.collision_frequency();
+        const double nu = nu_ahead ? *nu_ahead : engine.collision_frequency();
+        nu_ahead.reset();
         if (!(nu > 0) || !std::isfinite(nu))
             throw std::runtime_error("the gas has stopped colliding (collision frequency " + std::to_string(nu) +
                                      ") before the end of the run");

@@ -89,8 +89,8 @@ void MomentsTable::check(std::span<const double> row) const {
     if (row.size() != profile_start_ + profile_solver_.size())
         throw std::invalid_argument(fmt::format("replica row has {} values for {} columns", row.size(),
                                                 profile_start_ + profile_solver_.size()));
-    std::map<std::string, double> value;
-    for (std::size_t j = 0; j < row.size(); ++j)
+    std::map<std::string, double> value; // by name: the moments and walls (profiles go by index)
+    for (std::size_t j = 0; j < profile_start_; ++j)
         value[row_column(j).name] = row[j];
     const auto zero = [&](const std::string& name) {
         const auto it = value.find(name);
@@ -106,7 +106,7 @@ void MomentsTable::check(std::span<const double> row) const {
         bool undefined = j >= solver_.size() && j < profile_start_ && first; // walls.csv: no interval yet
         if (j >= profile_start_) { // a profile bin's field
             const std::size_t f = (j - profile_start_) % profile_field_count, bin = j - profile_start_ - f;
-            const double n = row[profile_start_ + bin], T_tr = row[profile_start_ + bin + 4];
+            const double n = row[profile_start_ + bin], T_tr = row[profile_start_ + bin + profile_T_tr];
             undefined = f > 0 && (n == 0 || (f >= profile_collisional_first && f < profile_collisional_first + 6 && first) ||
                                   (f == profile_theta && T_tr == 0));
             if (!undefined)
@@ -131,10 +131,13 @@ void MomentsTable::check(std::span<const double> row) const {
     }
 }
 
+void MomentsTable::require_replicas(std::size_t rows) const {
+    if (rows != static_cast<std::size_t>(replicas_))
+        throw std::invalid_argument(fmt::format("MomentsTable: {} replica rows for {} replicas", rows, replicas_));
+}
+
 std::vector<double> MomentsTable::combine_walls(std::span<const std::span<const double>> rows) const {
-    if (rows.size() != static_cast<std::size_t>(replicas_))
-        throw std::invalid_argument(
-            fmt::format("MomentsTable: {} replica rows for {} replicas", rows.size(), replicas_));
+    require_replicas(rows.size());
     std::vector<double> out;
     std::vector<double> x(rows.size());
     const std::size_t n = solver_.size();
@@ -152,9 +155,7 @@ std::vector<double> MomentsTable::combine_walls(std::span<const std::span<const 
 
 std::vector<std::vector<double>>
 MomentsTable::combine_profiles(std::span<const std::span<const double>> rows) const {
-    if (rows.size() != static_cast<std::size_t>(replicas_))
-        throw std::invalid_argument(
-            fmt::format("MomentsTable: {} replica rows for {} replicas", rows.size(), replicas_));
+    require_replicas(rows.size());
     std::vector<std::vector<double>> out;
     std::vector<double> x(rows.size());
     for (std::size_t b = 0; b < bin_centres_.size(); ++b) {
@@ -180,9 +181,7 @@ MomentsTable::combine_profiles(std::span<const std::span<const double>> rows) co
 }
 
 std::vector<double> MomentsTable::combine(std::span<const std::span<const double>> rows) {
-    if (rows.size() != static_cast<std::size_t>(replicas_))
-        throw std::invalid_argument(
-            fmt::format("MomentsTable: {} replica rows for {} replicas", rows.size(), replicas_));
+    require_replicas(rows.size());
     const std::size_t n = solver_.size();
     std::vector<double> out;
     out.reserve(columns_.size());

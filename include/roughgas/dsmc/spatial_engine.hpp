@@ -150,8 +150,6 @@ template <class Policy, bool General = false> class SpatialEngine {
         if (domain_.profile_axis < 0 || domain_.profile_axis > 2)
             throw std::invalid_argument("SpatialEngine: the profile axis must be 0, 1 or 2");
         cell_virial_.assign(cells_, Virial{});
-        if (domain_.lees_edwards())
-            lees_edwards_crossings_.assign(particles_, 0);
         bin_virial_.assign(static_cast<std::size_t>(domain_.cells[domain_.profile_axis]), Virial{});
         const InitialSpec& wave = domain_.initial;
         for (int a = 0; a < 3; ++a)
@@ -430,8 +428,24 @@ template <class Policy, bool General = false> class SpatialEngine {
         remove_mean_velocity(*this, blocks_); // what the random positions left of sin(k.x)
     }
 
-    // Free flight, wrapped into the box. x - L floor(x/L) can round to L for an x just below 0:
-    // that point is the periodic image of 0 to within the rounding.
+    // Wraps q into [0, L) and returns how many periods it moved down (the images crossed upwards).
+    // q - L floor(q/L) can round to L for a q just below 0: that point is the periodic image of 0
+    // to within the rounding (one crossing more); a result rounded below 0 is 0 too.
+    static double wrap_periodic(double& q, double L) {
+        if (!(q < 0 || q >= L))
+            return 0;
+        double k = std::floor(q / L);
+        q -= L * k;
+        if (q >= L) {
+            q = 0;
+            k += 1;
+        } else if (q < 0) {
+            q = 0;
+        }
+        return k;
+    }
+
+    // Free flight, wrapped into the box.
     void stream(double dt) {
         const std::size_t chunk = 65536, units = (particles_ + chunk - 1) / chunk;
         team_->for_each(units, [&](std::size_t u) {
@@ -442,11 +456,7 @@ template <class Policy, bool General = false> class SpatialEngine {
                 for (int a = 0; a < 3; ++a) {
                     const double L = domain_.size[a];
                     double y = *q[a] + dq[a];
-                    if (y < 0 || y >= L) {
-                        y -= L * std::floor(y / L);
-                        if (y >= L || y < 0)
-                            y = 0;
-                    }
+                    wrap_periodic(y, L);
                     *q[a] = y;
                 }
             }
@@ -507,9 +517,6 @@ template <class Policy, bool General = false> class SpatialEngine {
             CollisionRng rng = make_collision_stream(StreamKey{seed_, Stream::wall_emission, replica_, static_cast<std::uint64_t>(steps_), u});
             for (std::size_t i = chunks[u].first; i < chunks[u].last; ++i)
                 fly(i, chunks[u].species, dt, rng, flux[u]);
-            if (domain_.lees_edwards())
-                for (std::size_t i = chunks[u].first; i < chunks[u].last; ++i)
-                    cross_lees_edwards(i, dt);
         });
         for (const WallFluxes& f : flux)
             for (std::size_t k = 0; k < 6; ++k)
@@ -521,24 +528,19 @@ template <class Policy, bool General = false> class SpatialEngine {
     // times (k < 0: through 0) during the step re-enters as the image's grain: v_x - k a L_y and
     // x - k a L_y t_end. Applied at the step's end t_end whatever the crossing time: from the crossing
     // on, the grain flies with the new velocity, and x_cross - offset(t_c) + (v_x - a L_y)(t_end - t_c)
-    // = x(t_end) - offset(t_end). `lees_edwards_crossings_` holds each grain's k, found in fly().
-    void cross_lees_edwards(std::size_t i, double dt) {
-        const int k = lees_edwards_crossings_[i];
-        if (k == 0)
-            return;
-        lees_edwards_crossings_[i] = 0;
+    // = x(t_end) - offset(t_end). `k` is counted by fly() as the grain's y is wrapped.
+    void cross_lees_edwards(Vec3& x, Vec3& v, double k, double dt) const {
         const double Lx = domain_.size[0], Ly = domain_.size[1];
         const double offset = std::fmod(domain_.shear_rate * Ly * (t_ + dt), Lx);
-        v_[i].x -= k * domain_.shear_rate * Ly;
-        double q = x_[i].x - k * offset;
-        q -= Lx * std::floor(q / Lx);
-        x_[i].x = q >= Lx || q < 0 ? 0.0 : q;
+        v.x -= k * domain_.shear_rate * Ly;
+        x.x -= k * offset;
+        wrap_periodic(x.x, Lx);
     }
 
     void fly(std::size_t i, std::size_t s, double dt, CollisionRng& rng, WallFluxes& flux) {
         const Vec3 g{domain_.gravity[0], domain_.gravity[1], domain_.gravity[2]};
         Vec3 x = x_[i], v = v_[i];
-        double rest = dt;
+        double rest = dt, crossings = 0; // of y = L_y, for Lees-Edwards
         for (int hits = 0; hits < max_wall_hits_per_step; ++hits) {
             double t = rest;
             int wall = -1;
@@ -559,17 +561,10 @@ template <class Policy, bool General = false> class SpatialEngine {
                 double& q = component(x, a);
                 if (domain_.walled(a)) {
                     q = std::clamp(q, 0.0, L); // round-off of a crossing found just after the step
-                } else if (q < 0 || q >= L) {
-                    double k = std::floor(q / L);
-                    q -= L * k;
-                    if (q >= L) { // rounded onto L: the image of 0, one crossing more
-                        q = 0;
-                        k += 1;
-                    } else if (q < 0) {
-                        q = 0;
-                    }
-                    if (a == 1 && domain_.lees_edwards())
-                        lees_edwards_crossings_[i] += static_cast<int>(k);
+                } else {
+                    const double k = wrap_periodic(q, L);
+                    if (a == 1)
+                        crossings += k;
                 }
             }
             if (wall < 0)
@@ -580,6 +575,8 @@ template <class Policy, bool General = false> class SpatialEngine {
             hit_wall(i, s, a, upper, v, rng, flux[static_cast<std::size_t>(wall)]);
             rest -= t;
         }
+        if (crossings != 0 && domain_.lees_edwards())
+            cross_lees_edwards(x, v, crossings, dt);
         x_[i] = x;
         v_[i] = v;
     }
@@ -783,7 +780,6 @@ template <class Policy, bool General = false> class SpatialEngine {
     WallFluxes wall_flux_{};
     std::vector<Virial> cell_virial_, bin_virial_; // this step's per cell; since the last row per bin
     std::vector<double> frequency_sums_;           // collision_frequency's scratch
-    std::vector<int> lees_edwards_crossings_;      // per grain within a step: its crossings of y = L_y
     std::vector<Vec3> x_, v_, w_, x2_, v2_, w2_;
     std::vector<std::uint32_t> key_, cell_start_, counts_;
     std::array<double, 3> cells_per_length_{};

@@ -72,6 +72,7 @@ class MomentsTable {
 
   private:
     const Column& row_column(std::size_t j) const;
+    void require_replicas(std::size_t rows) const; // one row per replica, else std::invalid_argument
     std::vector<Column> solver_, columns_, wall_solver_, wall_columns_, profile_solver_, profile_columns_;
     std::size_t profile_start_ = 0;     // the first profile value in a replica row
     std::vector<double> bin_centres_;

@@ -42,8 +42,8 @@ inline constexpr const char* profile_fields[] = {
     "P_xz",  "P_yz",  "Pc_xx", "Pc_yy", "Pc_zz", "Pc_xy", "Pc_xz", "Pc_yz", "q_x", "q_y",  "q_z",
     "omega_x", "omega_y", "omega_z"};
 inline constexpr std::size_t profile_field_count = std::size(profile_fields);
-// Index of the first collisional field (Pc_xx) and of theta in profile_fields.
-inline constexpr std::size_t profile_collisional_first = 13, profile_theta = 6;
+// Index of the first collisional field (Pc_xx), of T_tr and of theta in profile_fields.
+inline constexpr std::size_t profile_collisional_first = 13, profile_T_tr = 4, profile_theta = 6;
 
 // The unit of each field, in profile_fields order.
 std::vector<Column> profile_field_columns();
