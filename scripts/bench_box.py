@@ -7,11 +7,12 @@ The deck (the elastic hard-sphere gas of the usual DSMC benchmark): a periodic c
 mean free paths holding 20 grains on average, steps of half a mean free time
 (domain.time_step = 0.5), 300 steps (150 collisions per particle), one output row at the end. For
 each N: smooth grains on 1 thread, rough grains (alpha = 1, beta = 1: energy-conserving, with
-spins) on 1 thread, smooth grains on 2 threads, run alternately for --rounds rounds (the order
-reversed every other round, so that a drift of the machine's speed hits all alike). Reported per
-variant: the median and range of the wall time per particle and step (ns), and of the ratios
-rough/smooth and 1 thread/2 threads. The machine, date, commit and load are printed with the table
-(docs/performance.md).
+spins) on 1 thread, smooth grains on 2 threads, smooth grains with nearest partners
+(domain.partners) on 1 thread, run alternately for --rounds rounds (the order reversed every
+other round, so that a drift of the machine's speed hits all alike). Reported per variant: the
+median and range of the wall time per particle and step (ns), and of the ratios rough/smooth,
+1 thread/2 threads and nearest/random partners. The machine, date, commit and load are printed
+with the table (docs/performance.md).
 """
 import argparse
 import os
@@ -28,7 +29,7 @@ STEPS = 300
 TIME_STEP = 0.5
 
 
-def deck(n, rough):
+def deck(n, rough, partners="random"):
     """The case text for n grains: cells of 0.42 mean free paths with 20 grains each."""
     lam = 1.0 / (2 ** 0.5 * 3.141592653589793 * DENSITY)
     cells = max(1, round((n / 20) ** (1 / 3)))
@@ -38,7 +39,7 @@ def deck(n, rough):
             f"density = {DENSITY}\nseed = 1\n\n[[species]]\nmass = 1.0\nradius = 0.5\n\n"
             f"[collision]\nmodel = \"constant\"\nalpha = 1.0\nbeta = {beta}\n\n"
             f"[domain]\nsize = [{side}, {side}, {side}]\ncells = [{cells}, {cells}, {cells}]\n"
-            f"time_step = {TIME_STEP}\n")
+            f"time_step = {TIME_STEP}\npartners = \"{partners}\"\n")
 
 
 def timed(cmd):
@@ -68,8 +69,11 @@ def main():
             with open(path, "w") as f:
                 f.write(deck(n, rough))
             cases[rough] = path
+        nearest = os.path.join(a.out, f"deck_{n}_nearest.toml")
+        with open(nearest, "w") as f:
+            f.write(deck(n, False, "nearest"))
         variants = [("smooth, 1 thread", cases[False], "1"), ("rough, 1 thread", cases[True], "1"),
-                    ("smooth, 2 threads", cases[False], "2")]
+                    ("smooth, 2 threads", cases[False], "2"), ("smooth, nearest, 1 thread", nearest, "1")]
         times = {v[0]: [] for v in variants}
         for r in range(a.rounds):
             order = variants if r % 2 == 0 else variants[::-1]
@@ -87,11 +91,13 @@ def main():
             return f"{statistics.median(rs):.2f} ({min(rs):.2f}-{max(rs):.2f})"
         rows.append(f"| {n:.0e} | {fmt(times['smooth, 1 thread'])} | {fmt(times['rough, 1 thread'])} | "
                     f"{fmt(times['smooth, 2 threads'])} | {ratio('rough, 1 thread', 'smooth, 1 thread')} | "
-                    f"{ratio('smooth, 1 thread', 'smooth, 2 threads')} |")
+                    f"{ratio('smooth, 1 thread', 'smooth, 2 threads')} | "
+                    f"{ratio('smooth, nearest, 1 thread', 'smooth, 1 thread')} |")
     print(measured_line(a.rounds, "wall ns per particle and step (whole runs: start, initial state, 300 "
                                   "steps, one row): median (min-max)", load0, steal0))
-    print("| N | smooth, 1 thread | rough, 1 thread | smooth, 2 threads | rough/smooth | 1 thread/2 threads |")
-    print("|---|------------------|-----------------|-------------------|--------------|--------------------|")
+    print("| N | smooth, 1 thread | rough, 1 thread | smooth, 2 threads | rough/smooth | 1 thread/2 threads "
+          "| nearest/random partners |")
+    print("|---|---|---|---|---|---|---|")
     for r in rows:
         print(r)
 

@@ -9,7 +9,9 @@
 #   docs/box_*.png             roughgas run cases/box_{couette,fourier,thermal_walls,heated_bed,usf,shear_mode}.toml,
 #                              plot_profiles.py (the shear mode's last block: --from 60)
 # docs/accuracy.png is the work-precision study of docs/accuracy.md (scripts/bench_accuracy.py,
-# minutes of CPU): it is not redrawn here.
+# minutes of CPU) and docs/transport_errors.png the study of docs/validation.md
+# (scripts/transport_errors.py --collisions 3000 --plot docs/transport_errors.png, ten minutes on
+# two cores): they are not redrawn here.
 # Usage: scripts/docs_figures.sh [WORK_DIR]   (default out/docs_figures; the build must exist)
 set -euo pipefail
 case "${1:-}" in

@@ -42,6 +42,8 @@
 #include "roughgas/io/histograms_csv.hpp"
 #include "roughgas/io/moments_csv.hpp"
 #include "roughgas/io/run_spec_from_case.hpp"
+#include "roughgas/io/run_states.hpp"
+#include "roughgas/io/state_file.hpp"
 #include "roughgas/io/run_tables.hpp"
 #include "roughgas/io/steady_csv.hpp"
 #include "roughgas/core/bytes.hpp"
@@ -146,6 +148,10 @@ void check_output_dir(const fs::path& dir, bool force, bool histograms, bool she
                          fmt::format("--out {}: {} exists (continue that run with --resume {}, or start "
                                      "over with --force)",
                                      dir.string(), checkpoint_dir(dir).string(), dir.string()));
+    if (fs::exists(state_dir(dir)))
+        throw InputError(dir.string(), "--out",
+                         fmt::format("--out {}: {} exists (use --force to overwrite)", dir.string(),
+                                     state_dir(dir).string()));
     for (const char* file :
          {output_file, histograms_file, steady_file, scaled_file, walls_file, profiles_file, steady_profiles_file}) {
         if ((file == histograms_file && !histograms) || (file == steady_file && !shear) ||
@@ -230,6 +236,7 @@ int run_run(const RunOptions& o, const Communicator& comm) {
     // The setup, on every rank alike (rank_errors.hpp): the case or checkpoint, the tables.
     std::optional<RunSetup> prepared;
     RunSpec spec;
+    std::string start_note; // initial.from's description
     std::shared_ptr<const RestitutionTables> tables;
     agree_on_setup(comm, [&] {
         prepared.emplace(o.resume.empty() ? new_run(o, root) : resume_run(o, root));
@@ -238,6 +245,8 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         } catch (const std::invalid_argument& e) { // a valid case the solver cannot run
             throw std::runtime_error(e.what());
         }
+        start_note = attach_initial_state(spec, prepared->cfg, prepared->manifest.run.case_file);
+        attach_final_state(spec, prepared->cfg, prepared->dir);
         spec.threads = o.threads > 0 ? o.threads : default_threads();
         omp_set_num_threads(spec.threads); // the table builds use the same threads
         // The replicas this process holds at a time: its share of the range, over its threads.
@@ -303,6 +312,11 @@ int run_run(const RunOptions& o, const Communicator& comm) {
             "uniform shear flow u = a y x, a = {:.17g}: V = v - u; Strang steps of {:.17g} mean free times; "
             "rows at the end of the first step at or after each output's coll_per_particle",
             spec.shear->rate, spec.shear->time_step));
+    if (!start_note.empty()) {
+        prov.notes.push_back(start_note);
+        if (!quiet)
+            std::cerr << "roughgas run: " << start_note << '\n';
+    }
     for (const std::string& u : cfg.unused) { // kept in the case, not used by this run
         prov.notes.push_back("warning: " + u);
         if (root)
@@ -415,9 +429,11 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         if (setup.resuming) {
             remove_stale_temporaries(dir);
         } else {
-            // --force (checked above): an earlier run's checkpoint must not be resumed into this one.
+            // --force (checked above): an earlier run's checkpoint must not be resumed into this one,
+            // nor its state files be taken for this run's.
             std::error_code ec;
             fs::remove_all(checkpoint_dir(dir), ec);
+            fs::remove_all(state_dir(dir), ec);
         }
         if (checkpoint_every > 0 || partial || comm.size() > 1) // a kill before the first replica
             checkpoints.write_manifest_once();                  // checkpoint still leaves a resumable run
@@ -832,8 +848,8 @@ int run_run(const RunOptions& o, const Communicator& comm) {
 Subcommand add_run_command(CLI::App& parent, const Communicator& comm) {
     auto o = std::make_shared<RunOptions>();
     CLI::App* app =
-        parent.add_subcommand("run", "run a DSMC simulation of the homogeneous cooling state or of "
-                                     "uniform shear flow, writing DIR/moments.csv");
+        parent.add_subcommand("run", "run a DSMC simulation of a cooling or uniformly sheared gas, "
+                                     "homogeneous or in a box ([domain]), writing DIR/moments.csv");
     CLI::Option* case_opt = app->add_option("CASE", o->case_file, "case file (TOML)");
     CLI::Option* out = app->add_option("--out", o->out, "output directory (moments.csv)");
     CLI::Option* set = add_set_option(*app, o->sets);

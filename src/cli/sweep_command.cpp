@@ -29,6 +29,7 @@
 #include "roughgas/io/csv_writer.hpp"
 #include "roughgas/io/moments_csv.hpp"
 #include "roughgas/io/run_spec_from_case.hpp"
+#include "roughgas/io/run_states.hpp"
 #include "roughgas/io/run_tables.hpp"
 #include "roughgas/io/steady_csv.hpp"
 #include "roughgas/core/bytes.hpp"
@@ -122,6 +123,7 @@ PointResult point_result(const CaseConfig& cfg, const std::vector<std::vector<st
 std::optional<std::vector<std::vector<std::vector<double>>>> run_point(const CaseConfig& cfg,
                                                                         const StopSignals& signals) {
     RunSpec spec = run_spec_from_case(cfg);
+    attach_initial_state(spec, cfg, "");
     spec.threads = 1;
     MomentsTable table(spec);
     const auto tables = build_run_tables(spec);
@@ -172,9 +174,12 @@ int run_sweep(const SweepOptions& o, const Communicator& comm) {
     }
     // Points run at the same time, one replica each at a time: the largest of them, times the threads.
     RunSpec largest = run_spec_from_case(cases[0]);
-    for (const CaseConfig& c : cases)
+    for (const CaseConfig& c : cases) {
+        RunSpec point = run_spec_from_case(c);
+        attach_initial_state(point, c, o.case_file); // initial.from's files checked before any work
         if (c.run.particles > largest.particles)
-            largest = run_spec_from_case(c);
+            largest = std::move(point);
+    }
     const long long points = (s.count + comm.size() - 1) / comm.size();
     refuse_if_too_large(largest,
                         static_cast<int>(std::max(1LL, std::min<long long>(o.threads > 0 ? o.threads : default_threads(),
@@ -192,9 +197,13 @@ int run_sweep(const SweepOptions& o, const Communicator& comm) {
     lock.lock(dir);
     });
 
-    if (root)
+    if (root) {
         for (const std::string& u : cases[0].unused) // kept in the case, not used by the sweep's runs
             std::cerr << "roughgas sweep: warning: " << u << '\n';
+        if (cases[0].run.save_state)
+            std::cerr << "roughgas sweep: warning: run.save_state is not used by roughgas sweep (a run of one "
+                         "point with roughgas run writes the state)\n";
+    }
     // This rank's points: k = rank, rank + R, ... (all of them in one process).
     std::vector<long> mine;
     for (long k = comm.rank(); k < s.count; k += comm.size())

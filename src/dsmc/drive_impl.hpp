@@ -406,6 +406,18 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
         return ReplicaEnd::stopped;
     }
     fill_summary(io.summary, engine, kernel, tally.clamped, resumed_at, wall0);
+    if (spec.final_state) {
+        GrainState g;
+        g.t = engine.time();
+        g.coll_per_particle = 2.0 * static_cast<double>(engine.collisions()) / static_cast<double>(N);
+        g.v.resize(N);
+        g.w.resize(N);
+        for (std::size_t i = 0; i < N; ++i) {
+            g.v[i] = engine.store().v(i);
+            g.w[i] = engine.store().w(i);
+        }
+        spec.final_state(replica, g);
+    }
     return ReplicaEnd::finished;
 }
 

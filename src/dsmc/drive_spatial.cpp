@@ -255,7 +255,8 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
     if (io.summary) {
         ReplicaSummary& s = *io.summary;
         s.kernel = kernel;
-        s.bytes_per_particle = 6 * sizeof(Vec3) + sizeof(std::uint32_t);
+        s.bytes_per_particle = 6 * sizeof(Vec3) + sizeof(std::uint32_t) +
+                               (domain.partners == PartnerSelection::nearest ? 4 * sizeof(std::uint32_t) : 0);
         s.memory_per_particle = s.bytes_per_particle;
         s.collisions = engine.collisions();
         s.resumed_at = resumed_at;
@@ -263,7 +264,14 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
         s.beta_clamped = tally.clamped;
         s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     }
-    return next < outputs.size() ? ReplicaEnd::stopped : ReplicaEnd::finished;
+    if (next < outputs.size())
+        return ReplicaEnd::stopped;
+    if (spec.final_state) {
+        GrainState g = engine.grain_state();
+        g.coll_per_particle = coll_per_particle();
+        spec.final_state(replica, g);
+    }
+    return ReplicaEnd::finished;
 }
 
 template <class Policy>

@@ -105,10 +105,14 @@ const char* const shear_quantities[] = {"P_xx",      "P_yy",      "P_zz",      "
 } // namespace
 
 std::size_t memory_per_particle_bound(const RunSpec& spec) {
-    if (spec.domain) // positions, velocities, spins twice (the sort), a key, the sort's counts
-        return 6 * sizeof(Vec3) + 2 * sizeof(std::uint32_t);
+    // A state saved or read (dsmc/grain_state.hpp): its copy and the file's bytes, at the end or start.
+    const std::size_t state = spec.final_state || (spec.domain && spec.domain->initial_state) ? 6 * sizeof(Vec3) : 0;
+    if (spec.domain) // positions, velocities, spins twice (the sort), a key, the sort's counts, with
+                     // nearest partners identities and last partners twice
+        return 6 * sizeof(Vec3) + 2 * sizeof(std::uint32_t) +
+               (spec.domain->partners == PartnerSelection::nearest ? 4 * sizeof(std::uint32_t) : 0) + state;
     // The largest store (a 64-byte rough grain), its index and class key, a shear row's spins.
-    return 64 + sizeof(std::uint32_t) + sizeof(std::uint16_t) + sizeof(Vec3);
+    return 64 + sizeof(std::uint32_t) + sizeof(std::uint16_t) + sizeof(Vec3) + state;
 }
 
 std::size_t memory_per_replica_fixed_bound(const RunSpec& spec) {

@@ -598,6 +598,7 @@ class Builder {
             }
             d.time_step = r.real("time_step");
             d.allow_coarse = r.boolean("allow_coarse");
+            d.partners = r.choice<PartnerSelection>("partners", partner_names);
             c.domain = d;
         }
         for (const char* side : {"wall_lower", "wall_upper"})
@@ -618,6 +619,8 @@ class Builder {
             w.amplitude = r.real("amplitude");
             if (r.has("wave"))
                 w.wave = r.integer3("wave");
+            if (r.has("from"))
+                w.from = r.string("from");
             c.initial = w;
         }
         c.restitution = grid(Reader(root_["restitution"].as_table(), "restitution"));
@@ -643,6 +646,7 @@ class Builder {
         c.histogram_spacing = r.choice<OutputSpacing>("histogram_spacing", output_spacing_names);
         c.histogram_bins = r.integer("histogram_bins");
         c.histogram_max = r.real("histogram_max");
+        c.save_state = r.boolean("save_state");
         return c;
     }
 
@@ -1207,6 +1211,7 @@ std::string emit_case(const CaseConfig& c) {
     e.put("histogram_spacing", name(c.run.histogram_spacing));
     e.put("histogram_bins", c.run.histogram_bins);
     e.put("histogram_max", c.run.histogram_max);
+    e.put("save_state", c.run.save_state);
     for (const SpeciesConfig& s : c.species) {
         e.header("[[species]]");
         e.put("name", s.name);
@@ -1258,6 +1263,8 @@ std::string emit_case(const CaseConfig& c) {
         e.put("mode", name(c.initial->mode));
         e.put("amplitude", c.initial->amplitude);
         e.put("wave", c.initial->wave);
+        if (!c.initial->from.empty())
+            e.put("from", c.initial->from);
     }
     if (c.domain) {
         e.header("[domain]");
@@ -1270,6 +1277,7 @@ std::string emit_case(const CaseConfig& c) {
         e.put("profile_axis", std::string_view(&"xyz"[c.domain->profile_axis], 1));
         e.put("time_step", c.domain->time_step);
         e.put("allow_coarse", c.domain->allow_coarse);
+        e.put("partners", name(c.domain->partners));
     }
     for (const auto& [side, w] : {std::pair{"[wall_lower]", &c.wall_lower}, std::pair{"[wall_upper]", &c.wall_upper}}) {
         if (!*w)

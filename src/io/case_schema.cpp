@@ -176,6 +176,10 @@ std::vector<Key> keys() {
             .gt(0)
             .doc("range of the histograms: reduced speeds in [0, max), c*.w* in [-max, max) (a "
                  "Maxwellian has 1e-10 of its grains beyond 5)"),
+        Key("run.save_state", T::boolean)
+            .fallback(false)
+            .doc("write each replica's grains at the end (velocities, spins, and positions in a box) to "
+                 "DIR/state/replica_R.bin, for initial.from of a later run; 72 bytes per grain"),
         // [[species]]
         Key("species.name", T::string)
             .fallback(std::string("grain"))
@@ -332,6 +336,13 @@ std::vector<Key> keys() {
             .fallback(false)
             .doc("accept cells longer than one mean free path (the DSMC's transport errors grow as the "
                  "squared cell size over the mean free path)"),
+        Key("domain.partners", T::string)
+            .fallback(std::string("random"))
+            .one_of(partner_names)
+            .doc("the partner of a candidate pair's first grain: random (any other grain of its cell) or "
+                 "nearest (the nearest other grain of the cell but its last partner in the step: collisions "
+                 "between neighbours, and transport errors set by the grains' spacing instead of the cell "
+                 "size; costs a pass over the cell per candidate)"),
         // [initial]
         Key("initial.mode", T::string)
             .fallback(std::string("none"))
@@ -350,6 +361,14 @@ std::vector<Key> keys() {
             .ge(-1000)
             .le(1000)
             .doc("wave numbers [n_x, n_y, n_z] (whole wavelengths in the box), not all 0"),
+        Key("initial.from", T::string)
+            .when("none: a Maxwellian at the species' temperatures")
+            .doc("start from the last state of an earlier run with run.save_state = true: the output "
+                 "directory DIR (relative to the working directory); replica r takes DIR/state/replica_r.bin "
+                 "(r modulo the files there). The species (names, masses, radii) and their grain counts must "
+                 "be the same; velocities and spins are taken as they were, positions too from a box of the "
+                 "same size (else uniform); a wave of initial.mode is added on top, in units of the state's "
+                 "thermal speed"),
         // [restitution]
         Key("restitution.g_n_min", T::real)
             .unit("m/s")

@@ -55,6 +55,7 @@ RunSpec run_spec_from_case(const CaseConfig& cfg) {
         for (std::size_t i = 0; i < 3; ++i)
             d.cells[i] = static_cast<int>(cfg.domain->cells[i]);
         d.time_step = cfg.domain->time_step;
+        d.partners = cfg.domain->partners;
         d.boundary = cfg.domain->boundary;
         d.gravity = cfg.domain->gravity;
         d.profile_axis = cfg.domain->profile_axis;

@@ -97,75 +97,89 @@ template <class P> void expect_inside(const SpatialEngine<P>& e, const DomainSpe
 // Elastic rough grains (alpha = 1, beta = 1 conserve the energy with the spins), a mixture: the
 // momentum stays zero and the energy constant to round-off over 40 steps of many collisions per
 // cell; no grain leaves the box; every grain sits in the cell its position says.
+// Either partner selection.
 TEST(SpatialEngine, ConservesMomentumAndEnergyAndKeepsGrainsInTheBox) {
-    const DomainSpec d = cube(20.0, 6);
-    std::vector<SpeciesBlock> blocks = two_species(5000);
-    const std::vector<PairType> types = make_pair_types(blocks);
-    std::vector<AnyRoughPolicy> policies;
-    for (std::size_t k = 0; k < types.size(); ++k)
-        policies.push_back(to_any_rough(AnyPolicy(make_rough_constant(1.0, 1.0))));
-    SpatialEngine<AnyRoughPolicy> e(d, blocks, policies, 0.05, 7, 0, 2);
-    const Vec3 p0 = momentum(e);
-    const double E0 = energy(e);
-    EXPECT_LT(std::sqrt(norm2(p0)), 1e-10 * std::sqrt(2 * E0));
-    CountCollisions count;
-    for (int k = 0; k < 40; ++k) {
-        e.step(0.5 / e.collision_frequency(), count);
-        expect_inside(e, d);
-    }
-    EXPECT_GT(count.n, 40000); // about 4 collisions per grain
-    const Vec3 p = momentum(e);
-    EXPECT_LT(std::sqrt(norm2(p - p0)), 1e-12 * std::sqrt(2 * E0 * 5000));
-    EXPECT_NEAR(energy(e) / E0, 1.0, 1e-12);
-    for (std::size_t s = 0; s < 2; ++s)
-        for (std::size_t c = 0; c < e.cells(); ++c) {
-            const auto [first, last] = e.cell_range(s, c);
-            for (std::size_t i = first; i < last; ++i)
-                ASSERT_EQ(e.cell_of(e.positions()[i]), c);
+    for (const PartnerSelection partners : {PartnerSelection::random, PartnerSelection::nearest}) {
+        SCOPED_TRACE(partners == PartnerSelection::random ? "random partners" : "nearest partners");
+        DomainSpec d = cube(20.0, 6);
+        d.partners = partners;
+        std::vector<SpeciesBlock> blocks = two_species(5000);
+        const std::vector<PairType> types = make_pair_types(blocks);
+        std::vector<AnyRoughPolicy> policies;
+        for (std::size_t k = 0; k < types.size(); ++k)
+            policies.push_back(to_any_rough(AnyPolicy(make_rough_constant(1.0, 1.0))));
+        SpatialEngine<AnyRoughPolicy> e(d, blocks, policies, 0.05, 7, 0, 2);
+        const Vec3 p0 = momentum(e);
+        const double E0 = energy(e);
+        EXPECT_LT(std::sqrt(norm2(p0)), 1e-10 * std::sqrt(2 * E0));
+        CountCollisions count;
+        for (int k = 0; k < 40; ++k) {
+            e.step(0.5 / e.collision_frequency(), count);
+            expect_inside(e, d);
         }
+        EXPECT_GT(count.n, 40000); // about 4 collisions per grain
+        const Vec3 p = momentum(e);
+        EXPECT_LT(std::sqrt(norm2(p - p0)), 1e-12 * std::sqrt(2 * E0 * 5000));
+        EXPECT_NEAR(energy(e) / E0, 1.0, 1e-12);
+        for (std::size_t s = 0; s < 2; ++s)
+            for (std::size_t c = 0; c < e.cells(); ++c) {
+                const auto [first, last] = e.cell_range(s, c);
+                for (std::size_t i = first; i < last; ++i)
+                    ASSERT_EQ(e.cell_of(e.positions()[i]), c);
+            }
+    }
 }
 
 // Elastic hard spheres: a grain's collision rate is 4 n sigma^2 sqrt(pi T/m) exactly, whatever the
 // cell size (here 0.4 and 2.5 mean free paths; 3 and 0.2 grains per cell on average), since a
 // pair's rate in its cell is pi sigma^2 |g| F / V_c and a uniform gas fills the cells as a Poisson
 // process. Measured over 8 collisions per grain of 20000 grains (~80000 collisions): relative
-// standard error 1/sqrt(80000) = 0.35 %; the tolerance is 5 of them.
+// standard error 1/sqrt(80000) = 0.35 %; the tolerance is 5 of them. The same with nearest
+// partners: in a uniform gas the nearest grain's velocity is a random grain's.
 TEST(SpatialEngine, ElasticCollisionRateIsExactForAnyCellSize) {
     const double n = 0.01, sigma = 1.0, T = 1.0, m = 1.0;
     const double lambda = mean_free_path(n, sigma);
     const double nu = 4 * n * sigma * sigma * std::sqrt(std::numbers::pi * T / m);
-    for (const double cell : {0.4, 2.5}) {
-        const int cells = 5;
-        const DomainSpec d = cube(cells * cell * lambda, cells);
-        std::vector<SpeciesBlock> blocks = one_species(20000, m, sigma / 2);
-        SpatialEngine<SmoothConstant> e(d, blocks, {make_smooth_constant(1.0)}, n, 3, 0, 1);
-        CountCollisions count;
-        const double dt = 0.25 / nu;
-        for (int k = 0; k < 32; ++k)
-            e.step(dt, count);
-        const double rate = 2.0 * static_cast<double>(count.n) / (20000.0 * e.time());
-        // T drifts from 1 only by the sample's own temperature (the initial state's 20000 grains).
-        const double T_sample = 2 * translational_energy(e) / (3 * 20000.0);
-        const double expected = nu * std::sqrt(T_sample / T);
-        EXPECT_NEAR(rate / expected, 1.0, 5.0 / std::sqrt(static_cast<double>(count.n))) << cell << " mean free paths";
-    }
+    for (const PartnerSelection partners : {PartnerSelection::random, PartnerSelection::nearest})
+        for (const double cell : {0.4, 2.5}) {
+            const int cells = 5;
+            DomainSpec d = cube(cells * cell * lambda, cells);
+            d.partners = partners;
+            std::vector<SpeciesBlock> blocks = one_species(20000, m, sigma / 2);
+            SpatialEngine<SmoothConstant> e(d, blocks, {make_smooth_constant(1.0)}, n, 3, 0, 1);
+            CountCollisions count;
+            const double dt = 0.25 / nu;
+            for (int k = 0; k < 32; ++k)
+                e.step(dt, count);
+            const double rate = 2.0 * static_cast<double>(count.n) / (20000.0 * e.time());
+            // T drifts from 1 only by the sample's own temperature (the initial state's 20000 grains).
+            const double T_sample = 2 * translational_energy(e) / (3 * 20000.0);
+            const double expected = nu * std::sqrt(T_sample / T);
+            EXPECT_NEAR(rate / expected, 1.0, 5.0 / std::sqrt(static_cast<double>(count.n)))
+                << cell << " mean free paths, "
+                << (partners == PartnerSelection::random ? "random" : "nearest") << " partners";
+        }
 }
 
-// The results do not depend on the thread count: the same state bit for bit after 10 steps.
+// The results do not depend on the thread count: the same state bit for bit after 10 steps (with
+// nearest partners on the second pass).
 TEST(SpatialEngine, ThreadCountDoesNotChangeTheResults) {
-    const DomainSpec d = cube(30.0, 12);
-    std::vector<SpeciesBlock> blocks = one_species(20000);
-    std::vector<std::vector<Vec3>> v;
-    for (int threads : {1, 2}) {
-        SpatialEngine<RoughConstant> e(d, blocks, {make_rough_constant(0.8, 0.3)}, 0.1, 5, 2, threads);
-        CountCollisions count;
-        for (int k = 0; k < 10; ++k)
-            e.step(0.3 / e.collision_frequency(), count);
-        v.push_back(e.velocities());
+    for (const PartnerSelection partners : {PartnerSelection::random, PartnerSelection::nearest}) {
+        DomainSpec d = cube(30.0, 12);
+        d.partners = partners;
+        std::vector<SpeciesBlock> blocks = one_species(20000);
+        std::vector<std::vector<Vec3>> v;
+        for (int threads : {1, 2}) {
+            SpatialEngine<RoughConstant> e(d, blocks, {make_rough_constant(0.8, 0.3)}, 0.1, 5, 2, threads);
+            CountCollisions count;
+            for (int k = 0; k < 10; ++k)
+                e.step(0.3 / e.collision_frequency(), count);
+            v.push_back(e.velocities());
+        }
+        ASSERT_EQ(v[0].size(), v[1].size());
+        for (std::size_t i = 0; i < v[0].size(); ++i)
+            ASSERT_TRUE(v[0][i].x == v[1][i].x && v[0][i].y == v[1][i].y && v[0][i].z == v[1][i].z) << i;
     }
-    ASSERT_EQ(v[0].size(), v[1].size());
-    for (std::size_t i = 0; i < v[0].size(); ++i)
-        ASSERT_TRUE(v[0][i].x == v[1][i].x && v[0][i].y == v[1][i].y && v[0][i].z == v[1][i].z) << i;
 }
 
 // A box far below the instability length (1.2 mean free paths, alpha = 0.9) stays homogeneous and
@@ -181,8 +195,8 @@ TEST(SpatialEngine, SmallBoxCoolsByHaffsLaw) {
     const DomainSpec d = cube(1.2 * mean_free_path(n, sigma), 4);
     double ratio = 0, cooled = 0;
     for (std::uint64_t r = 0; r < 4; ++r) {
-        SpatialEngine<SmoothConstant> e(d, one_species(N, 1.0, sigma / 2), {make_smooth_constant(alpha)}, n, 11,
-                                        r, 1);
+        SpatialEngine<SmoothConstant> e(d, one_species(N, 1.0, sigma / 2), {make_smooth_constant(alpha)}, n,
+                                        11, r, 1);
         const double E0 = translational_energy(e), T0 = 2 * E0 / (3.0 * N); // the sample's own start
         CountCollisions count;
         while (e.collisions() < N * 25) // 50 collisions per grain
@@ -239,7 +253,8 @@ TEST(SpatialEngine, InitialWavesHaveTheirAmplitudes) {
         DomainSpec d = cube(40.0, 4);
         d.size[1] = 20.0;
         d.initial = {w.mode, A, {1, 2, 0}};
-        const SpatialEngine<RoughConstant> e(d, one_species(N), {make_rough_constant(1.0, 1.0)}, 0.1, 3, 0, 1);
+        const SpatialEngine<RoughConstant> e(d, one_species(N), {make_rough_constant(1.0, 1.0)}, 0.1, 3, 0,
+                                             1);
         const std::array<double, 3> a = e.wave_amplitudes();
         const int mode = static_cast<int>(w.mode);
         EXPECT_NEAR(a[0], w.u, 5 * 0.0045) << mode;

@@ -159,5 +159,58 @@ TEST(BoxCli, SmallBoxCoolsAsTheHomogeneousGas) {
     }
 }
 
+// run.save_state and initial.from: a homogeneous cooling run leaves its replicas' grains in
+// DIR/state; a box started from them has, at t = 0, replica 0's last temperatures and cumulants (the
+// same grains: equal to round-off), at uniform positions; a box started from a box of the same size
+// takes the positions too (the box's last row again). Refused before any work (exit 2, nothing
+// written): a directory without state files, other species or grain counts, a density wave on
+// positions taken over, and an output directory holding a state without --force.
+TEST(BoxCli, StartsFromTheSavedStateOfAnEarlierRun) {
+    const test::ScratchDir dir;
+    const std::string c = box_case(3000, 1, 10.0);
+    const std::string saving = replaced(c, "seed = 4", "seed = 4\nsave_state = true");
+    const fs::path hom = dir.write("hom.toml", saving.substr(0, saving.find("[domain]")));
+    ASSERT_EQ(test::run_roughgas("run " + q(hom) + " --quiet --out " + q(dir / "hom"), dir).status, 0);
+    ASSERT_TRUE(fs::exists(dir / "hom" / "state" / "replica_0.bin"));
+    const std::string from_hom = c + "\n[initial]\nfrom = " + q(dir / "hom") + "\n";
+    const fs::path box = dir.write("box.toml", replaced(from_hom, "seed = 4", "seed = 4\nsave_state = true"));
+    const test::CommandResult r = test::run_roughgas("run " + q(box) + " --out " + q(dir / "box"), dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("at uniform random positions"), std::string::npos) << r.err;
+    const auto h = test::read_csv(dir / "hom" / "moments.csv");
+    const auto b = test::read_csv(dir / "box" / "moments.csv");
+    for (const char* col : {"T_tr", "T_rot", "theta", "a20", "a02", "a11"})
+        EXPECT_NEAR(b.at(col).front() / h.at(col).back(), 1.0, 1e-9) << col;
+    EXPECT_LT(b.at("T_tr").back(), 0.5 * b.at("T_tr").front()); // and it cools on
+
+    const fs::path again = dir.write("again.toml", c + "\n[initial]\nfrom = " + q(dir / "box") + "\n");
+    const test::CommandResult r2 = test::run_roughgas("run " + q(again) + " --out " + q(dir / "again"), dir);
+    ASSERT_EQ(r2.status, 0) << r2.err;
+    EXPECT_NE(r2.err.find("with their positions"), std::string::npos) << r2.err;
+    const auto a = test::read_csv(dir / "again" / "moments.csv");
+    for (const char* col : {"T_tr", "theta", "a20"})
+        EXPECT_NEAR(a.at(col).front() / b.at(col).back(), 1.0, 1e-9) << col;
+
+    const struct {
+        std::string text, key, says;
+    } bad[] = {
+        {c + "\n[initial]\nfrom = " + q(dir / "nowhere") + "\n", "initial.from", "no "},
+        {replaced(from_hom, "particles = 3000", "particles = 3001"), "initial.from", "3000 grains"},
+        {c + "\n[initial]\nmode = \"density\"\nfrom = " + q(dir / "box") + "\n", "initial.mode",
+         "needs fresh positions"},
+    };
+    for (const auto& x : bad) {
+        const fs::path f = dir.write("bad.toml", x.text);
+        const test::CommandResult e = test::run_roughgas("run " + q(f) + " --out " + q(dir / "out"), dir);
+        EXPECT_EQ(e.status, 2) << x.key << "\n" << e.err;
+        EXPECT_NE(e.err.find(x.key), std::string::npos) << e.err;
+        EXPECT_NE(e.err.find(x.says), std::string::npos) << e.err;
+        EXPECT_FALSE(fs::exists(dir / "out"));
+    }
+    const test::CommandResult e = test::run_roughgas("run " + q(box) + " --out " + q(dir / "box"), dir);
+    EXPECT_EQ(e.status, 2);
+    EXPECT_NE(e.err.find("state exists (use --force"), std::string::npos) << e.err;
+}
+
 } // namespace
 } // namespace roughgas

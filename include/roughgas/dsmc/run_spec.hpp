@@ -3,6 +3,7 @@
 // The physics never sees the parser.
 #include "roughgas/contact/contact_pair.hpp"
 #include "roughgas/contact/tolerance.hpp"
+#include "roughgas/dsmc/grain_state.hpp"
 
 #include <array>
 #include <cstdint>
@@ -74,6 +75,14 @@ struct WallSpec {
     double alpha = 1, beta = -1;
 };
 
+// How a cell picks the partner of a candidate pair's first grain (dsmc/spatial_engine.hpp):
+//   random   any other grain of the cell, uniformly (the standard DSMC);
+//   nearest  the nearest other grain of the cell, except the grain's last partner in this step
+//            (Bird 2007; Gallis, Torczynski, Rader & Bird 2009): the collision separation, and
+//            with it the cell-size error of the transport coefficients, shrinks from the cell's
+//            size to the spacing of its grains.
+enum class PartnerSelection { random, nearest };
+
 // A spatially resolved run (dsmc/spatial_engine.hpp): a box of collision cells.
 struct DomainSpec {
     std::array<double, 3> size{1, 1, 1}; // L_x, L_y, L_z (the case's length unit)
@@ -87,7 +96,11 @@ struct DomainSpec {
     // +-a L_y along x; the gas starts with the flow u_x = a (y - L_y/2). 0: plain periodic.
     double shear_rate = 0;
     double time_step = 0.2;              // in mean free times of the current state
+    PartnerSelection partners = PartnerSelection::random;
     InitialSpec initial;
+    // Set: the grains start from this state (velocities and spins; positions when it comes from a
+    // box of the same size, else uniform) instead of the Maxwellian; `initial`'s wave is added.
+    GrainStateSource initial_state;
 
     bool walled(int axis) const { return boundary[static_cast<std::size_t>(axis)] == Boundary::walls; }
     bool has_walls() const { return walled(0) || walled(1) || walled(2); }
@@ -135,6 +148,8 @@ struct RunSpec {
     std::optional<ShearSpec> shear;
     // Positions, streaming and collision cells instead of the homogeneous gas ([domain]).
     std::optional<DomainSpec> domain;
+    // Set: called with each replica's state when it finishes (not when it stops early).
+    GrainStateSink final_state;
 };
 
 // The automatic group count: particles/16384 rounded down to a power of two (at least 1, at most

@@ -27,6 +27,16 @@
 // at the new rate: memoryless, so the majorant is never exceeded). A grain may collide any number
 // of times in a step (the once-per-step variant has a first-order time-step error in the
 // viscosity). The candidate that would fall after dt is discarded (memoryless again).
+// With domain.partners = "nearest" the candidate's first grain is uniform in the cell and its
+// partner the nearest other grain of the cell but the first grain's most recent partner, in this
+// step or an earlier one, when the cell holds more than two (grains carry an identity and their
+// last partner's for this). Without that rule two neighbours, still neighbours a step later,
+// collide again and again: repeated collisions relax the stress less than collisions with fresh
+// partners, and the viscosity comes out too large (Bird 2007; Gallis, Torczynski, Rader & Bird 2009). The rate and the acceptance are
+// unchanged: where velocities do not depend on positions (a uniform gas) the pair's |g| has the
+// random pair's distribution and the collision frequency stays exact, and the separation of the
+// colliding grains, which sets the cell-size error of the transport coefficients, shrinks from the
+// cell's size to the spacing of its grains.
 //
 // Threads. Each step's collisions run over work units of a fixed number of cells, claimed
 // dynamically by the replica's WorkerTeam; unit u draws from the stream (seed, cell_collisions,
@@ -56,6 +66,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <numbers>
 #include <stdexcept>
@@ -155,7 +166,18 @@ template <class Policy, bool General = false> class SpatialEngine {
         for (int a = 0; a < 3; ++a)
             k_[a] = 2.0 * std::numbers::pi * wave.wave[a] / domain_.size[a];
         const bool density_wave = wave.mode == Perturbation::density;
-        for (std::size_t s = 0; s < blocks_.size(); ++s) {
+        GrainState from;
+        if (domain_.initial_state) {
+            from = domain_.initial_state(static_cast<int>(replica));
+            if (from.v.size() != particles_ || from.w.size() != particles_ ||
+                (!from.x.empty() && from.x.size() != particles_))
+                throw std::invalid_argument("SpatialEngine: the initial state has another number of grains");
+        }
+        // An earlier box of the same size gives the positions too (x is then kept as it was).
+        const bool placed = !from.x.empty() && from.box == domain_.size;
+        if (placed)
+            x_ = std::move(from.x);
+        for (std::size_t s = 0; s < blocks_.size() && !placed; ++s) {
             Rng r = make_stream(StreamKey{seed, Stream::initial_position, replica, 0, s});
             for (std::size_t i = blocks_[s].offset; i < blocks_[s].offset + blocks_[s].count; ++i) {
                 for (;;) { // a density wave by rejection: accepted with (1 + A sin(k.x))/(1 + |A|)
@@ -167,12 +189,23 @@ template <class Policy, bool General = false> class SpatialEngine {
                 }
             }
         }
-        init_maxwellian(*this, blocks_, seed, replica);
+        if (domain_.initial_state) {
+            v_ = std::move(from.v);
+            w_ = std::move(from.w);
+        } else {
+            init_maxwellian(*this, blocks_, seed, replica);
+        }
         perturb_velocities();
-        if (domain_.lees_edwards()) { // the uniform shear flow u_x = a (y - L_y/2) of the images
+        if (domain_.lees_edwards() && !placed) { // the uniform shear flow u_x = a (y - L_y/2) of the images
             for (std::size_t i = 0; i < particles_; ++i)
                 v_[i].x += domain_.shear_rate * (x_[i].y - 0.5 * domain_.size[1]);
             remove_mean_velocity(*this, blocks_);
+        }
+        if (domain_.partners == PartnerSelection::nearest) {
+            id_.resize(particles_);
+            for (std::size_t i = 0; i < particles_; ++i)
+                id_[i] = static_cast<std::uint32_t>(i);
+            last_.assign(particles_, no_partner);
         }
         sort_into_cells();
     }
@@ -210,13 +243,15 @@ template <class Policy, bool General = false> class SpatialEngine {
             stream(dt);
         sort_into_cells();
         const std::size_t units = (cells_ + cells_per_unit - 1) / cells_per_unit;
+        const bool nearest = domain_.partners == PartnerSelection::nearest;
         std::vector<Observer> local(units, obs.fork());
         std::vector<std::int64_t> counts(units, 0);
         team_->for_each(units, [&](std::size_t u) {
             CollisionRng rng = make_collision_stream(StreamKey{seed_, Stream::cell_collisions, replica_, static_cast<std::uint64_t>(steps_), u});
             const std::size_t end = std::min(cells_, (u + 1) * cells_per_unit);
             for (std::size_t c = u * cells_per_unit; c < end; ++c)
-                counts[u] += collide_cell(c, dt, rng, local[u]);
+                counts[u] += nearest ? collide_cell<true>(c, dt, rng, local[u])
+                                     : collide_cell<false>(c, dt, rng, local[u]);
         });
         for (std::size_t u = 0; u < units; ++u) {
             obs.merge(local[u]);
@@ -340,7 +375,19 @@ template <class Policy, bool General = false> class SpatialEngine {
         return (index(x.z, 2) * domain_.cells[1] + index(x.y, 1)) * domain_.cells[0] + index(x.x, 0);
     }
 
-    // The complete state (positions, velocities, spins, time, step and collision counts): a run
+    // The grains as they are now, for a later run to start from (dsmc/grain_state.hpp).
+    GrainState grain_state() const {
+        GrainState g;
+        g.box = domain_.size;
+        g.t = t_;
+        g.x = x_;
+        g.v = v_;
+        g.w = w_;
+        return g;
+    }
+
+    // The complete state (positions, velocities, spins, time, step and collision counts, with
+    // nearest partners the identities and last partners): a run
     // continued from it draws the same numbers as one without the stop (the streams are keyed by
     // the step).
     void save(ByteWriter& out) const {
@@ -358,6 +405,9 @@ template <class Policy, bool General = false> class SpatialEngine {
         for (const Virial& b : bin_virial_)
             for (double c : b)
                 out.f64(c);
+        for (const std::vector<std::uint32_t>* a : {&id_, &last_})
+            for (std::uint32_t q : *a)
+                out.put(q);
     }
     void restore(ByteReader& in) {
         for (std::vector<Vec3>* a : {&x_, &v_, &w_}) {
@@ -377,6 +427,9 @@ template <class Policy, bool General = false> class SpatialEngine {
         for (Virial& b : bin_virial_)
             for (double& c : b)
                 c = in.f64();
+        for (std::vector<std::uint32_t>* a : {&id_, &last_})
+            for (std::uint32_t& q : *a)
+                q = in.get<std::uint32_t>();
         sort_into_cells();
     }
 
@@ -408,10 +461,17 @@ template <class Policy, bool General = false> class SpatialEngine {
         const InitialSpec& wave = domain_.initial;
         if (wave.mode == Perturbation::none || wave.mode == Perturbation::density)
             return;
+        // c = sqrt(T/m) of the mean T and m: the species' temperatures, or the translational
+        // temperature of a state the run starts from (an aged cooling state is much colder).
         double T = 0, m = 0;
         for (const SpeciesBlock& b : blocks_) {
-            T += b.temperature * static_cast<double>(b.count);
             m += b.grain.mass * static_cast<double>(b.count);
+            if (!domain_.initial_state) {
+                T += b.temperature * static_cast<double>(b.count);
+                continue;
+            }
+            for (std::size_t i = b.offset; i < b.offset + b.count; ++i)
+                T += b.grain.mass * norm2(v_[i]) / 3;
         }
         const double c = std::sqrt(T / m);
         const Vec3 e = wave_direction();
@@ -638,6 +698,9 @@ template <class Policy, bool General = false> class SpatialEngine {
         x2_.resize(particles_);
         v2_.resize(particles_);
         w2_.resize(particles_);
+        const bool nearest = !id_.empty();
+        id2_.resize(id_.size());
+        last2_.resize(last_.size());
         for (std::size_t s = 0; s < S; ++s) {
             const SpeciesBlock& b = blocks_[s];
             // Chunks of at least 4096 grains and on average at least 2 grains per cell and chunk
@@ -674,12 +737,18 @@ template <class Policy, bool General = false> class SpatialEngine {
                     x2_[q] = x_[i];
                     v2_[q] = v_[i];
                     w2_[q] = w_[i];
+                    if (nearest) {
+                        id2_[q] = id_[i];
+                        last2_[q] = last_[i];
+                    }
                 }
             });
         }
         x_.swap(x2_);
         v_.swap(v2_);
         w_.swap(w2_);
+        id_.swap(id2_);
+        last_.swap(last2_);
     }
 
     // The store index of the k-th grain of cell c (species after species).
@@ -694,8 +763,31 @@ template <class Policy, bool General = false> class SpatialEngine {
         }
     }
 
+    static constexpr std::uint32_t no_partner = ~std::uint32_t{0};
+
+    // The grain of cell c (n grains) nearest to grain i, its species in `species`: any other grain
+    // but i's most recent partner when there is a third.
+    std::size_t nearest_partner(std::size_t c, std::size_t i, std::size_t n, std::size_t& species) const {
+        const std::uint32_t excluded = n > 2 ? last_[i] : no_partner;
+        double best = std::numeric_limits<double>::infinity();
+        std::size_t j = i;
+        for (std::size_t s = 0; s < blocks_.size(); ++s) {
+            const auto [first, last] = cell_range(s, c);
+            for (std::size_t q = first; q < last; ++q) {
+                const double d2 = norm2(x_[q] - x_[i]);
+                if (d2 < best && q != i && id_[q] != excluded) {
+                    best = d2;
+                    j = q;
+                    species = s;
+                }
+            }
+        }
+        return j;
+    }
+
     // Collisions of cell c for a time dt (the header's kernel); returns how many.
-    template <class Observer> std::int64_t collide_cell(std::size_t c, double dt, CollisionRng& rng, Observer& obs) {
+    template <bool Nearest, class Observer>
+    std::int64_t collide_cell(std::size_t c, double dt, CollisionRng& rng, Observer& obs) {
         const std::size_t S = blocks_.size();
         Virial& virial = cell_virial_[c];
         virial = Virial{};
@@ -731,10 +823,15 @@ template <class Policy, bool General = false> class SpatialEngine {
             if (t >= dt)
                 return done;
             const std::size_t k1 = static_cast<std::size_t>(uniform_index(rng, n));
-            std::size_t k2 = static_cast<std::size_t>(uniform_index(rng, n - 1));
-            k2 += k2 >= k1;
             std::size_t sa = 0, sb = 0;
-            std::size_t i = grain(c, k1, sa), j = grain(c, k2, sb);
+            std::size_t i = grain(c, k1, sa), j = 0;
+            if constexpr (Nearest) {
+                j = nearest_partner(c, i, n, sb);
+            } else {
+                std::size_t k2 = static_cast<std::size_t>(uniform_index(rng, n - 1));
+                k2 += k2 >= k1;
+                j = grain(c, k2, sb);
+            }
             if (sa > sb) {
                 std::swap(i, j);
                 std::swap(sa, sb);
@@ -754,6 +851,10 @@ template <class Policy, bool General = false> class SpatialEngine {
                 obs(collide_normal_part(pc, policies_[type], v_[i], v_[j], g_N), type);
             }
             ++done;
+            if constexpr (Nearest) {
+                last_[i] = id_[j];
+                last_[j] = id_[i];
+            }
             // The impulse on i times the separation (observables/profiles.hpp, Pc).
             const Vec3 dp = blocks_[sa].grain.mass * (v_[i] - v_before), r = x_[i] - x_[j];
             virial[0] += dp.x * r.x;
@@ -782,6 +883,8 @@ template <class Policy, bool General = false> class SpatialEngine {
     std::vector<double> frequency_sums_;           // collision_frequency's scratch
     std::vector<Vec3> x_, v_, w_, x2_, v2_, w2_;
     std::vector<std::uint32_t> key_, cell_start_, counts_;
+    // Nearest partners only (else empty): each grain's identity and its most recent partner's.
+    std::vector<std::uint32_t> id_, last_, id2_, last2_;
     std::array<double, 3> cells_per_length_{};
     double t_ = 0;
     std::int64_t steps_ = 0, collisions_ = 0;

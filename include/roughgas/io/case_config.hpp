@@ -73,6 +73,7 @@ struct RunConfig {
     OutputSpacing histogram_spacing = OutputSpacing::linear;
     std::int64_t histogram_bins = 50;
     double histogram_max = 5.0; // reduced speed range
+    bool save_state = false;    // each replica's last grains to DIR/state/ (initial.from of a later run)
     friend bool operator==(const RunConfig&, const RunConfig&) = default;
 };
 
@@ -159,6 +160,7 @@ struct DomainConfig {
     int profile_axis = 0;                    // 0, 1, 2: profiles.csv's axis (resolved: the first walled axis, else x)
     double time_step = 0.2;                  // in mean free times of the current state
     bool allow_coarse = false;               // cells longer than a mean free path accepted
+    PartnerSelection partners = PartnerSelection::random;
     friend bool operator==(const DomainConfig&, const DomainConfig&) = default;
     bool has_walls() const {
         return std::find(boundary.begin(), boundary.end(), Boundary::walls) != boundary.end();
@@ -180,6 +182,10 @@ struct WallConfig {
 constexpr std::string_view name(Boundary b) {
     return boundary_names[static_cast<std::size_t>(b)];
 }
+inline constexpr std::array<std::string_view, 2> partner_names{"random", "nearest"};
+constexpr std::string_view name(PartnerSelection p) {
+    return partner_names[static_cast<std::size_t>(p)];
+}
 
 // [initial]: a wave on the start of a [domain] run (InitialSpec, dsmc/run_spec.hpp).
 inline constexpr std::array<std::string_view, 5> perturbation_names{"none", "transverse", "longitudinal", "density",
@@ -191,6 +197,7 @@ struct InitialConfig {
     Perturbation mode = Perturbation::none;
     double amplitude = 0.1;
     std::array<std::int64_t, 3> wave{1, 0, 0};
+    std::string from; // "" or the output directory of an earlier run with run.save_state
     friend bool operator==(const InitialConfig&, const InitialConfig&) = default;
 };
 

@@ -1,0 +1,183 @@
+#!/usr/bin/env python3
+"""The DSMC's discretisation errors of the viscosity, measured in Couette flow.
+
+    scripts/python3 scripts/transport_errors.py [--build build] [--threads 2] [--collisions 1000]
+        [--out out/transport_errors] [--plot docs/transport_errors.png]
+
+An elastic hard-sphere gas (run.density = 0.02, sigma = 1: mean free path lambda = 11.254) between
+diffuse walls at T_w = 1 moving at -0.5 and +0.5 along x, 20 mean free paths apart. The viscosity
+-P_xy/(du_x/dy) comes from the walls' momentum flux (walls.csv) and the slope of u_x over the
+bulk slabs (profiles.csv, slabs centred more than 2 lambda from the walls), as batch means over
+the rows after the first 100 collisions per particle (rows every 10), at the bulk's temperature,
+in units of the Chapman-Enskog value 1.016034 eta_0, eta_0 = (5/16) sqrt(m T/pi)/sigma^2.
+
+Three series:
+  cells   random partners, cells of 0.25 to 2 lambda along y (one cell across the 1 x 1 lambda
+          section), steps of 0.2 mean free times; the leading-order law
+          1 + 16/(45 pi) (dy/lambda)^2 (Alexander, Garcia & Alder 1998);
+  nearest nearest partners (domain.partners = "nearest"), cubic cells of 0.5 to 2 lambda holding
+          20 grains, steps of 0.2;
+  steps   random partners, cells of 0.25 lambda, steps of 0.1 to 1 mean free time
+          (domain.time_step); the law 1 + 16/(75 pi) (c_0 dt/lambda)^2, c_0 = sqrt(2 T/m)
+          (Hadjiconstantinou 2000), that is 1 + (4/75) s^2 for steps of s mean free times
+          lambda/cbar.
+Prints a table (docs/validation.md) and least-squares fits of the cells and steps series to
+a + b x^2; --plot draws eta/eta_CE against (dy/lambda)^2 and s^2 with the laws.
+"""
+import argparse
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from roughgas_csv import read_csv  # noqa: E402
+
+DENSITY = 0.02
+LAMBDA = 1.0 / (math.sqrt(2.0) * math.pi * DENSITY)
+WIDTH = 20  # mean free paths between the walls
+CELL_LAW = 16.0 / (45.0 * math.pi)
+STEP_LAW = 4.0 / 75.0
+
+
+def case_text(particles, section, cells, partners, time_step, collisions):
+    """A Couette case: section [L_x, L_z] and cells [n_x, n_y, n_z] in mean free paths and counts."""
+    size = [section[0] * LAMBDA, WIDTH * LAMBDA, section[1] * LAMBDA]
+    return (f"[run]\nparticles = {particles}\nend = {float(collisions)}\noutput_every = 10.0\n"
+            f"density = {DENSITY}\nseed = 1\n\n[[species]]\nmass = 1.0\nradius = 0.5\n\n"
+            "[collision]\nmodel = \"constant\"\nalpha = 1.0\nbeta = -1.0\n\n"
+            f"[domain]\nsize = [{size[0]!r}, {size[1]!r}, {size[2]!r}]\ncells = {list(cells)}\n"
+            "boundary = [\"periodic\", \"walls\", \"periodic\"]\n"
+            f"time_step = {time_step}\nallow_coarse = true\npartners = \"{partners}\"\n\n"
+            "[wall_lower]\nkind = \"diffuse\"\ntemperature = 1.0\nvelocity = [-0.5, 0.0, 0.0]\n\n"
+            "[wall_upper]\nkind = \"diffuse\"\ntemperature = 1.0\nvelocity = [0.5, 0.0, 0.0]\n")
+
+
+def runs():
+    """(series, dy/lambda, steps in mean free times, partners, particles, section, cells)."""
+    out = []
+    for dy in (0.25, 0.5, 1.0, 1.5, 2.0):
+        ny = round(WIDTH / dy)
+        out.append(("cells", WIDTH / ny, 0.2, "random", 40000, (1.0, 1.0), (1, ny, 1)))
+    for dy, m in ((0.5, 8), (1.0, 10), (2.0, 10)):
+        ny = round(WIDTH / dy)
+        out.append(("nearest", dy, 0.2, "nearest", 20 * m * m * ny, (m * dy, m * dy), (m, ny, m)))
+    for s in (0.1, 0.35, 0.5, 0.75, 1.0):
+        out.append(("steps", 0.25, s, "random", 40000, (1.0, 1.0), (1, 80, 1)))
+    return out
+
+
+def viscosity(directory, dy):
+    """eta/eta_CE and its standard error from batch means of 10 rows after the first 100 collisions."""
+    prof = read_csv(os.path.join(directory, "profiles.csv"))
+    walls = read_csv(os.path.join(directory, "walls.csv"))
+    times = walls["coll_per_particle"]
+    wall_pxy = 0.5 * (walls["y_lower.P_xy"] + walls["y_upper.P_xy"])
+    keep = [k for k, t in enumerate(times) if t > 100.5]
+    batches = [keep[i:i + 10] for i in range(0, len(keep) - 9, 10)]
+    ratios = []
+    for batch in batches:
+        ys, us, ts, p = None, None, [], 0.0
+        for k in batch:
+            rows = prof["coll_per_particle"] == times[k]
+            y, u, T = prof["y"][rows], prof["u_x"][rows], prof["T_tr"][rows]
+            bulk = (y > 2 * LAMBDA) & (y < (WIDTH - 2) * LAMBDA)
+            ys = y[bulk]
+            us = u[bulk] / len(batch) if us is None else us + u[bulk] / len(batch)
+            ts.append(T[bulk].mean())
+            p += wall_pxy[k] / len(batch)
+        slope = np.polyfit(ys, us, 1)[0]
+        T = float(np.mean(ts))
+        eta_ce = 1.016034 * 5.0 / 16.0 * math.sqrt(T / math.pi)
+        ratios.append(-p / slope / eta_ce)
+    r = np.array(ratios)
+    return r.mean(), r.std(ddof=1) / math.sqrt(len(r))
+
+
+def fit(x, y, e):
+    """Weighted least squares y = a + b x; returns (a, b, sigma_a, sigma_b)."""
+    w = 1 / np.asarray(e) ** 2
+    A = np.vstack([np.ones_like(x), x]).T
+    cov = np.linalg.inv(A.T @ (A * w[:, None]))
+    a, b = cov @ (A.T @ (w * np.asarray(y)))
+    return a, b, math.sqrt(cov[0, 0]), math.sqrt(cov[1, 1])
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--build", default="build", help="build directory with the roughgas binary")
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--collisions", type=int, default=1000, help="collisions per particle of each run")
+    ap.add_argument("--out", default="out/transport_errors", help="directory for the cases and runs")
+    ap.add_argument("--plot", default=None, help="PNG to draw (e.g. docs/transport_errors.png)")
+    a = ap.parse_args()
+    roughgas = os.path.abspath(os.path.join(a.build, "roughgas"))
+    os.makedirs(a.out, exist_ok=True)
+    results = []
+    for k, (series, dy, s, partners, n, section, cells) in enumerate(runs()):
+        name = f"{series}_{k}"
+        case = os.path.join(a.out, name + ".toml")
+        with open(case, "w") as f:
+            f.write(case_text(n, section, cells, partners, s, a.collisions))
+        p = subprocess.run([roughgas, "run", case, "--out", os.path.join(a.out, name), "--force", "--quiet",
+                            "--threads", str(a.threads)], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                           text=True)
+        if p.returncode != 0:
+            sys.exit(f"transport_errors: {case} failed ({p.returncode}):\n{p.stderr}")
+        eta, err = viscosity(os.path.join(a.out, name), dy * LAMBDA)
+        per_cell = n / (cells[0] * cells[1] * cells[2])
+        law = 1 + CELL_LAW * dy ** 2 + STEP_LAW * s ** 2 if partners == "random" else float("nan")
+        results.append((series, dy, s, partners, per_cell, eta, err, law))
+        print(f"{series:8s} dy = {dy:.3g} lambda, step {s} mean free times, {partners} partners, "
+              f"{per_cell:.0f} per cell: eta/eta_CE = {eta:.4f} +- {err:.4f} (law {law:.4f})", flush=True)
+
+    print("\n| series | cell edge along y [lambda] | step [mean free times] | partners | grains per cell "
+          "| eta / eta_CE | leading-order laws |")
+    print("|---|---|---|---|---|---|---|")
+    for series, dy, s, partners, per_cell, eta, err, law in results:
+        law_text = "-" if math.isnan(law) else f"{law:.4f}"
+        print(f"| {series} | {dy:.3g} | {s} | {partners} | {per_cell:.0f} | {eta:.4f} ± {err:.4f} | {law_text} |")
+    for series, var, coefficient, what in (("cells", 1, CELL_LAW, "(dy/lambda)^2"), ("steps", 2, STEP_LAW, "s^2")):
+        rows = [r for r in results if r[0] == series]
+        x = np.array([r[var] ** 2 for r in rows])
+        a0, b, sa, sb = fit(x, [r[5] for r in rows], [r[6] for r in rows])
+        print(f"{series}: eta/eta_CE = {a0:.4f} (+- {sa:.4f}) + {b:.4f} (+- {sb:.4f}) {what}; "
+              f"leading-order coefficient {coefficient:.4f}")
+    if a.plot:
+        draw(results, a.plot)
+
+
+def draw(results, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4.2))
+    for series, style, label in (("cells", "o", "random partners"), ("nearest", "s", "nearest partners")):
+        rows = [r for r in results if r[0] == series]
+        left.errorbar([r[1] ** 2 for r in rows], [r[5] for r in rows], [r[6] for r in rows], fmt=style,
+                      label=label, capsize=3)
+    x = np.linspace(0, 4.2, 50)
+    left.plot(x, 1 + CELL_LAW * x + STEP_LAW * 0.04, "k--", lw=1, label="1 + 16/(45π) (Δy/λ)²")
+    left.set_xlabel("(Δy/λ)²: squared cell edge along the gradient")
+    left.set_ylabel("η / η_CE")
+    left.set_title("cells (steps of 0.2 mean free times)")
+    left.legend()
+    rows = [r for r in results if r[0] == "steps"]
+    right.errorbar([r[2] ** 2 for r in rows], [r[5] for r in rows], [r[6] for r in rows], fmt="o",
+                   label="random partners, Δy = λ/4", capsize=3)
+    x = np.linspace(0, 1.05, 50)
+    right.plot(x, 1 + CELL_LAW / 16 + STEP_LAW * x, "k--", lw=1, label="1 + (4/75) s²")
+    right.set_xlabel("s²: squared step in mean free times")
+    right.set_title("steps (cells of λ/4)")
+    right.legend()
+    fig.suptitle("Couette flow of elastic hard spheres, walls 20 λ apart: the DSMC's viscosity")
+    fig.tight_layout()
+    tmp = path + ".tmp"
+    fig.savefig(tmp, dpi=110, format="png")
+    os.replace(tmp, path)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,107 @@
+// initial.from and run.save_state (see run_states.hpp).
+#include "roughgas/io/run_states.hpp"
+
+#include "roughgas/dsmc/species.hpp"
+#include "roughgas/io/atomic_file.hpp"
+#include "roughgas/io/checkpoint_file.hpp"
+#include "roughgas/io/csv_writer.hpp"
+#include "roughgas/io/input_error.hpp"
+#include "roughgas/io/state_file.hpp"
+
+#include <fmt/format.h>
+
+#include <system_error>
+
+namespace roughgas {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string describe(const StateSpecies& s) {
+    return fmt::format("{} (m = {:.6g}, R = {:.6g}, {} grains)", s.name, s.mass, s.radius, s.grains);
+}
+
+// The species the case asks for, as a state file would list them.
+std::vector<StateSpecies> case_species(const RunSpec& spec) {
+    const std::vector<SpeciesBlock> blocks = make_species_blocks(spec.species, spec.particles);
+    std::vector<StateSpecies> s;
+    for (std::size_t k = 0; k < blocks.size(); ++k)
+        s.push_back({spec.species[k].name, blocks[k].grain.mass, blocks[k].grain.radius, blocks[k].count});
+    return s;
+}
+
+StateFile read_state(const fs::path& path) {
+    return decode_state(read_checkpoint_bytes(path));
+}
+
+} // namespace
+
+std::string attach_initial_state(RunSpec& spec, const CaseConfig& cfg, const std::string& case_file) {
+    if (!cfg.initial || cfg.initial->from.empty() || !spec.domain)
+        return "";
+    const std::string& dir = cfg.initial->from;
+    const auto refuse = [&](const std::string& why) {
+        return InputError(case_file, "initial.from", fmt::format("initial.from = \"{}\": {}", dir, why));
+    };
+    std::uint64_t files = 0;
+    while (fs::exists(state_file_path(dir, files)))
+        ++files;
+    if (files == 0)
+        throw refuse(fmt::format("no {} (a run with run.save_state = true writes it)", state_file_path(dir, 0).string()));
+    StateFile first;
+    try {
+        first = read_state(state_file_path(dir, 0));
+    } catch (const StateFileError& e) {
+        throw refuse(fmt::format("{}: {}", state_file_path(dir, 0).string(), e.what()));
+    } catch (const std::system_error& e) {
+        throw refuse(e.what());
+    }
+    const std::vector<StateSpecies> want = case_species(spec);
+    if (first.species != want) {
+        std::string have, asked;
+        for (const StateSpecies& s : first.species)
+            have += (have.empty() ? "" : ", ") + describe(s);
+        for (const StateSpecies& s : want)
+            asked += (asked.empty() ? "" : ", ") + describe(s);
+        throw refuse(fmt::format("{} holds {}; the case has {} (the species and run.particles must be the same)",
+                                 state_file_path(dir, 0).string(), have, asked));
+    }
+    const bool placed = !first.grains.x.empty() && first.grains.box == spec.domain->size;
+    if (placed && spec.domain->initial.mode == Perturbation::density)
+        throw InputError(case_file, "initial.mode",
+                         fmt::format("initial.mode = \"density\" needs fresh positions, but initial.from = \"{}\" "
+                                     "gives them (a box of the same size)",
+                                     dir));
+    const std::string d = dir;
+    spec.domain->initial_state = [d, files, want](int replica) {
+        const fs::path path = state_file_path(d, static_cast<std::uint64_t>(replica) % files);
+        StateFile f;
+        try {
+            f = read_state(path);
+        } catch (const StateFileError& e) {
+            throw std::runtime_error(path.string() + ": " + e.what());
+        }
+        if (f.species != want)
+            throw std::runtime_error(path.string() + ": other species or grain counts than replica 0's file");
+        return std::move(f.grains);
+    };
+    return fmt::format("initial state: the grains of {} ({} file{}, replica r takes file r mod {}; replica 0's at "
+                       "t = {:.6g}, {:.6g} collisions per particle), {}",
+                       state_dir(dir).string(), files, files > 1 ? "s" : "", files, first.grains.t,
+                       first.grains.coll_per_particle,
+                       placed ? "with their positions" : "at uniform random positions");
+}
+
+void attach_final_state(RunSpec& spec, const CaseConfig& cfg, const fs::path& out) {
+    if (!cfg.run.save_state)
+        return;
+    const std::vector<StateSpecies> species = case_species(spec);
+    spec.final_state = [out, species](int replica, const GrainState& g) {
+        std::error_code ignored; // another replica may be creating it at the same time
+        fs::create_directories(state_dir(out), ignored);
+        write_file_atomically(state_file_path(out, static_cast<std::uint64_t>(replica)),
+                              encode_state(roughgas_version(), species, g));
+    };
+}
+
+} // namespace roughgas
