@@ -8,11 +8,13 @@ mean free paths holding 20 grains on average, steps of half a mean free time
 (domain.time_step = 0.5), 300 steps (150 collisions per particle), one output row at the end. For
 each N: smooth grains on 1 thread, rough grains (alpha = 1, beta = 1: energy-conserving, with
 spins) on 1 thread, smooth grains on 2 threads, smooth grains with nearest partners
-(domain.partners) on 1 thread, run alternately for --rounds rounds (the order reversed every
-other round, so that a drift of the machine's speed hits all alike). Reported per variant: the
-median and range of the wall time per particle and step (ns), and of the ratios rough/smooth,
-1 thread/2 threads and nearest/random partners. The machine, date, commit and load are printed
-with the table (docs/performance.md).
+(domain.partners) on 1 thread, and the ice grains of cases/hcs_brilliantov.toml (eps^N and eps^T
+from cached tables, cooling: 120 steps, the case's 60 collisions per particle) on the same deck
+on 1 thread, run alternately for --rounds rounds (the order reversed every other round, so that
+a drift of the machine's speed hits all alike).
+Reported per variant: the median and range of the wall time per particle and step (ns), and of the
+ratios rough/smooth, 1 thread/2 threads, nearest/random partners and brilliantov/smooth. The
+machine, date, commit and load are printed with the table (docs/performance.md).
 """
 import argparse
 import os
@@ -27,6 +29,7 @@ from bench_common import cpu_times, loadavg, machine, measured_line  # noqa: E40
 DENSITY = 0.02          # sigma = 1: mean free path 1/(sqrt(2) pi n) = 11.254
 STEPS = 300
 TIME_STEP = 0.5
+ICE_STEPS = 120
 
 
 def deck(n, rough, partners="random"):
@@ -40,6 +43,32 @@ def deck(n, rough, partners="random"):
             f"[collision]\nmodel = \"constant\"\nalpha = 1.0\nbeta = {beta}\n\n"
             f"[domain]\nsize = [{side}, {side}, {side}]\ncells = [{cells}, {cells}, {cells}]\n"
             f"time_step = {TIME_STEP}\npartners = \"{partners}\"\n")
+
+
+def brilliantov_deck(n, cache_file):
+    """cases/hcs_brilliantov.toml (ice grains, eps^N and eps^T from their tables) on the same deck:
+    cells of 0.42 mean free paths at its density and diameter, 20 grains each, steps of half a mean
+    free time of the cooling gas, but ICE_STEPS of them (the case's 60 collisions per particle: the
+    gas cools by eight decades, and further on its slowest impacts would leave the tables' range for
+    direct integration); the tables from `cache_file`."""
+    with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cases", "hcs_brilliantov.toml")) as f:
+        text = f.read()
+    values = {"particles": str(n), "end": str(ICE_STEPS * TIME_STEP), "output_every": str(ICE_STEPS * TIME_STEP),
+              "output_spacing": '"linear"', "cache_file": f'"{cache_file}"'}
+    lines, section = [], ""
+    for line in text.splitlines():
+        if line.startswith("["):
+            section = line.split("]")[0].strip("[")
+        key = f"{section}.{line.split('=')[0].strip()}"
+        values_key = key.split(".", 1)[1] if key.split(".", 1)[0] in ("run", "contact") else None
+        replace = "=" in line and values_key in values and (values_key != "end" or section == "run")
+        lines.append(f"{values_key} = {values[values_key]}" if replace else line)
+    density, radius = 1000.0, 0.01  # the case's run.density and species radius
+    lam = 1.0 / (2 ** 0.5 * 3.141592653589793 * density * (2 * radius) ** 2)
+    cells = max(1, round((n / 20) ** (1 / 3)))
+    side = cells * 0.42 * lam
+    return ("\n".join(lines) + f"\n\n[domain]\nsize = [{side}, {side}, {side}]\n"
+            f"cells = [{cells}, {cells}, {cells}]\ntime_step = {TIME_STEP}\n")
 
 
 def timed(cmd):
@@ -72,15 +101,21 @@ def main():
         nearest = os.path.join(a.out, f"deck_{n}_nearest.toml")
         with open(nearest, "w") as f:
             f.write(deck(n, False, "nearest"))
+        ice = os.path.join(a.out, f"deck_{n}_brilliantov.toml")
+        with open(ice, "w") as f:
+            f.write(brilliantov_deck(n, os.path.abspath(os.path.join(a.out, "ice_tables.bin"))))
+        timed([roughgas, "run", ice, "--out", os.path.join(a.out, "run"), "--force", "--quiet", "--threads", "2",
+               "--set", "run.particles=2000"])  # builds the tables' cache file: the timed runs load it
         variants = [("smooth, 1 thread", cases[False], "1"), ("rough, 1 thread", cases[True], "1"),
-                    ("smooth, 2 threads", cases[False], "2"), ("smooth, nearest, 1 thread", nearest, "1")]
+                    ("smooth, 2 threads", cases[False], "2"), ("smooth, nearest, 1 thread", nearest, "1"),
+                    ("brilliantov, 1 thread", ice, "1")]
         times = {v[0]: [] for v in variants}
         for r in range(a.rounds):
             order = variants if r % 2 == 0 else variants[::-1]
             for name, case, threads in order:
                 t = timed([roughgas, "run", case, "--out", os.path.join(a.out, "run"), "--force", "--quiet",
                            "--threads", threads])
-                times[name].append(t / (n * STEPS) * 1e9)
+                times[name].append(t / (n * (ICE_STEPS if case == ice else STEPS)) * 1e9)
                 print(f"  N = {n:.0e}, {name}, round {r + 1}: {times[name][-1]:.1f} ns", file=sys.stderr)
 
         def fmt(x):
@@ -92,12 +127,13 @@ def main():
         rows.append(f"| {n:.0e} | {fmt(times['smooth, 1 thread'])} | {fmt(times['rough, 1 thread'])} | "
                     f"{fmt(times['smooth, 2 threads'])} | {ratio('rough, 1 thread', 'smooth, 1 thread')} | "
                     f"{ratio('smooth, 1 thread', 'smooth, 2 threads')} | "
-                    f"{ratio('smooth, nearest, 1 thread', 'smooth, 1 thread')} |")
+                    f"{ratio('smooth, nearest, 1 thread', 'smooth, 1 thread')} | "
+                    f"{fmt(times['brilliantov, 1 thread'])} | {ratio('brilliantov, 1 thread', 'smooth, 1 thread')} |")
     print(measured_line(a.rounds, "wall ns per particle and step (whole runs: start, initial state, 300 "
                                   "steps, one row): median (min-max)", load0, steal0))
     print("| N | smooth, 1 thread | rough, 1 thread | smooth, 2 threads | rough/smooth | 1 thread/2 threads "
-          "| nearest/random partners |")
-    print("|---|---|---|---|---|---|---|")
+          "| nearest/random partners | brilliantov, 1 thread | brilliantov/smooth |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for r in rows:
         print(r)
 

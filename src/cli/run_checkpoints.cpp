@@ -6,6 +6,7 @@
 #include "roughgas/io/csv_writer.hpp"
 #include "roughgas/io/input_error.hpp"
 #include "roughgas/io/run_spec_from_case.hpp"
+#include "roughgas/io/state_file.hpp"
 
 #include <fmt/format.h>
 
@@ -142,7 +143,7 @@ void CheckpointWriter::save_replica(std::uint64_t r, std::vector<std::vector<dou
 }
 
 void remove_stale_temporaries(const fs::path& dir) {
-    for (const fs::path& d : {dir, checkpoint_dir(dir)}) {
+    for (const fs::path& d : {dir, checkpoint_dir(dir), state_dir(dir)}) {
         std::error_code ec;
         for (const auto& e : fs::directory_iterator(d, ec)) {
             const std::string name = e.path().filename().string();

@@ -246,6 +246,14 @@ int run_run(const RunOptions& o, const Communicator& comm) {
             throw std::runtime_error(e.what());
         }
         start_note = attach_initial_state(spec, prepared->cfg, prepared->manifest.run.case_file);
+        if (!start_note.empty() && !prepared->resuming) {
+            std::error_code ec;
+            if (fs::weakly_canonical(prepared->cfg.initial->from, ec) == fs::weakly_canonical(prepared->dir, ec))
+                throw InputError(prepared->manifest.run.case_file, "initial.from",
+                                 fmt::format("initial.from = \"{}\" is the output directory: the run would replace "
+                                             "the state it starts from (give another --out)",
+                                             prepared->cfg.initial->from));
+        }
         attach_final_state(spec, prepared->cfg, prepared->dir);
         spec.threads = o.threads > 0 ? o.threads : default_threads();
         omp_set_num_threads(spec.threads); // the table builds use the same threads
@@ -353,13 +361,24 @@ int run_run(const RunOptions& o, const Communicator& comm) {
             static_cast<double>(spec.particles) / (static_cast<double>(d.cells[0]) * d.cells[1] * d.cells[2]),
             d.time_step, gravity));
         box_note = prov.notes.back();
+        const std::size_t first_note = prov.notes.size() - 1;
         if (edge > 0.5 * lambda)
-            prov.notes.push_back(fmt::format("warning: cells of up to {:.3g} mean free paths (more than 0.5): in "
-                                             "gradients the viscosity comes out too large by about "
-                                             "16/(45 pi) (edge/lambda)^2 = {:.2g} (Alexander, Garcia & Alder 1998)",
-                                             edge / lambda, 16.0 / (45.0 * std::numbers::pi) * (edge / lambda) * (edge / lambda)));
+            prov.notes.push_back(fmt::format(
+                "warning: cells of up to {:.3g} mean free paths (more than 0.5): in gradients the viscosity comes "
+                "out too large by about 16/(45 pi) (edge/lambda)^2 = {:.2g} (Alexander, Garcia & Alder 1998){}",
+                edge / lambda, 16.0 / (45.0 * std::numbers::pi) * (edge / lambda) * (edge / lambda),
+                d.partners == PartnerSelection::nearest
+                    ? "; with nearest partners the grains' spacing sets it instead, a fraction of that"
+                    : ""));
+        // The steps are domain.time_step mean free times of the densest slab: its value is the step
+        // in local mean free times wherever the gas is densest.
+        if (d.time_step > 0.25)
+            prov.notes.push_back(fmt::format(
+                "warning: steps of {:.3g} local mean free times (more than 0.25): the viscosity comes out too "
+                "large by about (4/75) s^2 = {:.2g} (Hadjiconstantinou 2000; docs/validation.md)",
+                d.time_step, 4.0 / 75.0 * d.time_step * d.time_step));
         if (!quiet)
-            for (std::size_t k = prov.notes.size() - (edge > 0.5 * lambda ? 2 : 1); k < prov.notes.size(); ++k)
+            for (std::size_t k = first_note; k < prov.notes.size(); ++k)
                 std::cerr << "roughgas run: " << prov.notes[k] << '\n';
     }
     if (table.has_theory())

@@ -174,6 +174,7 @@ int run_sweep(const SweepOptions& o, const Communicator& comm) {
     }
     // Points run at the same time, one replica each at a time: the largest of them, times the threads.
     RunSpec largest = run_spec_from_case(cases[0]);
+    attach_initial_state(largest, cases[0], o.case_file);
     for (const CaseConfig& c : cases) {
         RunSpec point = run_spec_from_case(c);
         attach_initial_state(point, c, o.case_file); // initial.from's files checked before any work

@@ -305,6 +305,16 @@ ReplicaEnd drive_spatial(const RunSpec& spec, const std::vector<SpeciesBlock>& b
             std::any_of(policies.begin(), policies.end(), [](const AnyPolicy& p) { return needs_rotation(p); }))
             return run_box(spec, blocks, std::move(rough_v), replica, io);
     }
+    // The contact model from its tables for every pair (ice, the shipped brilliantov cases): its own
+    // loop too, without the variant's dispatch around the table look-ups.
+    {
+        std::vector<Brilliantov> v;
+        for (const AnyPolicy& p : policies)
+            if (const auto* b = std::get_if<Brilliantov>(&p))
+                v.push_back(*b);
+        if (v.size() == policies.size())
+            return run_box(spec, blocks, std::move(v), replica, io);
+    }
     if (std::none_of(policies.begin(), policies.end(), [](const AnyPolicy& p) { return needs_rotation(p); })) {
         std::vector<AnySmoothPolicy> v;
         for (const AnyPolicy& p : policies)

@@ -856,6 +856,10 @@ class Builder {
         }
         if (c.domain)
             check_domain(c);
+        if (c.initial && !c.initial->from.empty() && !c.domain)
+            add("initial.from", fmt::format("initial.from = \"{}\" without [domain]: a saved state starts a box "
+                                            "run (give the box in [domain])",
+                                            c.initial->from));
         if (c.initial && c.initial->mode != Perturbation::none) {
             if (!c.domain)
                 add("initial.mode", fmt::format("initial.mode = \"{}\" without [domain]: a wave needs positions "

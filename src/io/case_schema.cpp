@@ -179,7 +179,7 @@ std::vector<Key> keys() {
         Key("run.save_state", T::boolean)
             .fallback(false)
             .doc("write each replica's grains at the end (velocities, spins, and positions in a box) to "
-                 "DIR/state/replica_R.bin, for initial.from of a later run; 72 bytes per grain"),
+                 "DIR/state/replica_R.bin, for initial.from of a later run; 48 bytes per grain, 72 in a box"),
         // [[species]]
         Key("species.name", T::string)
             .fallback(std::string("grain"))
@@ -340,9 +340,9 @@ std::vector<Key> keys() {
             .fallback(std::string("random"))
             .one_of(partner_names)
             .doc("the partner of a candidate pair's first grain: random (any other grain of its cell) or "
-                 "nearest (the nearest other grain of the cell but its last partner in the step: collisions "
-                 "between neighbours, and transport errors set by the grains' spacing instead of the cell "
-                 "size; costs a pass over the cell per candidate)"),
+                 "nearest (the nearest other grain of the cell but the first grain's most recent collision "
+                 "partner: collisions between neighbours, and transport errors set by the grains' spacing "
+                 "instead of the cell size; costs a pass over the cell per candidate)"),
         // [initial]
         Key("initial.mode", T::string)
             .fallback(std::string("none"))

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -213,28 +214,85 @@ TEST(SpatialEngine, SmallBoxCoolsByHaffsLaw) {
 // A state saved after 6 steps and restored into a new engine continues bit for bit as the
 // engine that never stopped (positions, velocities, spins; the streams are keyed by the step).
 TEST(SpatialEngine, SaveAndRestoreContinueTheSameTrajectory) {
-    const DomainSpec d = cube(25.0, 5);
-    SpatialEngine<RoughConstant> a(d, one_species(4000), {make_rough_constant(0.7, 0.2)}, 0.1, 9, 1, 1);
-    CountCollisions count;
-    for (int k = 0; k < 6; ++k)
-        a.step(0.25 / a.collision_frequency(), count);
-    ByteWriter w;
-    a.save(w);
-    SpatialEngine<RoughConstant> b(d, one_species(4000), {make_rough_constant(0.7, 0.2)}, 0.1, 9, 1, 2);
-    ByteReader r(w.bytes());
-    b.restore(r);
-    EXPECT_EQ(r.remaining(), 0u);
-    for (int k = 0; k < 6; ++k) {
-        const double dt = 0.25 / a.collision_frequency();
-        ASSERT_EQ(dt, 0.25 / b.collision_frequency());
-        a.step(dt, count);
-        b.step(dt, count);
+    for (const PartnerSelection partners : {PartnerSelection::random, PartnerSelection::nearest}) {
+        SCOPED_TRACE(partners == PartnerSelection::random ? "random partners" : "nearest partners");
+        DomainSpec d = cube(25.0, 5);
+        d.partners = partners; // nearest: the grains' identities and last partners are part of the state
+        SpatialEngine<RoughConstant> a(d, one_species(4000), {make_rough_constant(0.7, 0.2)}, 0.1, 9, 1, 1);
+        CountCollisions count;
+        for (int k = 0; k < 6; ++k)
+            a.step(0.25 / a.collision_frequency(), count);
+        ByteWriter w;
+        a.save(w);
+        SpatialEngine<RoughConstant> b(d, one_species(4000), {make_rough_constant(0.7, 0.2)}, 0.1, 9, 1, 2);
+        ByteReader r(w.bytes());
+        b.restore(r);
+        EXPECT_EQ(r.remaining(), 0u);
+        for (int k = 0; k < 6; ++k) {
+            const double dt = 0.25 / a.collision_frequency();
+            ASSERT_EQ(dt, 0.25 / b.collision_frequency());
+            a.step(dt, count);
+            b.step(dt, count);
+        }
+        EXPECT_EQ(a.collisions(), b.collisions());
+        for (std::size_t i = 0; i < a.particles(); ++i)
+            ASSERT_TRUE(a.positions()[i].x == b.positions()[i].x && a.velocities()[i].y == b.velocities()[i].y &&
+                        a.angular_velocities()[i].z == b.angular_velocities()[i].z)
+                << i;
     }
-    EXPECT_EQ(a.collisions(), b.collisions());
-    for (std::size_t i = 0; i < a.particles(); ++i)
-        ASSERT_TRUE(a.positions()[i].x == b.positions()[i].x && a.velocities()[i].y == b.velocities()[i].y &&
-                    a.angular_velocities()[i].z == b.angular_velocities()[i].z)
-            << i;
+}
+
+// A state to start from (DomainSpec::initial_state): its grains' velocities and spins are taken as
+// they are, with their positions when the state's box has the engine's size (the same (x, v) pairs,
+// in cell order) and at new uniform positions otherwise; a sheared box adds its flow
+// u_x = a (y - L_y/2) (and removes the total momentum) and gives it back in grain_state() (the
+// velocities about the flow).
+TEST(SpatialEngine, StartsFromAGivenState) {
+    const DomainSpec d = cube(25.0, 5);
+    SpatialEngine<RoughConstant> a(d, one_species(3000), {make_rough_constant(0.7, 0.2)}, 0.1, 9, 0, 1);
+    CountCollisions count;
+    for (int k = 0; k < 4; ++k)
+        a.step(0.25 / a.collision_frequency(), count);
+    const GrainState g = a.grain_state();
+    const auto pairs = [](const std::vector<Vec3>& x, const std::vector<Vec3>& v) {
+        std::vector<std::array<double, 4>> p;
+        for (std::size_t i = 0; i < x.size(); ++i)
+            p.push_back({x[i].x, x[i].y, v[i].x, v[i].z});
+        std::sort(p.begin(), p.end());
+        return p;
+    };
+    DomainSpec same = d, other = cube(30.0, 5), sheared = d;
+    for (DomainSpec* s : {&same, &other, &sheared})
+        s->initial_state = [&](int) { return g; };
+    sheared.shear_rate = 0.01;
+    SpatialEngine<RoughConstant> b(same, one_species(3000), {make_rough_constant(0.7, 0.2)}, 0.1, 9, 3, 1);
+    EXPECT_EQ(pairs(b.positions(), b.velocities()), pairs(g.x, g.v));
+    SpatialEngine<RoughConstant> c(other, one_species(3000), {make_rough_constant(0.7, 0.2)}, 0.1, 9, 3, 1);
+    EXPECT_NE(pairs(c.positions(), c.velocities()), pairs(g.x, g.v));
+    std::vector<std::array<double, 3>> vg, vc; // the same velocities and spins, other positions
+    for (std::size_t i = 0; i < g.v.size(); ++i) {
+        vg.push_back({g.v[i].x, g.v[i].y, g.w[i].z});
+        vc.push_back({c.velocities()[i].x, c.velocities()[i].y, c.angular_velocities()[i].z});
+    }
+    std::sort(vg.begin(), vg.end());
+    std::sort(vc.begin(), vc.end());
+    EXPECT_EQ(vg, vc);
+    SpatialEngine<RoughConstant, true> e(sheared, one_species(3000), {make_rough_constant(0.7, 0.2)}, 0.1, 9, 3, 1);
+    const GrainState back = e.grain_state();
+    for (std::size_t i = 0; i < g.v.size(); ++i) {
+        const double flow = 0.01 * (e.positions()[i].y - 12.5);
+        ASSERT_NEAR(e.velocities()[i].x - back.v[i].x, flow, 1e-15) << i;
+    }
+    // The same grains about the flow, up to the flow's mean over the grains (removed with the
+    // momentum: the start has none), the same for every grain.
+    const auto p = pairs(back.x, back.v), q = pairs(g.x, g.v);
+    ASSERT_EQ(p.size(), q.size());
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        ASSERT_TRUE(p[i][0] == q[i][0] && p[i][1] == q[i][1]) << i;
+        ASSERT_NEAR(p[i][2] - q[i][2], p[0][2] - q[0][2], 1e-12) << i;
+        ASSERT_NEAR(p[i][3], q[i][3], 1e-12) << i;
+    }
+    EXPECT_LT(std::abs(p[0][2] - q[0][2]), 0.01 * 12.5 * 0.1); // a few per cent of the flow's amplitude
 }
 
 // The initial waves (InitialSpec): at t = 0 each mode's amplitude is what was asked, within the

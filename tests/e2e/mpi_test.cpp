@@ -1,6 +1,6 @@
 // `mpirun -np R roughgas run|sweep` (src/cli/run_command.cpp, sweep_command.cpp, rank_errors.hpp):
 // the ranks share the replicas or the sweep points and rank 0 writes the very bytes one process
-// writes, for 1, 2 and 3 ranks; a SIGTERM to the ranks stops them as it stops one process and
+// writes, for 1, 2 and 3 ranks (a box with walls and saved states too); a SIGTERM to the ranks stops them as it stops one process and
 // the job resumes on another rank count into the same bytes; a rank killed with SIGKILL ends the
 // job non-zero, naming the rank, with no ensemble file written; invalid input is reported once,
 // with exit status 2. Built only when CMake found MPI (ROUGHGAS_MPIEXEC).
@@ -104,6 +104,37 @@ TEST_F(Mpi, RanksWriteTheBytesOfOneProcess) {
         for (const char* file : {"moments.csv", "histograms.csv", "scaled.csv"})
             EXPECT_EQ(test::read_file(out / file), test::read_file(dir / "one" / file)) << ranks << " " << file;
         EXPECT_FALSE(fs::exists(out / "checkpoint")) << "no checkpoint asked for, none left";
+    }
+}
+
+// A box between a diffuse floor and a moving diffuse lid (walls.csv, profiles.csv and the steady
+// files of a driven box), 3 replicas whose final grains are saved (run.save_state): 2 and 3 ranks
+// write the bytes of one process, the state files included.
+TEST_F(Mpi, BoxRanksWriteTheBytesOfOneProcess) {
+    const test::ScratchDir dir;
+    const fs::path f = dir.write(
+        "box.toml", "[run]\nparticles = 3000\nreplicas = 3\nend = 20.0\noutput_every = 2.0\ndensity = 0.02\nseed = 5\n"
+                    "save_state = true\n\n[[species]]\nmass = 1.0\nradius = 0.5\n\n"
+                    "[collision]\nmodel = \"constant\"\nalpha = 0.9\nbeta = 0.4\n\n"
+                    "[domain]\nsize = [50.0, 50.0, 50.0]\ncells = [5, 5, 5]\n"
+                    "boundary = [\"periodic\", \"walls\", \"periodic\"]\n\n"
+                    "[wall_lower]\nkind = \"diffuse\"\ntemperature = 1.0\n\n"
+                    "[wall_upper]\nkind = \"diffuse\"\ntemperature = 1.0\nvelocity = [0.5, 0.0, 0.0]\n");
+    ASSERT_EQ(test::run_roughgas("run '" + f.string() + "' --quiet --out '" + (dir / "one").string() + "'", dir)
+                  .status,
+              0);
+    const std::vector<std::string> files = {"moments.csv",   "walls.csv",           "profiles.csv",
+                                            "steady.csv",    "steady_profiles.csv", "state/replica_0.bin",
+                                            "state/replica_1.bin", "state/replica_2.bin"};
+    for (const std::string& file : files)
+        ASSERT_TRUE(fs::exists(dir / "one" / file)) << file;
+    for (int ranks : {2, 3}) {
+        const fs::path out = dir / ("np" + std::to_string(ranks));
+        const test::Stopped r =
+            run_mpi(ranks, {"run", f.string(), "--quiet", "--threads", "1", "--out", out.string()}, dir);
+        ASSERT_EQ(exit_status(r.status), 0) << r.err;
+        for (const std::string& file : files)
+            EXPECT_EQ(test::read_file(out / file), test::read_file(dir / "one" / file)) << ranks << " " << file;
     }
 }
 

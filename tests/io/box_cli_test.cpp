@@ -164,7 +164,8 @@ TEST(BoxCli, SmallBoxCoolsAsTheHomogeneousGas) {
 // same grains: equal to round-off), at uniform positions; a box started from a box of the same size
 // takes the positions too (the box's last row again). Refused before any work (exit 2, nothing
 // written): a directory without state files, other species or grain counts, a density wave on
-// positions taken over, and an output directory holding a state without --force.
+// positions taken over, a saved state without [domain], an output directory holding a state
+// without --force, and the state's own directory as the output directory even with --force.
 TEST(BoxCli, StartsFromTheSavedStateOfAnEarlierRun) {
     const test::ScratchDir dir;
     const std::string c = box_case(3000, 1, 10.0);
@@ -198,6 +199,8 @@ TEST(BoxCli, StartsFromTheSavedStateOfAnEarlierRun) {
         {replaced(from_hom, "particles = 3000", "particles = 3001"), "initial.from", "3000 grains"},
         {c + "\n[initial]\nmode = \"density\"\nfrom = " + q(dir / "box") + "\n", "initial.mode",
          "needs fresh positions"},
+        {c.substr(0, c.find("[domain]")) + "[initial]\nfrom = " + q(dir / "hom") + "\n", "initial.from",
+         "without [domain]"},
     };
     for (const auto& x : bad) {
         const fs::path f = dir.write("bad.toml", x.text);
@@ -210,6 +213,11 @@ TEST(BoxCli, StartsFromTheSavedStateOfAnEarlierRun) {
     const test::CommandResult e = test::run_roughgas("run " + q(box) + " --out " + q(dir / "box"), dir);
     EXPECT_EQ(e.status, 2);
     EXPECT_NE(e.err.find("state exists (use --force"), std::string::npos) << e.err;
+    // A run may not replace the state it starts from, even with --force.
+    const test::CommandResult o = test::run_roughgas("run " + q(again) + " --force --out " + q(dir / "box"), dir);
+    EXPECT_EQ(o.status, 2);
+    EXPECT_NE(o.err.find("is the output directory"), std::string::npos) << o.err;
+    EXPECT_TRUE(fs::exists(dir / "box" / "state" / "replica_0.bin"));
 }
 
 } // namespace

@@ -13,8 +13,8 @@ namespace roughgas {
 struct GrainState {
     std::array<double, 3> box{};          // the box's size; all 0 after a homogeneous run (no positions)
     double t = 0, coll_per_particle = 0;  // when the state was taken
-    std::vector<Vec3> x, v, w;            // x empty without a box; v as the run's rows see it (a
-                                          // homogeneous shear run: the peculiar velocity)
+    std::vector<Vec3> x, v, w;            // x empty without a box; v as the run's rows see it (in a
+                                          // shear run, homogeneous or a box, about the flow)
 };
 
 // Per replica, the state a box run starts from (DomainSpec::initial_state).

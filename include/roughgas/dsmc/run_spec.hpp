@@ -77,7 +77,7 @@ struct WallSpec {
 
 // How a cell picks the partner of a candidate pair's first grain (dsmc/spatial_engine.hpp):
 //   random   any other grain of the cell, uniformly (the standard DSMC);
-//   nearest  the nearest other grain of the cell, except the grain's last partner in this step
+//   nearest  the nearest other grain of the cell, except the grain's most recent collision partner
 //            (Bird 2007; Gallis, Torczynski, Rader & Bird 2009): the collision separation, and
 //            with it the cell-size error of the transport coefficients, shrinks from the cell's
 //            size to the spacing of its grains.

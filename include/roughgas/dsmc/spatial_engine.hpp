@@ -196,7 +196,7 @@ template <class Policy, bool General = false> class SpatialEngine {
             init_maxwellian(*this, blocks_, seed, replica);
         }
         perturb_velocities();
-        if (domain_.lees_edwards() && !placed) { // the uniform shear flow u_x = a (y - L_y/2) of the images
+        if (domain_.lees_edwards()) { // the uniform shear flow u_x = a (y - L_y/2) of the images
             for (std::size_t i = 0; i < particles_; ++i)
                 v_[i].x += domain_.shear_rate * (x_[i].y - 0.5 * domain_.size[1]);
             remove_mean_velocity(*this, blocks_);
@@ -375,7 +375,8 @@ template <class Policy, bool General = false> class SpatialEngine {
         return (index(x.z, 2) * domain_.cells[1] + index(x.y, 1)) * domain_.cells[0] + index(x.x, 0);
     }
 
-    // The grains as they are now, for a later run to start from (dsmc/grain_state.hpp).
+    // The grains as they are now, for a later run to start from (dsmc/grain_state.hpp); in a sheared
+    // box their velocities about the flow u_x = a (y - L_y/2) at their positions, as the rows see them.
     GrainState grain_state() const {
         GrainState g;
         g.box = domain_.size;
@@ -383,6 +384,9 @@ template <class Policy, bool General = false> class SpatialEngine {
         g.x = x_;
         g.v = v_;
         g.w = w_;
+        if (domain_.lees_edwards())
+            for (std::size_t i = 0; i < particles_; ++i)
+                g.v[i].x -= domain_.shear_rate * (x_[i].y - 0.5 * domain_.size[1]);
         return g;
     }
 
@@ -729,7 +733,8 @@ template <class Policy, bool General = false> class SpatialEngine {
                 }
             }
             start[cells_] = next;
-            team_->for_each(P, [&](std::size_t p) {
+            // Compiled twice, so that the loop of random partners has no test for the identities.
+            const auto scatter = [&]<bool Identities>(std::size_t p) {
                 std::uint32_t* pos = counts_.data() + p * cells_;
                 const auto [first, last] = range(p);
                 for (std::size_t i = first; i < last; ++i) {
@@ -737,11 +742,17 @@ template <class Policy, bool General = false> class SpatialEngine {
                     x2_[q] = x_[i];
                     v2_[q] = v_[i];
                     w2_[q] = w_[i];
-                    if (nearest) {
+                    if constexpr (Identities) {
                         id2_[q] = id_[i];
                         last2_[q] = last_[i];
                     }
                 }
+            };
+            team_->for_each(P, [&](std::size_t p) {
+                if (nearest)
+                    scatter.template operator()<true>(p);
+                else
+                    scatter.template operator()<false>(p);
             });
         }
         x_.swap(x2_);
