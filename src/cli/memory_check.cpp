@@ -22,9 +22,9 @@ void refuse_if_too_large(const RunSpec& spec, int at_once, const std::string& ca
                                  "replica, {} replica{} at a time), more than the {:.3g} GB this process may use ({}); "
                                  "take fewer grains{}, or fewer threads (--threads) to run fewer replicas at a time",
                                  spec.particles, need / 1e9, per_grain, spec.particles,
-                                 cells > 0 ? fmt::format(" + {:.3g} GB for the cells", cells / 1e9) : "", at_once,
+                                 cells > 0 ? fmt::format(" + {:.3g} GB for the cells and rows", cells / 1e9) : "", at_once,
                                  at_once > 1 ? "s" : "", static_cast<double>(free->bytes) / 1e9, free->source,
-                                 cells > 0 ? " or cells" : ""));
+                                 cells > 0 ? ", cells or rows" : ""));
 }
 
 } // namespace roughgas::cli

@@ -127,7 +127,11 @@ std::size_t memory_per_replica_fixed_bound(const RunSpec& spec) {
         4.0 * static_cast<double>(S + 1) + 4.0 * 64 + (8.0 * spec.pairs.size() + 64) / 64 + 6 * sizeof(double);
     // The step's local collision frequencies: per chunk of grains (up to 64 per species), bin and species, 5 sums.
     const double bins = d.cells[static_cast<std::size_t>(d.profile_axis)];
-    return static_cast<std::size_t>(cells * per_cell + 64.0 * static_cast<double>(S) * bins * 5 * 8);
+    // The rows the replica keeps until the run ends (the sink's copy and the ensemble's): with the
+    // profiles, every bin's fields in every row.
+    const double rows = (static_cast<double>(spec.output_times.size()) + 1) *
+                        static_cast<double>(replica_row_columns(spec).size()) * sizeof(double) * 2;
+    return static_cast<std::size_t>(cells * per_cell + 64.0 * static_cast<double>(S) * bins * 5 * 8 + rows);
 }
 
 std::vector<Column> wall_columns(const RunSpec& spec) {

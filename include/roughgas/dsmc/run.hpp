@@ -63,7 +63,8 @@ std::vector<Column> replica_row_columns(const RunSpec& spec);
 // engine's index and sort arrays, a row's scratch): what a command checks against the machine's
 // free memory before any work (core/available_memory.hpp).
 std::size_t memory_per_particle_bound(const RunSpec& spec);
-// The same for what does not grow with the grains: a box's per-cell arrays (0 without [domain]).
+// The same for what does not grow with the grains: a box's per-cell arrays and the rows it keeps
+// (its profiles: bins x fields per row) (0 without [domain]).
 std::size_t memory_per_replica_fixed_bound(const RunSpec& spec);
 
 // Runs replica `replica` (0-based; its RNG streams derive from spec.seed and the replica index),
