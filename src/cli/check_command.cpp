@@ -2,6 +2,8 @@
 #include "commands.hpp"
 
 #include "roughgas/io/case_file.hpp"
+#include "roughgas/io/run_spec_from_case.hpp"
+#include "roughgas/io/run_states.hpp"
 
 #include <iostream>
 #include <map>
@@ -19,6 +21,10 @@ struct CheckOptions {
 
 int run_check(const CheckOptions& o) {
     const CaseConfig cfg = load_case(o.case_file, o.sets, o.use); // throws InputError: exit 2
+    if (o.use == CaseUse::run && cfg.initial && !cfg.initial->from.empty()) { // its state files too
+        RunSpec spec = run_spec_from_case(cfg);
+        attach_initial_state(spec, cfg, o.case_file);
+    }
     for (const std::string& u : cfg.unused)
         std::cerr << o.case_file << ": warning: " << u << '\n';
     if (o.print) {

@@ -209,6 +209,9 @@ TEST(BoxCli, StartsFromTheSavedStateOfAnEarlierRun) {
         EXPECT_NE(e.err.find(x.key), std::string::npos) << e.err;
         EXPECT_NE(e.err.find(x.says), std::string::npos) << e.err;
         EXPECT_FALSE(fs::exists(dir / "out"));
+        const test::CommandResult k = test::run_roughgas("check " + q(f), dir); // `check` refuses it too
+        EXPECT_EQ(k.status, 2) << x.key << "\n" << k.err;
+        EXPECT_NE(k.err.find(x.says), std::string::npos) << k.err;
     }
     const test::CommandResult e = test::run_roughgas("run " + q(box) + " --out " + q(dir / "box"), dir);
     EXPECT_EQ(e.status, 2);
