@@ -120,10 +120,8 @@ PointResult point_result(const CaseConfig& cfg, const std::vector<std::vector<st
 }
 
 // Every replica's rows; empty when `signals` asked for a stop before the point ended (its state is dropped).
-std::optional<std::vector<std::vector<std::vector<double>>>> run_point(const CaseConfig& cfg,
-                                                                        const StopSignals& signals) {
-    RunSpec spec = run_spec_from_case(cfg);
-    attach_initial_state(spec, cfg, "");
+// `spec`: the point's, with initial.from's state attached (checked before any work).
+std::optional<std::vector<std::vector<std::vector<double>>>> run_point(RunSpec spec, const StopSignals& signals) {
     spec.threads = 1;
     MomentsTable table(spec);
     const auto tables = build_run_tables(spec);
@@ -155,6 +153,7 @@ int run_sweep(const SweepOptions& o, const Communicator& comm) {
     Sweep s;
     std::vector<double> values;
     std::vector<CaseConfig> cases;
+    std::vector<RunSpec> specs; // the points' (initial.from attached)
     std::vector<std::vector<std::string>> point_sets;
     const fs::path dir(o.out);
     OutputDirLock lock; // one writer per directory (output_dir_lock.hpp), until the sweep ends
@@ -173,14 +172,12 @@ int run_sweep(const SweepOptions& o, const Communicator& comm) {
         point_sets.push_back(sets);
     }
     // Points run at the same time, one replica each at a time: the largest of them, times the threads.
-    RunSpec largest = run_spec_from_case(cases[0]);
-    attach_initial_state(largest, cases[0], o.case_file);
     for (const CaseConfig& c : cases) {
-        RunSpec point = run_spec_from_case(c);
-        attach_initial_state(point, c, o.case_file); // initial.from's files checked before any work
-        if (c.run.particles > largest.particles)
-            largest = std::move(point);
+        specs.push_back(run_spec_from_case(c));
+        attach_initial_state(specs.back(), c, o.case_file); // initial.from's files checked before any work
     }
+    const RunSpec& largest = *std::max_element(
+        specs.begin(), specs.end(), [](const RunSpec& a, const RunSpec& b) { return a.particles < b.particles; });
     const long long points = (s.count + comm.size() - 1) / comm.size();
     refuse_if_too_large(largest,
                         static_cast<int>(std::max(1LL, std::min<long long>(o.threads > 0 ? o.threads : default_threads(),
@@ -244,7 +241,7 @@ int run_sweep(const SweepOptions& o, const Communicator& comm) {
             }
             if (signals.requested())
                 continue;
-            auto rows = run_point(cases[static_cast<std::size_t>(k)], signals);
+            auto rows = run_point(specs[static_cast<std::size_t>(k)], signals);
             if (!rows)
                 continue;
             PointResult p = point_result(cases[static_cast<std::size_t>(k)], *rows);

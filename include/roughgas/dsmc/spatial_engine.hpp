@@ -32,11 +32,11 @@
 // step or an earlier one, when the cell holds more than two (grains carry an identity and their
 // last partner's for this). Without that rule two neighbours, still neighbours a step later,
 // collide again and again: repeated collisions relax the stress less than collisions with fresh
-// partners, and the viscosity comes out too large (Bird 2007; Gallis, Torczynski, Rader & Bird 2009). The rate and the acceptance are
-// unchanged: where velocities do not depend on positions (a uniform gas) the pair's |g| has the
-// random pair's distribution and the collision frequency stays exact, and the separation of the
-// colliding grains, which sets the cell-size error of the transport coefficients, shrinks from the
-// cell's size to the spacing of its grains.
+// partners, and the viscosity comes out too large (Bird 2007; Gallis, Torczynski, Rader & Bird
+// 2009). The rate and the acceptance are unchanged: where velocities do not depend on positions (a
+// uniform gas) the pair's |g| has the random pair's distribution and the collision frequency stays
+// exact, and the separation of the colliding grains, which sets the cell-size error of the
+// transport coefficients, shrinks from the cell's size to the spacing of its grains.
 //
 // Threads. Each step's collisions run over work units of a fixed number of cells, claimed
 // dynamically by the replica's WorkerTeam; unit u draws from the stream (seed, cell_collisions,
