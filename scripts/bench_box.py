@@ -19,14 +19,11 @@ machine, date, commit and load are printed with the table (docs/performance.md).
 import argparse
 import os
 import statistics
-import subprocess
 import sys
-import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_common import cpu_times, loadavg, machine, measured_line  # noqa: E402
+from bench_common import box_deck, cpu_times, loadavg, machine, measured_line, timed  # noqa: E402
 
-DENSITY = 0.02          # sigma = 1: mean free path 1/(sqrt(2) pi n) = 11.254
 STEPS = 300
 TIME_STEP = 0.5
 ICE_STEPS = 120
@@ -34,15 +31,7 @@ ICE_STEPS = 120
 
 def deck(n, rough, partners="random"):
     """The case text for n grains: cells of 0.42 mean free paths with 20 grains each."""
-    lam = 1.0 / (2 ** 0.5 * 3.141592653589793 * DENSITY)
-    cells = max(1, round((n / 20) ** (1 / 3)))
-    side = cells * 0.42 * lam
-    beta = 1.0 if rough else -1.0
-    return (f"[run]\nparticles = {n}\nend = {STEPS * TIME_STEP}\noutput_every = {STEPS * TIME_STEP}\n"
-            f"density = {DENSITY}\nseed = 1\n\n[[species]]\nmass = 1.0\nradius = 0.5\n\n"
-            f"[collision]\nmodel = \"constant\"\nalpha = 1.0\nbeta = {beta}\n\n"
-            f"[domain]\nsize = [{side}, {side}, {side}]\ncells = [{cells}, {cells}, {cells}]\n"
-            f"time_step = {TIME_STEP}\npartners = \"{partners}\"\n")
+    return box_deck(n, STEPS * TIME_STEP, STEPS * TIME_STEP, TIME_STEP, 1.0 if rough else -1.0, partners)
 
 
 def brilliantov_deck(n, cache_file):
@@ -71,14 +60,6 @@ def brilliantov_deck(n, cache_file):
             f"cells = [{cells}, {cells}, {cells}]\ntime_step = {TIME_STEP}\n")
 
 
-def timed(cmd):
-    t0 = time.perf_counter()
-    p = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    if p.returncode != 0:
-        sys.exit(f"bench_box: {' '.join(cmd)} failed ({p.returncode}):\n{p.stderr}")
-    return time.perf_counter() - t0
-
-
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--build", default="build")
@@ -105,7 +86,7 @@ def main():
         with open(ice, "w") as f:
             f.write(brilliantov_deck(n, os.path.abspath(os.path.join(a.out, "ice_tables.bin"))))
         timed([roughgas, "run", ice, "--out", os.path.join(a.out, "run"), "--force", "--quiet", "--threads", "2",
-               "--set", "run.particles=2000"])  # builds the tables' cache file: the timed runs load it
+               "--set", "run.particles=2000"], "bench_box")  # builds the tables' cache file: the timed runs load it
         variants = [("smooth, 1 thread", cases[False], "1"), ("rough, 1 thread", cases[True], "1"),
                     ("smooth, 2 threads", cases[False], "2"), ("smooth, nearest, 1 thread", nearest, "1"),
                     ("brilliantov, 1 thread", ice, "1")]
@@ -114,7 +95,7 @@ def main():
             order = variants if r % 2 == 0 else variants[::-1]
             for name, case, threads in order:
                 t = timed([roughgas, "run", case, "--out", os.path.join(a.out, "run"), "--force", "--quiet",
-                           "--threads", threads])
+                           "--threads", threads], "bench_box")
                 times[name].append(t / (n * (ICE_STEPS if case == ice else STEPS)) * 1e9)
                 print(f"  N = {n:.0e}, {name}, round {r + 1}: {times[name][-1]:.1f} ns", file=sys.stderr)
 

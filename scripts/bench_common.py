@@ -7,6 +7,7 @@ import platform
 import re
 import resource
 import subprocess
+import sys
 import time
 
 # Idle OpenMP threads (roughgas's loops over replicas, sweep points and table builds; a replica's
@@ -153,6 +154,32 @@ def pair_rate(binary, flt):
 
 def _first_rate(text):
     return [b["items_per_second"] for b in json.loads(text)["benchmarks"] if b.get("run_type") == "iteration"][0]
+
+
+BOX_DENSITY = 0.02  # sigma = 1: mean free path 1/(sqrt(2) pi n) = 11.254
+
+
+def box_deck(n, end, output_every, time_step, beta=-1.0, partners="random", extra=""):
+    """The DSMC reference deck for n grains (bench_box.py, bench_spectra.py): an elastic gas of
+    smooth (beta = -1) or rough (beta = 1) spheres in a periodic cube of cells of 0.42 mean free
+    paths with 20 grains each; `extra` is appended (further tables)."""
+    lam = 1.0 / (2 ** 0.5 * 3.141592653589793 * BOX_DENSITY)
+    cells = max(1, round((n / 20) ** (1 / 3)))
+    side = cells * 0.42 * lam
+    return (f"[run]\nparticles = {n}\nend = {end}\noutput_every = {output_every}\n"
+            f"density = {BOX_DENSITY}\nseed = 1\n\n[[species]]\nmass = 1.0\nradius = 0.5\n\n"
+            f"[collision]\nmodel = \"constant\"\nalpha = 1.0\nbeta = {beta}\n\n"
+            f"[domain]\nsize = [{side}, {side}, {side}]\ncells = [{cells}, {cells}, {cells}]\n"
+            f"time_step = {time_step}\npartners = \"{partners}\"\n" + extra)
+
+
+def timed(cmd, who):
+    """Wall seconds of a command, which must succeed (else the script `who` exits with its stderr)."""
+    t0 = time.perf_counter()
+    p = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    if p.returncode != 0:
+        sys.exit(f"{who}: {' '.join(cmd)} failed ({p.returncode}):\n{p.stderr}")
+    return time.perf_counter() - t0
 
 
 def run_roughgas(roughgas, case, out, sets=(), threads=1):

@@ -148,7 +148,8 @@ void remove_stale_temporaries(const fs::path& dir) {
         for (const auto& e : fs::directory_iterator(d, ec)) {
             const std::string name = e.path().filename().string();
             bool ours = d != dir && name.find(".bin.tmp.") != std::string::npos;
-            for (const char* csv : {"moments", "histograms", "steady", "scaled", "walls", "profiles", "steady_profiles"})
+            for (const char* csv : {"moments", "histograms", "steady", "scaled", "walls", "profiles", "steady_profiles",
+                                    "spectra", "modes"})
                 ours |= name.starts_with(std::string(csv) + ".csv.tmp.");
             if (ours && e.is_regular_file())
                 fs::remove(e.path(), ec);

@@ -75,6 +75,8 @@ constexpr const char* scaled_file = "scaled.csv";
 constexpr const char* walls_file = "walls.csv";
 constexpr const char* profiles_file = "profiles.csv";
 constexpr const char* steady_profiles_file = "steady_profiles.csv";
+constexpr const char* spectra_file = "spectra.csv";
+constexpr const char* modes_file = "modes.csv";
 
 // Runs that reach a steady state (steady.csv) rather than a scaled cooling state (scaled.csv):
 // uniform shear flow, and boxes whose walls drive the gas (a diffuse wall holds its temperature, a
@@ -137,7 +139,8 @@ std::pair<std::uint64_t, std::uint64_t> replica_range(const std::string& text, s
 
 // Never overwrite earlier results by accident: that is an input error, reported before any work.
 // A checkpoint of an earlier run counts too: it is continued with --resume, or replaced with --force.
-void check_output_dir(const fs::path& dir, bool force, bool histograms, bool shear, bool walls, bool box) {
+void check_output_dir(const fs::path& dir, bool force, bool histograms, bool shear, bool walls, bool box,
+                      bool spectra) {
     if (fs::exists(dir) && !fs::is_directory(dir))
         throw InputError(dir.string(), "--out", "--out " + dir.string() + ": exists and is not a directory");
     if (force)
@@ -153,8 +156,10 @@ void check_output_dir(const fs::path& dir, bool force, bool histograms, bool she
                          fmt::format("--out {}: {} exists (use --force to overwrite)", dir.string(),
                                      state_dir(dir).string()));
     for (const char* file :
-         {output_file, histograms_file, steady_file, scaled_file, walls_file, profiles_file, steady_profiles_file}) {
+         {output_file, histograms_file, steady_file, scaled_file, walls_file, profiles_file, steady_profiles_file,
+          spectra_file, modes_file}) {
         if ((file == histograms_file && !histograms) || (file == steady_file && !shear) ||
+            ((file == spectra_file || file == modes_file) && !spectra) ||
             (file == steady_profiles_file && !(shear && box)) ||
             (file == scaled_file && shear) || (file == walls_file && !walls) || (file == profiles_file && !box))
             continue;
@@ -193,7 +198,8 @@ RunSetup new_run(const RunOptions& o, bool root) {
     if (root) {
         s.lock.lock_if_exists(s.dir); // before its files are checked: another run may be writing them
         check_output_dir(s.dir, o.force, s.cfg.run.histogram_every > 0, driven(s.cfg),
-                         s.cfg.domain && s.cfg.domain->has_walls(), s.cfg.domain.has_value());
+                         s.cfg.domain && s.cfg.domain->has_walls(), s.cfg.domain.has_value(),
+                         s.cfg.domain && s.cfg.spectra);
     }
     s.manifest.run = {roughgas_version(),
                       o.case_file,
@@ -409,11 +415,29 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         "collision cell along it), at that row's t: n, u, T_tr, T_rot, theta, the kinetic (P_ab) and collisional "
         "(Pc_ab, over the interval since the previous row) pressure tensor, the kinetic heat flux q, the mean spin "
         "omega (observables/profiles.hpp)");
+    std::optional<CsvWriter> scsv = box_csv(
+        table.spectra_table_columns(),
+        "one block of rows per moments.csv row, at that row's t: axis 0 the shells of |k| (n: the shell, k its mean "
+        "|k|, n_modes its wave vectors, k and -k apart), axis 1, 2, 3 the wave numbers n along x, y, z; from the "
+        "grains on the grid of the collision cells (nearest grid point): the structure factor S, the transverse "
+        "and longitudinal current spectra E_perp, E_par (per transverse component) and the spectrum S_T of the "
+        "kinetic energy at fixed density; an ideal gas has S = S_T = 1 and E_perp = E_par = T at every k "
+        "(observables/spectra.hpp)");
+    std::optional<CsvWriter> mcsv = box_csv(
+        table.modes_table_columns().size() > 5 ? table.modes_table_columns() : std::vector<Column>{},
+        "one block of rows per moments.csv row, at that row's t: the lowest wave numbers n along each axis "
+        "(axis 1, 2, 3: x, y, z; k = 2 pi n / L), the complex amplitudes (2/N) sum_j q_j exp(-i k.x_j) of the "
+        "density (q = 1), of the flow velocity (mass-weighted) and of the kinetic temperature relative to its "
+        "mean, x_j the centre of grain j's cell: a wave A sin(k x) has the amplitude -i A (observables/spectra.hpp)");
     const auto write_box_csvs = [&] { // beside every write of moments.csv
         if (wcsv)
             wcsv->write(dir / walls_file);
         if (pcsv)
             pcsv->write(dir / profiles_file);
+        if (scsv)
+            scsv->write(dir / spectra_file);
+        if (mcsv)
+            mcsv->write(dir / modes_file);
     };
     std::optional<HistogramsTable> htable;
     std::optional<CsvWriter> hcsv;
@@ -554,6 +578,12 @@ int run_run(const RunOptions& o, const Communicator& comm) {
                 for (const std::vector<double>& r : profile_blocks.back())
                     pcsv->add_row(r);
             }
+            if (scsv)
+                for (const std::vector<double>& r : table.combine_spectra(spans))
+                    scsv->add_row(r);
+            if (mcsv)
+                for (const std::vector<double>& r : table.combine_modes(spans))
+                    mcsv->add_row(r);
         }
         const auto t = std::chrono::steady_clock::now();
         if (csv.rows() > on_disk && (now || t - last_write >= 10 * write_cost)) {

@@ -105,6 +105,9 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
     for (const SpeciesBlock& b : blocks)
         sigma_max = std::max(sigma_max, 2 * b.grain.radius);
     profile_geometry.gravity = {domain.gravity[0], domain.gravity[1], domain.gravity[2]};
+    std::optional<Spectra> spectra; // planned once per replica
+    if (domain.spectra)
+        spectra.emplace(spectra_geometry(domain));
 
     const auto state = [&] {
         ByteWriter w;
@@ -186,6 +189,11 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
                                 first ? std::numeric_limits<double>::quiet_NaN() : t - t_prev);
             walls_prev = engine.wall_fluxes();
             row.insert(row.end(), profiles.begin(), profiles.end());
+            if (spectra) {
+                const std::vector<double> s =
+                    spectra->compute(engine.positions(), engine.velocities(), blocks, engine.team());
+                row.insert(row.end(), s.begin(), s.end());
+            }
             if (row.size() != columns)
                 throw std::logic_error("run_replica: row and columns differ");
             t_prev = t;

@@ -76,6 +76,10 @@ void validate(const RunSpec& spec) {
         require(spec.kernel == CollisionKernel::hard_sphere, "a spatially resolved run collides hard spheres");
         require(spec.histogram_times.empty(), "a spatially resolved run writes no histograms");
         require(spec.domain->profile_axis >= 0 && spec.domain->profile_axis <= 2, "the profile axis must be 0, 1 or 2");
+        require(!spec.domain->spectra || (!spec.domain->has_walls() && !spec.domain->lees_edwards()),
+                "spectra need a periodic box (no walls, no Lees-Edwards)");
+        require(!spec.domain->spectra || (spec.domain->spectra->modes >= 0 && spec.domain->spectra->modes <= 4096),
+                "spectra modes must be in [0, 4096]");
         for (double g : spec.domain->gravity)
             require(std::isfinite(g), "gravity must be finite");
         for (const WallSpec* w : {&spec.domain->wall_lower, &spec.domain->wall_upper}) {
@@ -123,8 +127,9 @@ std::size_t memory_per_replica_fixed_bound(const RunSpec& spec) {
     const std::size_t S = spec.species.size();
     // Per cell: each species' start, the sort's counts of up to 64 chunks, a share of the per-unit
     // tallies (one per 64 cells: a pair count each, and the unit's bookkeeping).
-    const double per_cell =
-        4.0 * static_cast<double>(S + 1) + 4.0 * 64 + (8.0 * spec.pairs.size() + 64) / 64 + 6 * sizeof(double);
+    // With spectra: five fields on the grid of the cells and their transforms (observables/spectra.hpp).
+    const double per_cell = 4.0 * static_cast<double>(S + 1) + 4.0 * 64 + (8.0 * spec.pairs.size() + 64) / 64 +
+                            6 * sizeof(double) + (d.spectra ? 5 * 2 * sizeof(double) + 2 * sizeof(int) : 0);
     // The step's local collision frequencies: per chunk of grains (up to 64 per species), bin and species, 5 sums.
     const double bins = d.cells[static_cast<std::size_t>(d.profile_axis)];
     // The rows the replica keeps until the run ends (the sink's copy and the ensemble's): with the
@@ -164,9 +169,32 @@ std::vector<Column> profile_columns(const RunSpec& spec) {
     return c;
 }
 
+SpectraGeometry spectra_geometry(const DomainSpec& d) {
+    SpectraGeometry g;
+    g.grid = d.cells;
+    g.box = d.size;
+    g.modes = d.spectra ? d.spectra->modes : 0;
+    return g;
+}
+
+std::vector<Column> spectra_columns(const RunSpec& spec) {
+    std::vector<Column> c;
+    if (!spec.domain || !spec.domain->spectra)
+        return c;
+    const SpectraGeometry g = spectra_geometry(*spec.domain);
+    const std::vector<Column> fields = spectrum_field_columns(), mode_fields = mode_field_columns();
+    for (const SpectrumBin& b : spectrum_bins(g))
+        for (const Column& f : fields)
+            c.push_back({"k" + std::to_string(b.axis) + "." + std::to_string(b.n) + "." + f.name, f.unit});
+    for (const ModeIndex& m : mode_indices(g))
+        for (const Column& f : mode_fields)
+            c.push_back({"mode" + std::to_string(m.axis) + "." + std::to_string(m.n) + "." + f.name, f.unit});
+    return c;
+}
+
 std::vector<Column> replica_row_columns(const RunSpec& spec) {
     std::vector<Column> c = dsmc_columns(spec);
-    for (std::vector<Column> part : {wall_columns(spec), profile_columns(spec)})
+    for (std::vector<Column> part : {wall_columns(spec), profile_columns(spec), spectra_columns(spec)})
         for (Column& w : part)
             c.push_back(std::move(w));
     return c;

@@ -623,6 +623,12 @@ class Builder {
                 w.from = r.string("from");
             c.initial = w;
         }
+        if (const toml::table* t = root_["spectra"].as_table()) {
+            const Reader r(t, "spectra");
+            SpectraConfig s;
+            s.modes = r.integer("modes");
+            c.spectra = s;
+        }
         c.restitution = grid(Reader(root_["restitution"].as_table(), "restitution"));
         check(c);
         note_unused(c);
@@ -868,6 +874,16 @@ class Builder {
             const auto& k = c.initial->wave;
             if (k[0] == 0 && k[1] == 0 && k[2] == 0)
                 add("initial.wave", "initial.wave = [0, 0, 0]: a wave needs a wave number other than 0");
+        }
+        if (c.spectra) {
+            if (!c.domain)
+                add("spectra", "[spectra] without [domain]: spectra are of a box's fields (give the box in [domain])");
+            else if (c.domain->has_walls())
+                add("domain.boundary", "[spectra] with walls: the Fourier modes need a periodic box (every "
+                                       "domain.boundary \"periodic\")");
+            else if (c.run.kind == RunKind::shear)
+                add("spectra", "[spectra] with run.kind = \"shear\": the Lees-Edwards box is periodic only in its "
+                               "sheared frame, which the spectra do not follow");
         }
         if (c.run.kernel == CollisionKernel::maxwell)
             check_maxwell_kernel(c);
@@ -1282,6 +1298,10 @@ std::string emit_case(const CaseConfig& c) {
         e.put("time_step", c.domain->time_step);
         e.put("allow_coarse", c.domain->allow_coarse);
         e.put("partners", name(c.domain->partners));
+    }
+    if (c.spectra) {
+        e.header("[spectra]");
+        e.put("modes", c.spectra->modes);
     }
     for (const auto& [side, w] : {std::pair{"[wall_lower]", &c.wall_lower}, std::pair{"[wall_upper]", &c.wall_upper}}) {
         if (!*w)

@@ -369,6 +369,13 @@ std::vector<Key> keys() {
                  "be the same; velocities and spins are taken as they were, positions too from a box of the "
                  "same size (else uniform); a wave of initial.mode is added on top, in units of the state's "
                  "thermal speed"),
+        // [spectra]
+        Key("spectra.modes", T::integer)
+            .fallback(std::int64_t{3})
+            .ge(0)
+            .le(4096)
+            .doc("modes.csv: the lowest wave numbers n = 1 ... modes along each axis (fewer where the axis "
+                 "has fewer cells: up to (cells - 1)/2); 0: no modes.csv"),
         // [restitution]
         Key("restitution.g_n_min", T::real)
             .unit("m/s")
@@ -573,6 +580,8 @@ const std::vector<TableSpec>& case_tables() {
         {"domain", false, "optional",
          "a spatially resolved run: grains with positions in a box of collision cells (docs/model.md §8)"},
         {"initial", false, "optional (with [domain])", "a wave on the uniform start of a spatially resolved run"},
+        {"spectra", false, "optional (with a periodic [domain])",
+         "Fourier spectra of the box's fields at every output row: spectra.csv and modes.csv (docs/model.md §8)"},
         {"wall_lower", false, "required for domain.boundary with \"walls\"",
          "the wall at coordinate 0 of every walled axis"},
         {"wall_upper", false, "required for domain.boundary with \"walls\"",

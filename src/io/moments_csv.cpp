@@ -25,10 +25,25 @@ std::pair<std::string, std::string> split(const std::string& name) {
 
 MomentsTable::MomentsTable(const RunSpec& spec)
     : solver_(dsmc_columns(spec)), wall_solver_(wall_columns(spec)), profile_solver_(profile_columns(spec)),
-      replicas_(spec.replicas) {
+      spectra_solver_(spectra_columns(spec)), replicas_(spec.replicas) {
     if (replicas_ < 1)
         throw std::invalid_argument("MomentsTable: replicas must be >= 1");
     profile_start_ = solver_.size() + wall_solver_.size();
+    spectra_start_ = profile_start_ + profile_solver_.size();
+    if (spec.domain && spec.domain->spectra) {
+        const SpectraGeometry g = spectra_geometry(*spec.domain);
+        spectrum_bins_ = spectrum_bins(g);
+        modes_ = mode_indices(g);
+        spectra_columns_ = {solver_[0], solver_[1], {"axis", "-"}, {"n", "-"}, {"k", "1/length"}, {"n_modes", "-"}};
+        modes_columns_ = {solver_[0], solver_[1], {"axis", "-"}, {"n", "-"}, {"k", "1/length"}};
+        for (auto [fields, table] : {std::pair{spectrum_field_columns(), &spectra_columns_},
+                                     std::pair{mode_field_columns(), &modes_columns_}})
+            for (const Column& f : fields) {
+                table->push_back(f);
+                if (replicas_ > 1)
+                    table->push_back({f.name + "_err", f.unit});
+            }
+    }
     if (spec.domain) {
         const int a = spec.domain->profile_axis;
         const int bins = spec.domain->cells[static_cast<std::size_t>(a)];
@@ -82,13 +97,14 @@ MomentsTable::MomentsTable(const RunSpec& spec)
 const Column& MomentsTable::row_column(std::size_t j) const {
     return j < solver_.size()         ? solver_[j]
            : j < profile_start_       ? wall_solver_[j - solver_.size()]
-                                      : profile_solver_[j - profile_start_];
+           : j < spectra_start_       ? profile_solver_[j - profile_start_]
+                                      : spectra_solver_[j - spectra_start_];
 }
 
 void MomentsTable::check(std::span<const double> row) const {
-    if (row.size() != profile_start_ + profile_solver_.size())
+    if (row.size() != spectra_start_ + spectra_solver_.size())
         throw std::invalid_argument(fmt::format("replica row has {} values for {} columns", row.size(),
-                                                profile_start_ + profile_solver_.size()));
+                                                spectra_start_ + spectra_solver_.size()));
     std::map<std::string, double> value; // by name: the moments and walls (profiles go by index)
     for (std::size_t j = 0; j < profile_start_; ++j)
         value[row_column(j).name] = row[j];
@@ -104,6 +120,12 @@ void MomentsTable::check(std::span<const double> row) const {
         const std::string& name = row_column(j).name;
         const auto [base, suffix] = split(name);
         bool undefined = j >= solver_.size() && j < profile_start_ && first; // walls.csv: no interval yet
+        if (j >= spectra_start_) { // spectra: S_T and the temperature amplitudes divide by T_tr
+            const std::string field = name.substr(name.rfind('.') + 1);
+            if ((field == "S_T" || field == "T_re" || field == "T_im") && zero("T_tr"))
+                continue;
+            throw NonFiniteValue(name, t, row[j], fmt::format("spectra field {} is {} at t = {:.17g}", name, row[j], t));
+        }
         if (j >= profile_start_) { // a profile bin's field
             const std::size_t f = (j - profile_start_) % profile_field_count, bin = j - profile_start_ - f;
             const double n = row[profile_start_ + bin], T_tr = row[profile_start_ + bin + profile_T_tr];
@@ -154,22 +176,24 @@ std::vector<double> MomentsTable::combine_walls(std::span<const std::span<const 
 }
 
 std::vector<std::vector<double>>
-MomentsTable::combine_profiles(std::span<const std::span<const double>> rows) const {
+MomentsTable::combine_entries(std::span<const std::span<const double>> rows, std::size_t entries,
+                              const std::function<std::vector<double>(std::size_t)>& head, std::size_t first,
+                              std::size_t count) const {
     require_replicas(rows.size());
     std::vector<std::vector<double>> out;
     std::vector<double> x(rows.size());
-    for (std::size_t b = 0; b < bin_centres_.size(); ++b) {
+    for (std::size_t e = 0; e < entries; ++e) {
         std::vector<double> row;
         for (std::size_t j = 0; j < 2; ++j) { // t, coll_per_particle: the replicas' mean
             for (std::size_t r = 0; r < rows.size(); ++r)
                 x[r] = rows[r][j];
             row.push_back(replica_mean(x).mean);
         }
-        row.push_back(static_cast<double>(b));
-        row.push_back(bin_centres_[b]);
-        for (std::size_t f = 0; f < profile_field_count; ++f) {
+        for (double h : head(e))
+            row.push_back(h);
+        for (std::size_t f = 0; f < count; ++f) {
             for (std::size_t r = 0; r < rows.size(); ++r)
-                x[r] = rows[r][profile_start_ + b * profile_field_count + f];
+                x[r] = rows[r][first + e * count + f];
             const ReplicaMean m = replica_mean(x);
             row.push_back(m.mean);
             if (replicas_ > 1)
@@ -178,6 +202,36 @@ MomentsTable::combine_profiles(std::span<const std::span<const double>> rows) co
         out.push_back(std::move(row));
     }
     return out;
+}
+
+std::vector<std::vector<double>>
+MomentsTable::combine_profiles(std::span<const std::span<const double>> rows) const {
+    return combine_entries(
+        rows, bin_centres_.size(),
+        [&](std::size_t b) { return std::vector<double>{static_cast<double>(b), bin_centres_[b]}; }, profile_start_,
+        profile_field_count);
+}
+
+std::vector<std::vector<double>>
+MomentsTable::combine_spectra(std::span<const std::span<const double>> rows) const {
+    return combine_entries(
+        rows, spectrum_bins_.size(),
+        [&](std::size_t e) {
+            const SpectrumBin& b = spectrum_bins_[e];
+            return std::vector<double>{static_cast<double>(b.axis), static_cast<double>(b.n), b.k,
+                                       static_cast<double>(b.modes)};
+        },
+        spectra_start_, spectrum_field_count);
+}
+
+std::vector<std::vector<double>> MomentsTable::combine_modes(std::span<const std::span<const double>> rows) const {
+    return combine_entries(
+        rows, modes_.size(),
+        [&](std::size_t e) {
+            const ModeIndex& m = modes_[e];
+            return std::vector<double>{static_cast<double>(m.axis), static_cast<double>(m.n), m.k};
+        },
+        spectra_start_ + spectrum_bins_.size() * spectrum_field_count, mode_field_count);
 }
 
 std::vector<double> MomentsTable::combine(std::span<const std::span<const double>> rows) {

@@ -80,6 +80,8 @@ RunSpec run_spec_from_case(const CaseConfig& cfg) {
             for (std::size_t i = 0; i < 3; ++i)
                 d.initial.wave[i] = static_cast<int>(cfg.initial->wave[i]);
         }
+        if (cfg.spectra)
+            d.spectra = SpectraSpec{static_cast<int>(cfg.spectra->modes)};
         spec.domain = d;
     }
     for (const SpeciesConfig& s : cfg.species) {

@@ -3,6 +3,7 @@
 // conserves kinetic plus potential energy to round-off and keeps every grain inside; diffuse walls
 // bring a gas to their temperature and feel its pressure n T_w and hit rate n sqrt(T_w/(2 pi m));
 // the thread count changes nothing.
+#include "no_observer.hpp"
 #include "roughgas/dsmc/spatial_engine.hpp"
 
 #include "roughgas/collision/restitution_policy.hpp"
@@ -18,11 +19,7 @@
 namespace roughgas {
 namespace {
 
-struct NoObserver {
-    void operator()(const CollisionRecord&, std::size_t) {}
-    NoObserver fork() const { return {}; }
-    void merge(const NoObserver&) {}
-};
+using test::NoObserver;
 
 std::vector<SpeciesBlock> grains(std::int64_t n, double T = 1, double T_rot = 1) {
     SpeciesSpec s;

@@ -31,7 +31,7 @@ std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
 
 TEST(BoxCli, ThreadsAndReplicaRangesGiveTheSameBytes) {
     const test::ScratchDir dir;
-    const fs::path f = dir.write("box.toml", box_case());
+    const fs::path f = dir.write("box.toml", box_case() + "\n[spectra]\nmodes = 2\n");
     const std::string run = "run " + q(f) + " --quiet --out ";
     ASSERT_EQ(test::run_roughgas(run + q(dir / "t1") + " --threads 1", dir).status, 0);
     ASSERT_EQ(test::run_roughgas(run + q(dir / "t2") + " --threads 2", dir).status, 0);
@@ -44,6 +44,12 @@ TEST(BoxCli, ThreadsAndReplicaRangesGiveTheSameBytes) {
     EXPECT_FALSE(one.empty());
     EXPECT_EQ(test::read_file(dir / "t2" / "moments.csv"), one);
     EXPECT_EQ(test::read_file(dir / "m" / "moments.csv"), one);
+    for (const char* file : {"spectra.csv", "modes.csv"}) {
+        const std::string s = test::read_file(dir / "t1" / file);
+        EXPECT_FALSE(s.empty()) << file;
+        EXPECT_EQ(test::read_file(dir / "t2" / file), s) << file;
+        EXPECT_EQ(test::read_file(dir / "m" / file), s) << file;
+    }
     // The header gives the box and its cells in mean free paths.
     EXPECT_NE(one.find("periodic box 50 x 50 x 50 = 4.443 x 4.443 x 4.443 mean free paths"), std::string::npos);
     EXPECT_NE(one.find("5 x 5 x 5 collision cells (edge up to 0.889 lambda)"), std::string::npos);
@@ -81,6 +87,11 @@ TEST(BoxCli, RefusesWhatTheBoxCannotRunBeforeAnyWork) {
          "moves along itself only"},
         {walls + lower + replaced(upper, "alpha = 0.9", "alpha = 0.0"), "wall_upper.alpha", "in (0, 1]"},
         {walls + lower + replaced(upper, "beta = 0.5", "beta = 1.5"), "wall_upper.beta", "in [-1, 1]"},
+        {walls + lower + upper + "[spectra]\n", "domain.boundary", "[spectra] with walls"},
+        {base.substr(0, base.find("[domain]")) + "[spectra]\n", "spectra", "[spectra] without [domain]"},
+        {replaced(base, "seed = 4", "seed = 4\nkind = \"shear\"") + "\n[shear]\nrate = 0.01\n[spectra]\n", "spectra",
+         "Lees-Edwards box is periodic only in its sheared frame"},
+        {base + "\n[spectra]\nmodes = -1\n", "spectra.modes", "must be in [0, 4096]"},
     };
     for (const auto& b : bad) {
         const fs::path f = dir.write("bad.toml", b.text);
@@ -96,6 +107,43 @@ TEST(BoxCli, RefusesWhatTheBoxCannotRunBeforeAnyWork) {
     const test::CommandResult r = test::run_roughgas("run " + q(f) + " --out " + q(dir / "coarse"), dir);
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.err.find("warning: cells of up to 2.22 mean free paths"), std::string::npos) << r.err;
+}
+
+// [spectra] with a transverse wave u_y = A sqrt(T/m) sin(2 pi x / L) (A = 0.3, T = 1) on 10 cells
+// along x: at t = 0 modes.csv has, at n = 1 along x, the flow amplitude u_y = -i A sqrt(T/m) times
+// the cells' window sinc(pi/10) (nearest grid point), the density's and u_x's near 0, each within 5
+// of its sampling errors sqrt(2 T/(m N)) (velocity) and sqrt(2/N) (density); spectra.csv holds every
+// row's block of shells and axis bins, and the transverse current of that wave vector carries the
+// wave's energy N m (A sqrt(T/m) sinc)^2 / 8 (within 5 %; the thermal part is T).
+TEST(BoxCli, SpectraAndModesOfATransverseWave) {
+    const test::ScratchDir dir;
+    const std::string c = replaced(replaced(box_case(200000, 1, 1.0), "cells = [5, 5, 5]", "cells = [10, 5, 5]"),
+                                   "output_spacing = \"log\"", "output_spacing = \"linear\"") +
+                          "\n[initial]\nmode = \"transverse\"\namplitude = 0.3\n\n[spectra]\nmodes = 2\n";
+    const fs::path f = dir.write("wave.toml", c);
+    const test::CommandResult r = test::run_roughgas("run " + q(f) + " --quiet --out " + q(dir / "w"), dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto m = test::read_csv(dir / "w" / "modes.csv");
+    const auto s = test::read_csv(dir / "w" / "spectra.csv");
+    const auto rows = test::read_csv(dir / "w" / "moments.csv").at("t").size();
+    const double N = 200000, A = 0.3, window = std::sin(std::numbers::pi / 10) / (std::numbers::pi / 10);
+    const double se_u = std::sqrt(2 / N), se_n = std::sqrt(2 / N);
+    ASSERT_EQ(m.at("t").size(), rows * (2 + 2 + 2)); // n = 1, 2 along x, y, z
+    EXPECT_EQ(m.at("axis")[0], 1);
+    EXPECT_EQ(m.at("n")[0], 1);
+    EXPECT_NEAR(m.at("u_y_im")[0], -A * window, 5 * se_u);
+    EXPECT_NEAR(m.at("u_y_re")[0], 0.0, 5 * se_u);
+    EXPECT_NEAR(m.at("u_x_im")[0], 0.0, 5 * se_u);
+    EXPECT_NEAR(m.at("n_re")[0], 0.0, 5 * se_n);
+    EXPECT_NEAR(m.at("n_im")[0], 0.0, 5 * se_n);
+    EXPECT_EQ(s.at("t").size() % rows, 0u);
+    const std::size_t block = s.at("t").size() / rows;
+    for (std::size_t i = 0; i < block; ++i) {
+        ASSERT_EQ(s.at("t")[i], 0.0);
+        if (s.at("axis")[i] == 1 && s.at("n")[i] == 1)
+            EXPECT_NEAR(s.at("E_perp")[i] / (N * std::pow(A * window, 2) / 8), 1.0, 0.05);
+    }
+    EXPECT_GT(s.at("t")[block], 0.0);
 }
 
 // Elastic smooth grains between two diffuse walls at their temperature (normal to y): walls.csv has

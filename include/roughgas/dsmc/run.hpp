@@ -3,6 +3,7 @@
 #include "roughgas/dsmc/output_columns.hpp"
 #include "roughgas/dsmc/run_spec.hpp"
 #include "roughgas/observables/histograms.hpp"
+#include "roughgas/observables/spectra.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -56,7 +57,15 @@ std::vector<Column> wall_columns(const RunSpec& spec);
 // cells along domain.profile_axis.
 std::vector<Column> profile_columns(const RunSpec& spec);
 
-// What a replica's row holds (the RowSink's values): dsmc_columns, wall_columns, profile_columns.
+// The spectra.csv fields of every spectrum bin, then the modes.csv fields of every mode (box runs
+// with spectra; empty otherwise; observables/spectra.hpp): "kA.N.FIELD" (A the axis: 0 for the
+// shells, 1, 2, 3 along x, y, z; N the shell or wave number) and "modeA.N.FIELD".
+std::vector<Column> spectra_columns(const RunSpec& spec);
+// The grid of a box's spectra: its collision cells (modes: 0 without spectra).
+SpectraGeometry spectra_geometry(const DomainSpec& d);
+
+// What a replica's row holds (the RowSink's values): dsmc_columns, wall_columns, profile_columns,
+// spectra_columns.
 std::vector<Column> replica_row_columns(const RunSpec& spec);
 
 // An upper bound of the memory one replica holds per grain while it runs (the particle store, the

@@ -83,6 +83,12 @@ struct WallSpec {
 //            size to the spacing of its grains.
 enum class PartnerSelection { random, nearest };
 
+// Fourier spectra of a periodic box (observables/spectra.hpp): spectra.csv and modes.csv at every
+// output row, on the grid of the collision cells; `modes` wave numbers per axis in modes.csv.
+struct SpectraSpec {
+    int modes = 3;
+};
+
 // A spatially resolved run (dsmc/spatial_engine.hpp): a box of collision cells.
 struct DomainSpec {
     std::array<double, 3> size{1, 1, 1}; // L_x, L_y, L_z (the case's length unit)
@@ -98,6 +104,7 @@ struct DomainSpec {
     double time_step = 0.2;              // in mean free times of the current state
     PartnerSelection partners = PartnerSelection::random;
     InitialSpec initial;
+    std::optional<SpectraSpec> spectra; // set: spectra.csv and modes.csv (periodic boxes)
     // Set: the grains start from this state (velocities and spins; positions when it comes from a
     // box of the same size, else uniform) instead of the Maxwellian; `initial`'s wave is added.
     GrainStateSource initial_state;

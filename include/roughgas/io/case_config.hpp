@@ -201,6 +201,12 @@ struct InitialConfig {
     friend bool operator==(const InitialConfig&, const InitialConfig&) = default;
 };
 
+// [spectra]: Fourier spectra of a periodic [domain] run (SpectraSpec, dsmc/run_spec.hpp).
+struct SpectraConfig {
+    std::int64_t modes = 3;
+    friend bool operator==(const SpectraConfig&, const SpectraConfig&) = default;
+};
+
 // [restitution]: the grid of `roughgas restitution` (speeds in m/s).
 struct RestitutionGridConfig {
     double g_n_min = 1e-4;
@@ -223,6 +229,7 @@ struct CaseConfig {
     std::optional<ShearConfig> shear; // present iff [shear] was given (required for kind = shear)
     std::optional<DomainConfig> domain; // present iff [domain] was given: a spatially resolved run
     std::optional<InitialConfig> initial; // present iff [initial] was given
+    std::optional<SpectraConfig> spectra; // present iff [spectra] was given
     std::optional<WallConfig> wall_lower, wall_upper; // present iff given
     // Keys and tables given but not used by the chosen models or run kind (kept, not refused: a user
     // may switch the model or kind with --set and back); commands print them as warnings.

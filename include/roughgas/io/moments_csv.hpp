@@ -7,8 +7,10 @@
 // and the rule that no value is NaN or infinite unless it is undefined by definition.
 #include "roughgas/dsmc/output_columns.hpp"
 #include "roughgas/dsmc/run_spec.hpp"
+#include "roughgas/observables/spectra.hpp"
 #include "roughgas/observables/theory.hpp"
 
+#include <functional>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -47,6 +49,12 @@ class MomentsTable {
     // coordinate (named x, y or z), then the fields of observables/profiles.hpp, with replicas > 1
     // each followed by X_err; one row per bin.
     const std::vector<Column>& profile_table_columns() const { return profile_columns_; }
+    // spectra.csv and modes.csv (box runs with spectra; empty otherwise; observables/spectra.hpp):
+    // t, coll_per_particle, axis (0: shells of |k|; 1, 2, 3: along x, y, z), n (the shell or wave
+    // number), k, n_modes (spectra.csv only), then the fields, with replicas > 1 each followed by
+    // X_err; one row per shell or wave number.
+    const std::vector<Column>& spectra_table_columns() const { return spectra_columns_; }
+    const std::vector<Column>& modes_table_columns() const { return modes_columns_; }
     bool has_theory() const { return trajectory_.has_value(); }
     int replicas() const { return replicas_; }
 
@@ -69,12 +77,25 @@ class MomentsTable {
     std::vector<double> combine_walls(std::span<const std::span<const double>> replica_rows) const;
     // The profiles.csv rows (one per bin) from the same replica rows.
     std::vector<std::vector<double>> combine_profiles(std::span<const std::span<const double>> replica_rows) const;
+    // The spectra.csv and modes.csv rows from the same replica rows.
+    std::vector<std::vector<double>> combine_spectra(std::span<const std::span<const double>> replica_rows) const;
+    std::vector<std::vector<double>> combine_modes(std::span<const std::span<const double>> replica_rows) const;
 
   private:
     const Column& row_column(std::size_t j) const;
     void require_replicas(std::size_t rows) const; // one row per replica, else std::invalid_argument
     std::vector<Column> solver_, columns_, wall_solver_, wall_columns_, profile_solver_, profile_columns_;
+    std::vector<Column> spectra_solver_, spectra_columns_, modes_columns_;
     std::size_t profile_start_ = 0;     // the first profile value in a replica row
+    std::size_t spectra_start_ = 0;     // the first spectra value in a replica row
+    std::vector<SpectrumBin> spectrum_bins_;
+    std::vector<ModeIndex> modes_;
+    // One block of profiles.csv, spectra.csv or modes.csv rows: per entry, t and coll_per_particle,
+    // head(entry), then the replicas' mean (and error) of its `count` fields from `first` in the row.
+    std::vector<std::vector<double>> combine_entries(std::span<const std::span<const double>> rows,
+                                                     std::size_t entries,
+                                                     const std::function<std::vector<double>(std::size_t)>& head,
+                                                     std::size_t first, std::size_t count) const;
     std::vector<double> bin_centres_;
     std::vector<std::string> species_names_;
     int replicas_ = 1;

@@ -1,0 +1,75 @@
+#!/usr/bin/env python3
+"""What spectra.csv and modes.csv cost a box run, at an output row per collision per particle.
+
+    scripts/python3 scripts/bench_spectra.py [--build build] [--rounds 5] [--sizes 1e5,1e6] [--out out/bench_spectra]
+
+The deck: an elastic hard-sphere gas in a periodic cube, cells of 0.42 mean free paths holding 20
+grains (the DSMC reference deck of bench_box.py), steps of 0.2 mean free times (the default), 30
+collisions per particle with a row after each (150 steps, 31 rows), one thread. The same case is
+run with and without [spectra] (spectra.modes = 3), alternately for --rounds rounds (the order
+reversed every other round, so that a drift of the machine's speed hits both alike). Reported: the
+median and range of the wall time per particle and step of each, and of the ratio with/without
+(docs/performance.md). The machine, date, commit and load are printed with the table.
+"""
+import argparse
+import os
+import statistics
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bench_common import box_deck, cpu_times, loadavg, machine, measured_line, timed  # noqa: E402
+
+END = 30.0              # collisions per particle, a row after each
+TIME_STEP = 0.2
+STEPS = round(END / TIME_STEP)
+
+
+def deck(n, spectra):
+    """The case text for n grains: cells of 0.42 mean free paths with 20 grains each."""
+    return box_deck(n, END, 1.0, TIME_STEP, extra="\n[spectra]\nmodes = 3\n" if spectra else "")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--build", default="build")
+    ap.add_argument("--rounds", type=int, default=5)
+    ap.add_argument("--sizes", default="1e5,1e6", help="particle numbers, comma-separated")
+    ap.add_argument("--out", default="out/bench_spectra")
+    a = ap.parse_args()
+    roughgas = os.path.abspath(os.path.join(a.build, "roughgas"))
+    os.makedirs(a.out, exist_ok=True)
+    print(machine(), file=sys.stderr)
+    load0, steal0 = loadavg(), cpu_times()
+    rows = []
+    for n in (int(float(x)) for x in a.sizes.split(",")):
+        cases = {}
+        for spectra in (False, True):
+            path = os.path.join(a.out, f"deck_{n}_{'spectra' if spectra else 'plain'}.toml")
+            with open(path, "w") as f:
+                f.write(deck(n, spectra))
+            cases[spectra] = path
+        times = {False: [], True: []}
+        for r in range(a.rounds):
+            for spectra in ((False, True) if r % 2 == 0 else (True, False)):
+                t = timed([roughgas, "run", cases[spectra], "--out", os.path.join(a.out, "run"), "--force",
+                           "--quiet", "--threads", "1"], "bench_spectra")
+                times[spectra].append(t / (n * STEPS) * 1e9)
+                print(f"  N = {n:.0e}, {'with' if spectra else 'without'} spectra, round {r + 1}: "
+                      f"{times[spectra][-1]:.1f} ns", file=sys.stderr)
+
+        def fmt(x):
+            return f"{statistics.median(x):.1f} ({min(x):.1f}-{max(x):.1f})"
+        ratios = [y / x for x, y in zip(times[False], times[True])]
+        cells = max(1, round((n / 20) ** (1 / 3)))
+        rows.append(f"| {n:.0e} | {cells}^3 | {fmt(times[False])} | {fmt(times[True])} | "
+                    f"{statistics.median(ratios):.3f} ({min(ratios):.3f}-{max(ratios):.3f}) |")
+    print(measured_line(a.rounds, f"wall ns per particle and step (whole runs: start, initial state, {STEPS} "
+                                  f"steps, {round(END) + 1} rows), one thread: median (min-max)", load0, steal0))
+    print("| N | cells | without spectra | with spectra | with/without |")
+    print("|---|---|---|---|---|")
+    for r in rows:
+        print(r)
+
+
+if __name__ == "__main__":
+    main()

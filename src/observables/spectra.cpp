@@ -1,0 +1,292 @@
+// Fourier spectra of a periodic box's fields: observables/spectra.hpp.
+#include "roughgas/observables/spectra.hpp"
+
+#include <fftw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <mutex>
+#include <numbers>
+#include <stdexcept>
+#include <utility>
+
+namespace roughgas {
+namespace {
+
+using cplx = std::complex<double>;
+
+// The largest wave number along an axis of G cells, leaving out the Nyquist plane of an even grid.
+int top(int G) { return (G - 1) / 2; }
+
+// Signed wave number of index i of G (FFT order: 0, 1, ..., then the negative ones).
+int signed_index(int i, int G) { return i <= G / 2 ? i : i - G; }
+
+double shell_width(const SpectraGeometry& g) {
+    return 2 * std::numbers::pi / std::max({g.box[0], g.box[1], g.box[2]});
+}
+
+// The largest |k| every axis reaches: the shells go up to it.
+double shell_reach(const SpectraGeometry& g) {
+    double k = HUGE_VAL;
+    for (std::size_t a = 0; a < 3; ++a)
+        if (g.grid[a] > 2)
+            k = std::min(k, 2 * std::numbers::pi * top(g.grid[a]) / g.box[a]);
+    return std::isfinite(k) ? k : 0.0;
+}
+
+// Which shell a wave vector of modulus k belongs to (0: none, k = 0 or beyond the reach).
+int shell(double k, double dk, int shells) {
+    const auto s = static_cast<int>(std::floor(k / dk + 0.5));
+    return s >= 1 && s <= shells ? s : 0;
+}
+
+int shell_count(const SpectraGeometry& g) {
+    return static_cast<int>(std::floor(shell_reach(g) / shell_width(g) + 1e-9));
+}
+
+// The shell of the wave vector of wave numbers n (0: none: k = 0, beyond the reach, or on a Nyquist
+// plane) and its modulus.
+std::pair<int, double> shell_of(const SpectraGeometry& g, const int n[3]) {
+    bool inside = true;
+    double k2 = 0;
+    for (std::size_t a = 0; a < 3; ++a) {
+        inside &= std::abs(n[a]) <= top(g.grid[a]);
+        const double ka = 2 * std::numbers::pi * n[a] / g.box[a];
+        k2 += ka * ka;
+    }
+    const double k = std::sqrt(k2);
+    return {inside ? shell(k, shell_width(g), shell_count(g)) : 0, k};
+}
+
+// FFTW's planner is one state per process and not thread-safe: plans are made one at a time
+// (replicas of a run set up on several threads, each with its own Spectra).
+std::mutex& planner_mutex() {
+    static std::mutex m;
+    return m;
+}
+
+} // namespace
+
+struct Spectra::Plan {
+    fftw_plan plan = nullptr;
+};
+
+std::vector<SpectrumBin> spectrum_bins(const SpectraGeometry& g) {
+    std::vector<SpectrumBin> bins;
+    const int shells = shell_count(g);
+    std::vector<double> ksum(static_cast<std::size_t>(shells) + 1, 0.0);
+    std::vector<int> count(static_cast<std::size_t>(shells) + 1, 0);
+    for (int i = 0; i < g.grid[0]; ++i)
+        for (int j = 0; j < g.grid[1]; ++j)
+            for (int l = 0; l < g.grid[2]; ++l) {
+                const int n[3] = {signed_index(i, g.grid[0]), signed_index(j, g.grid[1]), signed_index(l, g.grid[2])};
+                const auto [s, k] = shell_of(g, n);
+                if (s > 0) {
+                    ksum[static_cast<std::size_t>(s)] += k;
+                    ++count[static_cast<std::size_t>(s)];
+                }
+            }
+    for (int s = 1; s <= shells; ++s)
+        if (count[static_cast<std::size_t>(s)] > 0)
+            bins.push_back({0, s, ksum[static_cast<std::size_t>(s)] / count[static_cast<std::size_t>(s)],
+                            count[static_cast<std::size_t>(s)]});
+    for (int a = 0; a < 3; ++a)
+        for (int n = 1; n <= top(g.grid[static_cast<std::size_t>(a)]); ++n)
+            bins.push_back({a + 1, n, 2 * std::numbers::pi * n / g.box[static_cast<std::size_t>(a)], 2});
+    return bins;
+}
+
+std::vector<ModeIndex> mode_indices(const SpectraGeometry& g) {
+    std::vector<ModeIndex> m;
+    for (int a = 0; a < 3; ++a)
+        for (int n = 1; n <= std::min(g.modes, top(g.grid[static_cast<std::size_t>(a)])); ++n)
+            m.push_back({a + 1, n, 2 * std::numbers::pi * n / g.box[static_cast<std::size_t>(a)]});
+    return m;
+}
+
+std::vector<Column> spectrum_field_columns() {
+    return {{"S", "-"}, {"E_perp", "energy"}, {"E_par", "energy"}, {"S_T", "-"}};
+}
+
+std::vector<Column> mode_field_columns() {
+    std::vector<Column> c;
+    for (const char* f : mode_fields) {
+        const std::string name = f;
+        c.push_back({name, name.starts_with("u_") ? "length/time" : "-"});
+    }
+    return c;
+}
+
+Spectra::Spectra(const SpectraGeometry& g) : g_(g), bins_(spectrum_bins(g)), modes_(mode_indices(g)) {
+    for (std::size_t a = 0; a < 3; ++a)
+        if (g.grid[a] < 1 || !(g.box[a] > 0))
+            throw std::invalid_argument("Spectra: grid and box must be positive");
+    const auto G = static_cast<std::size_t>(g.grid[0]) * static_cast<std::size_t>(g.grid[1]) *
+                   static_cast<std::size_t>(g.grid[2]);
+    const std::size_t H = static_cast<std::size_t>(g.grid[0]) * static_cast<std::size_t>(g.grid[1]) *
+                          (static_cast<std::size_t>(g.grid[2]) / 2 + 1);
+    for (int f = 0; f < 5; ++f) {
+        fields_[static_cast<std::size_t>(f)].assign(G, 0.0);
+        transforms_[static_cast<std::size_t>(f)].assign(2 * H, 0.0);
+    }
+    plan_ = std::make_unique<Plan>();
+    {
+        const std::lock_guard<std::mutex> lock(planner_mutex());
+        // FFTW_UNALIGNED: the plan is executed on each field's own arrays (std::vector's alignment,
+        // not necessarily the SIMD alignment FFTW would assume from the planning arrays).
+        plan_->plan = fftw_plan_dft_r2c_3d(g.grid[0], g.grid[1], g.grid[2], fields_[0].data(),
+                                           reinterpret_cast<fftw_complex*>(transforms_[0].data()),
+                                           FFTW_ESTIMATE | FFTW_UNALIGNED);
+    }
+    if (!plan_->plan)
+        throw std::runtime_error("Spectra: FFTW could not plan the transform");
+    // Each stored wave vector's shell, for the shell sums.
+    shell_of_.assign(H, 0);
+    const int Hz = g.grid[2] / 2 + 1;
+    for (int i = 0; i < g.grid[0]; ++i)
+        for (int j = 0; j < g.grid[1]; ++j)
+            for (int l = 0; l < Hz; ++l) {
+                const int n[3] = {signed_index(i, g.grid[0]), signed_index(j, g.grid[1]), l};
+                shell_of_[(static_cast<std::size_t>(i) * static_cast<std::size_t>(g.grid[1]) +
+                           static_cast<std::size_t>(j)) * static_cast<std::size_t>(Hz) + static_cast<std::size_t>(l)] =
+                    shell_of(g, n).first;
+            }
+}
+
+Spectra::~Spectra() {
+    if (plan_ && plan_->plan) {
+        const std::lock_guard<std::mutex> lock(planner_mutex());
+        fftw_destroy_plan(plan_->plan);
+    }
+}
+
+const std::vector<double>& Spectra::transform(int f) const { return transforms_.at(static_cast<std::size_t>(f)); }
+const std::vector<double>& Spectra::field(int f) const { return fields_.at(static_cast<std::size_t>(f)); }
+
+std::vector<double> Spectra::compute(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+                                     const std::vector<SpeciesBlock>& species, WorkerTeam& team) {
+    const std::array<int, 3>& G = g_.grid;
+    // The mean translational energy e = 3T/2 and the total mass.
+    double N = 0, M = 0, E = 0;
+    for (const SpeciesBlock& b : species)
+        for (std::size_t i = b.offset; i < b.offset + b.count; ++i) {
+            N += 1;
+            M += b.grain.mass;
+            E += 0.5 * b.grain.mass * norm2(v[i]);
+        }
+    const double e_mean = N > 0 ? E / N : 0.0, T = 2 * e_mean / 3;
+    // Nearest grid point, grain by grain in store order (a deterministic sum per cell).
+    for (std::vector<double>& f : fields_)
+        std::fill(f.begin(), f.end(), 0.0);
+    std::array<double, 3> per_length{};
+    for (std::size_t a = 0; a < 3; ++a)
+        per_length[a] = G[a] / g_.box[a];
+    for (const SpeciesBlock& b : species) {
+        const double m = b.grain.mass;
+        for (std::size_t i = b.offset; i < b.offset + b.count; ++i) {
+            const double q[3] = {x[i].x, x[i].y, x[i].z};
+            std::size_t c = 0;
+            for (std::size_t a = 0; a < 3; ++a) {
+                const int k = std::clamp(static_cast<int>(std::floor(q[a] * per_length[a])), 0, G[a] - 1);
+                c = c * static_cast<std::size_t>(G[a]) + static_cast<std::size_t>(k);
+            }
+            fields_[0][c] += 1;
+            fields_[1][c] += m * v[i].x;
+            fields_[2][c] += m * v[i].y;
+            fields_[3][c] += m * v[i].z;
+            fields_[4][c] += 0.5 * m * norm2(v[i]) - e_mean;
+        }
+    }
+    const fftw_plan plan = plan_->plan;
+    team.for_each(5, [&](std::size_t f) {
+        fftw_execute_dft_r2c(plan, fields_[f].data(), reinterpret_cast<fftw_complex*>(transforms_[f].data()));
+    });
+
+    const auto at = [&](int f, std::size_t s) {
+        const std::vector<double>& t = transforms_[static_cast<std::size_t>(f)];
+        return cplx(t[2 * s], t[2 * s + 1]);
+    };
+    const auto stored = [&](int i, int j, int l) { // index of (n_x, n_y, n_z >= 0) in the half spectrum
+        const int ii = i < 0 ? i + G[0] : i, jj = j < 0 ? j + G[1] : j;
+        return (static_cast<std::size_t>(ii) * static_cast<std::size_t>(G[1]) + static_cast<std::size_t>(jj)) *
+                   static_cast<std::size_t>(G[2] / 2 + 1) +
+               static_cast<std::size_t>(l);
+    };
+    const double norm_T = N * 1.5 * T * T;
+    // The four spectra at stored wave vector s of wave numbers n.
+    const auto spectra_at = [&](std::size_t s, const int n[3], double out[4]) {
+        double k[3], k2 = 0;
+        for (std::size_t a = 0; a < 3; ++a) {
+            k[a] = 2 * std::numbers::pi * n[a] / g_.box[a];
+            k2 += k[a] * k[a];
+        }
+        const double kn = std::sqrt(k2);
+        const cplx rho = at(0, s), p[3] = {at(1, s), at(2, s), at(3, s)}, h = at(4, s);
+        const cplx par = (k[0] * p[0] + k[1] * p[1] + k[2] * p[2]) / kn;
+        double perp = 0;
+        for (std::size_t a = 0; a < 3; ++a)
+            perp += std::norm(p[a] - par * (k[a] / kn));
+        out[0] += std::norm(rho) / N;
+        out[1] += perp / (2 * M);
+        out[2] += std::norm(par) / M;
+        out[3] += std::norm(h) / norm_T;
+    };
+
+    std::vector<double> result;
+    result.reserve(bins_.size() * spectrum_field_count + modes_.size() * mode_field_count);
+    // Shells: every stored wave vector, its mirror -k counted too where it is not stored itself.
+    std::vector<double> shell_sums(bins_.size() * spectrum_field_count, 0.0);
+    std::vector<std::size_t> shell_row; // shell number -> its row in bins_
+    for (std::size_t r = 0; r < bins_.size() && bins_[r].axis == 0; ++r) {
+        shell_row.resize(static_cast<std::size_t>(bins_[r].n) + 1, 0);
+        shell_row[static_cast<std::size_t>(bins_[r].n)] = r;
+    }
+    const int Hz = G[2] / 2 + 1;
+    for (int i = 0; i < G[0]; ++i)
+        for (int j = 0; j < G[1]; ++j)
+            for (int l = 0; l < Hz; ++l) {
+                const std::size_t s = stored(i, j, l);
+                const int sh = shell_of_[s];
+                if (sh == 0)
+                    continue;
+                const int n[3] = {signed_index(i, G[0]), signed_index(j, G[1]), l};
+                double out[4] = {0, 0, 0, 0};
+                spectra_at(s, n, out);
+                const double twice = l == 0 ? 1.0 : 2.0; // -k is not stored for n_z > 0
+                double* sum = shell_sums.data() + shell_row[static_cast<std::size_t>(sh)] * spectrum_field_count;
+                for (std::size_t f = 0; f < spectrum_field_count; ++f)
+                    sum[f] += twice * out[f];
+            }
+    for (std::size_t r = 0; r < bins_.size(); ++r) {
+        const SpectrumBin& b = bins_[r];
+        double out[4] = {0, 0, 0, 0};
+        if (b.axis == 0) {
+            for (std::size_t f = 0; f < spectrum_field_count; ++f)
+                out[f] = shell_sums[r * spectrum_field_count + f] / b.modes;
+        } else {
+            int n[3] = {0, 0, 0};
+            n[b.axis - 1] = b.n;
+            spectra_at(stored(n[0], n[1], n[2]), n, out);
+        }
+        result.insert(result.end(), out, out + spectrum_field_count);
+    }
+    // Modes: the transforms at k along the axis, their phase referred to the cell centres
+    // (exp(-i k Delta/2)), normalised to amplitudes.
+    for (const ModeIndex& m : modes_) {
+        int n[3] = {0, 0, 0};
+        n[m.axis - 1] = m.n;
+        const std::size_t s = stored(n[0], n[1], n[2]);
+        const double delta = g_.box[static_cast<std::size_t>(m.axis - 1)] / G[static_cast<std::size_t>(m.axis - 1)];
+        const cplx centre = std::polar(1.0, -0.5 * m.k * delta);
+        const cplx a[5] = {2.0 / N * centre * at(0, s), 2.0 / M * centre * at(1, s), 2.0 / M * centre * at(2, s),
+                           2.0 / M * centre * at(3, s), 2.0 / (N * e_mean) * centre * at(4, s)};
+        for (const cplx& z : a) {
+            result.push_back(z.real());
+            result.push_back(z.imag());
+        }
+    }
+    return result;
+}
+
+} // namespace roughgas

@@ -1,0 +1,92 @@
+// The spectra of the spatially resolved engine's gas in equilibrium (observables/spectra.hpp): the
+// DSMC keeps the ideal gas's product of uniform positions and Maxwellian velocities, so at every
+// wave vector S = S_T = 1 and E_perp = E_par = T, for cells smaller and larger than the mean free
+// path alike.
+#include "no_observer.hpp"
+#include "roughgas/dsmc/spatial_engine.hpp"
+
+#include "roughgas/collision/restitution_policy.hpp"
+#include "roughgas/observables/spectra.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace roughgas {
+namespace {
+
+using test::NoObserver;
+
+// An elastic binary mixture of smooth spheres (masses 1 and 3, diameters 1 and 1.6) at T = 1 in a
+// periodic cube of 24^3 cells, 2e5 grains (14 per cell), cells of 0.4 and of 2.5 mean free paths.
+// Each of 21 samples (the start, then every 4 steps of 0.25 mean free times) averages a field over
+// every shell's wave vectors (about 6400, half of them independent: k and -k are one mode of a
+// real field), T from the sample's own kinetic energy for the currents; the samples' mean is held
+// to 1 within 5 standard errors of the mean from the samples' scatter (0.4 % each).
+TEST(SpatialSpectra, EquilibriumGasHasUnitSpectraForAnyCellSize) {
+    SpeciesSpec a, b;
+    a.fraction = 0.7;
+    b.mass = 3;
+    b.radius = 0.8;
+    b.fraction = 0.3;
+    const double n = 0.01, sigma = 1.6;
+    const double lambda = 1.0 / (std::sqrt(2.0) * std::numbers::pi * n * sigma * sigma);
+    for (const double cell : {0.4, 2.5}) {
+        SCOPED_TRACE(::testing::Message() << "cells of " << cell << " mean free paths");
+        DomainSpec d;
+        const int G = 24;
+        d.size = {G * cell * lambda, G * cell * lambda, G * cell * lambda};
+        d.cells = {G, G, G};
+        const std::vector<SpeciesBlock> blocks = make_species_blocks({a, b}, 200000);
+        SpatialEngine<SmoothConstant> e(d, blocks, std::vector<SmoothConstant>(3, make_smooth_constant(1.0)), n, 5, 0,
+                                        2);
+        SpectraGeometry g;
+        g.grid = d.cells;
+        g.box = d.size;
+        Spectra spectra(g);
+        const std::vector<SpectrumBin> bins = spectrum_bins(g);
+        NoObserver none;
+        std::vector<std::array<double, 4>> samples;
+        for (int k = 0; k <= 80; ++k) {
+            if (k % 4 == 0) {
+                double E = 0, N = 0;
+                for (const SpeciesBlock& s : blocks)
+                    for (std::size_t i = s.offset; i < s.offset + s.count; ++i) {
+                        E += 0.5 * s.grain.mass * norm2(e.velocities()[i]);
+                        N += 1;
+                    }
+                const double T = 2 * E / (3 * N);
+                const std::vector<double> out = spectra.compute(e.positions(), e.velocities(), blocks, e.team());
+                std::array<double, 4> mean{};
+                double modes = 0;
+                for (std::size_t r = 0; r < bins.size() && bins[r].axis == 0; ++r) {
+                    for (std::size_t f = 0; f < 4; ++f)
+                        mean[f] += bins[r].modes * out[r * spectrum_field_count + f];
+                    modes += bins[r].modes;
+                }
+                for (std::size_t f = 0; f < 4; ++f)
+                    mean[f] /= modes * (f == 1 || f == 2 ? T : 1.0);
+                samples.push_back(mean);
+            }
+            if (k < 80)
+                e.step(0.25 / e.collision_frequency(), none);
+        }
+        ASSERT_GT(e.collisions(), 200000 * 4); // the gas has collided: at least 8 per grain
+        for (std::size_t f = 0; f < 4; ++f) {
+            double m = 0, m2 = 0;
+            for (const auto& s : samples) {
+                m += s[f];
+                m2 += s[f] * s[f];
+            }
+            const double K = static_cast<double>(samples.size());
+            m /= K;
+            const double se = std::sqrt((m2 / K - m * m) / (K - 1));
+            EXPECT_NEAR(m, 1.0, 5 * se) << spectrum_fields[f] << " (standard error " << se << ")";
+            EXPECT_LT(se, 0.01) << spectrum_fields[f];
+        }
+    }
+}
+
+} // namespace
+} // namespace roughgas

@@ -1,0 +1,228 @@
+// Fourier spectra of the box's fields (observables/spectra.hpp): the transforms against direct sums
+// and Parseval's theorem to round-off, every wave vector in one shell, and the amplitudes of waves
+// planted on the grid exactly.
+#include "roughgas/observables/spectra.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <random>
+
+namespace roughgas {
+namespace {
+
+using cplx = std::complex<double>;
+
+std::vector<SpeciesBlock> blocks(std::size_t n1, double m1, std::size_t n2, double m2) {
+    std::vector<SpeciesBlock> b(2);
+    b[0].grain.mass = m1;
+    b[0].count = n1;
+    b[1].grain.mass = m2;
+    b[1].offset = n1;
+    b[1].count = n2;
+    return b;
+}
+
+int signed_index(int i, int G) { return i <= G / 2 ? i : i - G; }
+
+// A grid odd along x, even along y and z (the Nyquist planes), a box of unequal sides, and two
+// species of different mass at random positions and velocities.
+struct Scene {
+    SpectraGeometry g;
+    std::vector<Vec3> x, v;
+    std::vector<SpeciesBlock> species = blocks(300, 1.0, 200, 2.5);
+    Scene() {
+        g.grid = {5, 4, 6};
+        g.box = {10.0, 8.0, 13.0};
+        g.modes = 2;
+        std::mt19937_64 rng(7);
+        std::uniform_real_distribution<double> u(0, 1);
+        std::normal_distribution<double> normal;
+        for (int i = 0; i < 500; ++i) {
+            x.push_back({u(rng) * g.box[0], u(rng) * g.box[1], u(rng) * g.box[2]});
+            v.push_back({normal(rng), normal(rng) + 0.3, normal(rng)});
+        }
+    }
+    double mass(std::size_t i) const { return i < 300 ? 1.0 : 2.5; }
+    // The grain's cell index along each axis.
+    std::array<int, 3> cell(std::size_t i) const {
+        const double q[3] = {x[i].x, x[i].y, x[i].z};
+        std::array<int, 3> c{};
+        for (std::size_t a = 0; a < 3; ++a)
+            c[a] = static_cast<int>(std::floor(q[a] * g.grid[a] / g.box[a]));
+        return c;
+    }
+};
+
+// Each field's transform is the direct sum over the grains of q_j exp(-i k.X_c) (X_c the corner of
+// grain j's cell) at every stored wave vector, and sum over all k of |F_k|^2 = G sum_c f_c^2
+// (Parseval; the half spectrum counts n_z > 0 twice except on an even grid's Nyquist plane), both to
+// round-off.
+TEST(Spectra, TransformsAreTheDirectSumsAndKeepParseval) {
+    Scene s;
+    Spectra sp(s.g);
+    WorkerTeam team(2);
+    sp.compute(s.x, s.v, s.species, team);
+    double E = 0;
+    for (std::size_t i = 0; i < s.x.size(); ++i)
+        E += 0.5 * s.mass(i) * norm2(s.v[i]);
+    const double e_mean = E / static_cast<double>(s.x.size());
+    const int Gx = s.g.grid[0], Gy = s.g.grid[1], Gz = s.g.grid[2], Hz = Gz / 2 + 1;
+    for (int f = 0; f < 5; ++f) {
+        const std::vector<double>& F = sp.transform(f);
+        ASSERT_EQ(F.size(), static_cast<std::size_t>(2 * Gx * Gy * Hz));
+        double power = 0, scale = 0;
+        for (int i = 0; i < Gx; ++i)
+            for (int j = 0; j < Gy; ++j)
+                for (int l = 0; l < Hz; ++l) {
+                    const std::size_t at = static_cast<std::size_t>((i * Gy + j) * Hz + l);
+                    const cplx Fk(F[2 * at], F[2 * at + 1]);
+                    power += (l == 0 || 2 * l == Gz ? 1.0 : 2.0) * std::norm(Fk);
+                    cplx direct = 0;
+                    for (std::size_t p = 0; p < s.x.size(); ++p) {
+                        const std::array<int, 3> c = s.cell(p);
+                        const double q = f == 0   ? 1.0
+                                         : f == 1 ? s.mass(p) * s.v[p].x
+                                         : f == 2 ? s.mass(p) * s.v[p].y
+                                         : f == 3 ? s.mass(p) * s.v[p].z
+                                                  : 0.5 * s.mass(p) * norm2(s.v[p]) - e_mean;
+                        const double phase = 2 * std::numbers::pi *
+                                             (static_cast<double>(i * c[0]) / Gx + static_cast<double>(j * c[1]) / Gy +
+                                              static_cast<double>(l * c[2]) / Gz);
+                        direct += q * std::polar(1.0, -phase);
+                    }
+                    scale = std::max(scale, std::abs(direct));
+                    ASSERT_NEAR(std::abs(Fk - direct), 0.0, 1e-11 * (1 + scale)) << f << ": " << i << " " << j << " " << l;
+                }
+        double squares = 0;
+        for (double c : sp.field(f))
+            squares += c * c;
+        EXPECT_NEAR(power / (static_cast<double>(Gx * Gy * Gz) * squares), 1.0, 1e-13) << "field " << f;
+    }
+}
+
+// The spectra of one wave vector from its transforms: along x, n = 1 (the first axis bin, after the
+// shells) and the first mode of modes.csv, its phase referred to the cell centres.
+TEST(Spectra, FieldsOfAWaveVectorFollowTheirDefinitions) {
+    Scene s;
+    Spectra sp(s.g);
+    WorkerTeam team(1);
+    const std::vector<double> out = sp.compute(s.x, s.v, s.species, team);
+    const std::vector<SpectrumBin> bins = spectrum_bins(s.g);
+    std::size_t r = 0;
+    while (bins[r].axis != 1)
+        ++r;
+    ASSERT_EQ(bins[r].n, 1);
+    const double k = 2 * std::numbers::pi / s.g.box[0], dx = s.g.box[0] / s.g.grid[0];
+    cplx rho = 0, p[3] = {0, 0, 0}, h = 0, rho_c = 0, uy_c = 0;
+    double N = 0, M = 0, E = 0;
+    for (std::size_t i = 0; i < s.x.size(); ++i) {
+        N += 1;
+        M += s.mass(i);
+        E += 0.5 * s.mass(i) * norm2(s.v[i]);
+    }
+    const double e_mean = E / N, T = 2 * e_mean / 3;
+    for (std::size_t i = 0; i < s.x.size(); ++i) {
+        const double X = s.cell(i)[0] * dx;
+        const cplx z = std::polar(1.0, -k * X), zc = std::polar(1.0, -k * (X + dx / 2));
+        rho += z;
+        p[0] += s.mass(i) * s.v[i].x * z;
+        p[1] += s.mass(i) * s.v[i].y * z;
+        p[2] += s.mass(i) * s.v[i].z * z;
+        h += (0.5 * s.mass(i) * norm2(s.v[i]) - e_mean) * z;
+        rho_c += zc;
+        uy_c += s.mass(i) * s.v[i].y * zc;
+    }
+    const double* f = out.data() + r * spectrum_field_count;
+    EXPECT_NEAR(f[0], std::norm(rho) / N, 1e-12);
+    EXPECT_NEAR(f[1], (std::norm(p[1]) + std::norm(p[2])) / (2 * M), 1e-12);
+    EXPECT_NEAR(f[2], std::norm(p[0]) / M, 1e-12);
+    EXPECT_NEAR(f[3], std::norm(h) / (N * 1.5 * T * T), 1e-12);
+    const double* m = out.data() + bins.size() * spectrum_field_count;
+    EXPECT_NEAR(m[0], (2.0 / N * rho_c).real(), 1e-14);
+    EXPECT_NEAR(m[1], (2.0 / N * rho_c).imag(), 1e-14);
+    EXPECT_NEAR(m[4], (2.0 / M * uy_c).real(), 1e-14);
+    EXPECT_NEAR(m[5], (2.0 / M * uy_c).imag(), 1e-14);
+}
+
+// Shells: every wave vector of the grid with 0 < |k| up to the reach (the largest |k| every axis
+// has; the Nyquist planes left out) in exactly one shell, the shell's mean |k| within its edges;
+// the axis bins n = 1 ... (G_a - 1)/2; the modes as many as asked where the axis has them.
+TEST(Spectra, ShellsHoldEveryWaveVectorOnce) {
+    SpectraGeometry g;
+    g.grid = {12, 7, 1}; // a slab: no wave vectors along z
+    g.box = {24.0, 10.0, 2.0};
+    g.modes = 4;
+    const std::vector<SpectrumBin> bins = spectrum_bins(g);
+    const double dk = 2 * std::numbers::pi / 24.0;
+    const double reach = std::min(2 * std::numbers::pi * 5 / 24.0, 2 * std::numbers::pi * 3 / 10.0);
+    int expected = 0;
+    for (int i = 0; i < 12; ++i)
+        for (int j = 0; j < 7; ++j) {
+            const int nx = signed_index(i, 12), ny = signed_index(j, 7);
+            if (std::abs(nx) == 6)
+                continue;
+            const double k = std::hypot(2 * std::numbers::pi * nx / 24.0, 2 * std::numbers::pi * ny / 10.0);
+            expected += k > 0 && std::floor(k / dk + 0.5) <= std::floor(reach / dk + 1e-9);
+        }
+    int counted = 0, along[4] = {0, 0, 0, 0};
+    for (const SpectrumBin& b : bins) {
+        if (b.axis == 0) {
+            counted += b.modes;
+            EXPECT_GE(b.k, (b.n - 0.5) * dk);
+            EXPECT_LT(b.k, (b.n + 0.5) * dk);
+        } else {
+            EXPECT_EQ(b.n, ++along[b.axis]);
+            EXPECT_EQ(b.modes, 2);
+        }
+    }
+    EXPECT_EQ(counted, expected);
+    EXPECT_EQ(along[1], 5);
+    EXPECT_EQ(along[2], 3);
+    EXPECT_EQ(along[3], 0);
+    const std::vector<ModeIndex> modes = mode_indices(g);
+    ASSERT_EQ(modes.size(), 4u + 3u);
+    EXPECT_EQ(modes[4].axis, 2);
+    EXPECT_EQ(modes[6].n, 3);
+}
+
+// Grains at the cell centres carrying exact waves along y on a uniform density (in every cell two
+// grains of mass 1 and two of mass 2.5): the velocity v_x = U sin(k y_c), and v_z = +-(what makes
+// each grain's kinetic energy e (1 + B cos(k y_c))), one of each sign. modes.csv at n = 1 along y has the flow's -i U
+// and the temperature's B (the mean energy is e), the density's 0; at n = 2 nothing; to round-off.
+TEST(Spectra, WavesOnTheGridHaveTheirAmplitudes) {
+    SpectraGeometry g;
+    g.grid = {3, 8, 2};
+    g.box = {3.0, 16.0, 2.0};
+    g.modes = 2;
+    const double U = 0.3, B = 0.2, k = 2 * std::numbers::pi / 16.0, e = 1.5;
+    std::vector<Vec3> x, v;
+    for (const double m : {1.0, 2.5})
+        for (const double sign : {1.0, -1.0})
+            for (int c = 0; c < 3 * 8 * 2; ++c) {
+                const int i = c / 16, j = c / 2 % 8, l = c % 2;
+                const double y = 2.0 * j + 1.0;
+                const double vx = U * std::sin(k * y);
+                const double vz = std::sqrt(2 * e * (1 + B * std::cos(k * y)) / m - vx * vx);
+                x.push_back({i + 0.5, y, l + 0.5});
+                v.push_back({vx, 0.0, sign * vz});
+            }
+    Spectra sp(g);
+    WorkerTeam team(1);
+    const std::vector<double> out = sp.compute(x, v, blocks(96, 1.0, 96, 2.5), team);
+    const std::vector<ModeIndex> modes = mode_indices(g);
+    const std::size_t first = spectrum_bins(g).size() * spectrum_field_count;
+    for (std::size_t r = 0; r < modes.size(); ++r) {
+        const double* a = out.data() + first + r * mode_field_count;
+        const bool wave = modes[r].axis == 2 && modes[r].n == 1;
+        SCOPED_TRACE(::testing::Message() << "axis " << modes[r].axis << ", n = " << modes[r].n);
+        const double expected[mode_field_count] = {0, 0, 0, wave ? -U : 0, 0, 0, 0, 0, wave ? B : 0, 0};
+        for (std::size_t f = 0; f < mode_field_count; ++f)
+            EXPECT_NEAR(a[f], expected[f], 1e-14) << mode_fields[f];
+    }
+}
+
+} // namespace
+} // namespace roughgas
