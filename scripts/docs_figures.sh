@@ -8,6 +8,7 @@
 #   docs/usf_sweep_alpha.png   roughgas sweep of cases/usf_rough.toml over alpha, plot_shear.py --sweep
 #   docs/box_*.png             roughgas run cases/box_{couette,fourier,thermal_walls,heated_bed,usf,shear_mode}.toml,
 #                              plot_profiles.py (the shear mode's last block: --from 60)
+#   docs/box_shear_mode_spectra.png  the same run of box_shear_mode.toml, plot_spectra.py
 # docs/accuracy.png is the work-precision study of docs/accuracy.md (scripts/bench_accuracy.py,
 # minutes of CPU) and docs/transport_errors.png the study of docs/validation.md
 # (scripts/transport_errors.py --collisions 3000 --plot docs/transport_errors.png, ten minutes on
@@ -50,10 +51,11 @@ for c in couette fourier thermal_walls heated_bed usf shear_mode; do
   "$roughgas" run "$root/cases/box_$c.toml" --out "$work/box_$c" --force --quiet
   if [ "$c" = shear_mode ]; then
     "$py" "$root/scripts/plot_profiles.py" "$work/box_$c" --from 60
+    "$py" "$root/scripts/plot_spectra.py" "$work/box_$c" --out "$root/docs/box_shear_mode_spectra.png"
   else
     "$py" "$root/scripts/plot_profiles.py" "$work/box_$c"
   fi
   cp "$work/box_$c/profiles.png" "$root/docs/box_$c.png"
 done
 
-echo "docs_figures: redrew docs/ice_normal.png, fig2c_tangential.png, hcs_mixture.png, usf_rough.png, usf_sweep_alpha.png, box_*.png"
+echo "docs_figures: redrew docs/ice_normal.png, fig2c_tangential.png, hcs_mixture.png, usf_rough.png, usf_sweep_alpha.png, box_*.png (with box_shear_mode_spectra.png)"
