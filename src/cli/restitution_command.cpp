@@ -94,10 +94,10 @@ CsvProvenance provenance(const RestitutionOptions& o, const CaseConfig& cfg, con
     p.resolved_case = emit_case(cfg);
     p.notes = {
         fmt::format(
-            "pair: species \"{}\" with \"{}\": m_eff = {:.17g} kg, R_eff = {:.17g} m, kappa = {:.17g}",
+            "pair: species \"{}\" with \"{}\": m_eff = {} kg, R_eff = {} m, kappa = {}",
             cfg.species[i].name, cfg.species[j].name, pc.m_eff, pc.R_eff, pc.kappa),
-        fmt::format("contact: {}, end = {}, rho = {:.17g} m^-1/2 s^-2, A = {:.17g} s, mu = {:.17g}, zeta0 = "
-                    "{:.17g} m",
+        fmt::format("contact: {}, end = {}, rho = {} m^-1/2 s^-2, A = {} s, mu = {}, zeta0 = "
+                    "{} m",
                     name(pc.model.form), name(pc.model.end), pc.rho, pc.A, pc.mu, pc.zeta0),
         fmt::format("direct integration, tolerance rel = {:.3g}, abs = {:.3g}", cfg.contact.tolerance.rel,
                     cfg.contact.tolerance.abs),

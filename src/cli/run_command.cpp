@@ -323,7 +323,7 @@ int run_run(const RunOptions& o, const Communicator& comm) {
     };
     if (spec.shear)
         prov.notes.push_back(fmt::format(
-            "uniform shear flow u = a y x, a = {:.17g}: V = v - u; Strang steps of {:.17g} mean free times; "
+            "uniform shear flow u = a y x, a = {}: V = v - u; Strang steps of {} mean free times; "
             "rows at the end of the first step at or after each output's coll_per_particle",
             spec.shear->rate, spec.shear->time_step));
     if (!start_note.empty()) {

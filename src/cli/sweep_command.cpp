@@ -162,11 +162,13 @@ int run_sweep(const SweepOptions& o, const Communicator& comm) {
     s = parse_sweep(o);
     const double from = parse_number(o, s.from), to = parse_number(o, s.to);
     for (long k = 0; k < s.count; ++k) {
-        const double x = s.count == 1
-                             ? from
-                             : from + (to - from) * static_cast<double>(k) / static_cast<double>(s.count - 1);
+        // Rounded to 15 significant digits: the decimal the user means (0.8, not the 0.7999999999999999
+        // the arithmetic gives), which the CSVs and messages then show as such.
+        const double x = std::stod(fmt::format(
+            "{:.15g}", s.count == 1 ? from
+                                    : from + (to - from) * static_cast<double>(k) / static_cast<double>(s.count - 1)));
         std::vector<std::string> sets = o.sets;
-        sets.push_back(fmt::format("{}={:.17g}", s.key, x));
+        sets.push_back(fmt::format("{}={}", s.key, x));
         cases.push_back(load_case(o.case_file, sets, CaseUse::run));
         values.push_back(x);
         point_sets.push_back(sets);
@@ -220,7 +222,7 @@ int run_sweep(const SweepOptions& o, const Communicator& comm) {
             prov.overrides = point_sets[static_cast<std::size_t>(k)];
             prov.seed = cases[static_cast<std::size_t>(k)].run.seed;
             prov.resolved_case = emit_case(cases[static_cast<std::size_t>(k)]);
-            prov.notes = {fmt::format("sweep point {} of {}: {} = {:.17g}", k, s.count, s.key,
+            prov.notes = {fmt::format("sweep point {} of {}: {} = {}", k, s.count, s.key,
                                       values[static_cast<std::size_t>(k)])};
             prov.units = p.units;
             CsvWriter csv(p.names, prov);

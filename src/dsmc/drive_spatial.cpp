@@ -263,8 +263,7 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
     if (io.summary) {
         ReplicaSummary& s = *io.summary;
         s.kernel = kernel;
-        s.bytes_per_particle = 6 * sizeof(Vec3) + sizeof(std::uint32_t) +
-                               (domain.partners == PartnerSelection::nearest ? 4 * sizeof(std::uint32_t) : 0);
+        s.bytes_per_particle = box_bytes_per_particle(domain);
         s.memory_per_particle = s.bytes_per_particle;
         s.collisions = engine.collisions();
         s.resumed_at = resumed_at;

@@ -108,13 +108,16 @@ const char* const shear_quantities[] = {"P_xx",      "P_yy",      "P_zz",      "
 
 } // namespace
 
+std::size_t box_bytes_per_particle(const DomainSpec& d) {
+    return 6 * sizeof(Vec3) + sizeof(std::uint32_t) +
+           (d.partners == PartnerSelection::nearest ? 4 * sizeof(std::uint32_t) : 0);
+}
+
 std::size_t memory_per_particle_bound(const RunSpec& spec) {
     // A state saved or read (dsmc/grain_state.hpp): its copy and the file's bytes, at the end or start.
     const std::size_t state = spec.final_state || (spec.domain && spec.domain->initial_state) ? 6 * sizeof(Vec3) : 0;
-    if (spec.domain) // positions, velocities, spins twice (the sort), a key, the sort's counts, with
-                     // nearest partners identities and last partners twice
-        return 6 * sizeof(Vec3) + 2 * sizeof(std::uint32_t) +
-               (spec.domain->partners == PartnerSelection::nearest ? 4 * sizeof(std::uint32_t) : 0) + state;
+    if (spec.domain) // the store, and at most one count of the sort per grain
+        return box_bytes_per_particle(*spec.domain) + sizeof(std::uint32_t) + state;
     // The largest store (a 64-byte rough grain), its index and class key, a shear row's spins.
     return 64 + sizeof(std::uint32_t) + sizeof(std::uint16_t) + sizeof(Vec3) + state;
 }

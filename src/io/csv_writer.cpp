@@ -107,7 +107,7 @@ void CsvWriter::add_row(std::span<const double> values) {
     for (std::size_t i = 0; i < values.size(); ++i) {
         if (i)
             text_ += ',';
-        fmt::format_to(std::back_inserter(text_), "{:.17g}", values[i]);
+        fmt::format_to(std::back_inserter(text_), "{}", values[i]);
     }
     text_ += '\n';
     ++rows_;

@@ -124,7 +124,7 @@ void MomentsTable::check(std::span<const double> row) const {
             const std::string field = name.substr(name.rfind('.') + 1);
             if ((field == "S_T" || field == "T_re" || field == "T_im") && zero("T_tr"))
                 continue;
-            throw NonFiniteValue(name, t, row[j], fmt::format("spectra field {} is {} at t = {:.17g}", name, row[j], t));
+            throw NonFiniteValue(name, t, row[j], fmt::format("spectra field {} is {} at t = {}", name, row[j], t));
         }
         if (j >= profile_start_) { // a profile bin's field
             const std::size_t f = (j - profile_start_) % profile_field_count, bin = j - profile_start_ - f;
@@ -133,7 +133,7 @@ void MomentsTable::check(std::span<const double> row) const {
                                   (f == profile_theta && T_tr == 0));
             if (!undefined)
                 throw NonFiniteValue(name, t, row[j],
-                                     fmt::format("profile field {} is {} at t = {:.17g}", name, row[j], t));
+                                     fmt::format("profile field {} is {} at t = {}", name, row[j], t));
             continue;
         }
         if (base == "coll_rate" || base == "E_diss_rate")
@@ -147,7 +147,7 @@ void MomentsTable::check(std::span<const double> row) const {
         if (!undefined) {
             throw NonFiniteValue(
                 name, t, row[j],
-                fmt::format("column {} is {} at t = {:.17g} (coll_per_particle = {:.17g})", name, row[j], t,
+                fmt::format("column {} is {} at t = {} (coll_per_particle = {})", name, row[j], t,
                             value.count("coll_per_particle") ? value["coll_per_particle"] : 0.0));
         }
     }

@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string describe(const StateSpecies& s) {
-    return fmt::format("{} (m = {:.17g}, R = {:.17g}, {} grains)", s.name, s.mass, s.radius, s.grains);
+    return fmt::format("{} (m = {}, R = {}, {} grains)", s.name, s.mass, s.radius, s.grains);
 }
 
 // The species the case asks for, as a state file would list them.

@@ -1,6 +1,7 @@
 #pragma once
 // CSV output (docs/reference.md "Output"): '#' lines saying where the numbers came from, one header
-// line, then rows at full precision ({:.17g}: reads back to the same double). Written atomically.
+// line, then rows at full precision (the shortest decimal that reads back to the same double: 0.8, not
+// 0.80000000000000004). Written atomically.
 #include <cstdint>
 #include <filesystem>
 #include <optional>
