@@ -8,7 +8,8 @@ box's mean velocity: where a flow has grown, T holds its energy too). Two panels
   - against collisions per particle, at the smallest wave number of the shells and along each axis
     with more than two cells: E_perp / T (the transverse current, whose growth is the shear mode
     leaving the homogeneous state: vortices) and S (the structure factor, whose growth at small k
-    is clustering); an ideal gas has 1 for both;
+    is clustering); a uniform gas has 1 for both (E_perp / T: for one species, or species at one
+    temperature);
   - the shell spectra S(k) and E_perp(k) / T at N times spread over the run (default 4), k in units
     of the smallest shell's.
 With replicas the values are the replicas' means (spectra.csv's X_err columns are not drawn).
@@ -49,8 +50,11 @@ def main(argv):
     cpp = s["coll_per_particle"]
     fig, ax = plt.subplots(2, 1, figsize=(7, 9))
     drawn = set()
-    for axis, label in ((0, "shell 1"), (1, "along x, n = 1"), (2, "along y, n = 1"), (3, "along z, n = 1")):
-        sel = (s["axis"] == axis) & (s["n"] == 1)
+    shells = s["axis"] == 0
+    first = s["n"][shells].min() if shells.any() else 1
+    for axis, n, label in ((0, first, f"shell {first:.0f}"), (1, 1, "along x, n = 1"), (2, 1, "along y, n = 1"),
+                           (3, 1, "along z, n = 1")):
+        sel = (s["axis"] == axis) & (s["n"] == n)
         if not sel.any() or not np.isfinite(T[sel]).all() or not (T[sel] > 0).all():
             continue
         k = s["k"][sel][0]
@@ -60,10 +64,9 @@ def main(argv):
     ax[0].axhline(1.0, color="k", lw=0.6)
     ax[0].set_xlabel("collisions per particle")
     ax[0].set_ylabel("E_perp / T,  S  (ideal gas: 1)")
-    shells = s["axis"] == 0
     if shells.any():
         blocks = np.unique(cpp[shells])
-        k1 = s["k"][shells & (s["n"] == 1)][0]
+        k1 = s["k"][shells & (s["n"] == first)][0]
         picks = np.unique(np.linspace(0, len(blocks) - 1, max(1, args.times)).round().astype(int))
         for j, c in enumerate(blocks[picks]):
             sel = shells & (cpp == c)
@@ -74,7 +77,7 @@ def main(argv):
                          label=f"E_perp/T at {c:.3g}")
             drawn.add(1)
         ax[1].axhline(1.0, color="k", lw=0.6)
-        ax[1].set_xlabel("k / k_1 (k_1 = 2 pi / the longest side)")
+        ax[1].set_xlabel("k / k_1 (k_1: the smallest shell's k)")
         ax[1].set_ylabel("shell spectra")
     for a in ax:
         a.grid(alpha=0.3, which="both")

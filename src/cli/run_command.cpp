@@ -140,7 +140,7 @@ std::pair<std::uint64_t, std::uint64_t> replica_range(const std::string& text, s
 // Never overwrite earlier results by accident: that is an input error, reported before any work.
 // A checkpoint of an earlier run counts too: it is continued with --resume, or replaced with --force.
 void check_output_dir(const fs::path& dir, bool force, bool histograms, bool shear, bool walls, bool box,
-                      bool spectra) {
+                      bool spectra, bool modes) {
     if (fs::exists(dir) && !fs::is_directory(dir))
         throw InputError(dir.string(), "--out", "--out " + dir.string() + ": exists and is not a directory");
     if (force)
@@ -159,7 +159,7 @@ void check_output_dir(const fs::path& dir, bool force, bool histograms, bool she
          {output_file, histograms_file, steady_file, scaled_file, walls_file, profiles_file, steady_profiles_file,
           spectra_file, modes_file}) {
         if ((file == histograms_file && !histograms) || (file == steady_file && !shear) ||
-            ((file == spectra_file || file == modes_file) && !spectra) ||
+            (file == spectra_file && !spectra) || (file == modes_file && !modes) ||
             (file == steady_profiles_file && !(shear && box)) ||
             (file == scaled_file && shear) || (file == walls_file && !walls) || (file == profiles_file && !box))
             continue;
@@ -199,7 +199,7 @@ RunSetup new_run(const RunOptions& o, bool root) {
         s.lock.lock_if_exists(s.dir); // before its files are checked: another run may be writing them
         check_output_dir(s.dir, o.force, s.cfg.run.histogram_every > 0, driven(s.cfg),
                          s.cfg.domain && s.cfg.domain->has_walls(), s.cfg.domain.has_value(),
-                         s.cfg.domain && s.cfg.spectra);
+                         s.cfg.domain && s.cfg.spectra, s.cfg.domain && s.cfg.spectra && s.cfg.spectra->modes > 0);
     }
     s.manifest.run = {roughgas_version(),
                       o.case_file,
@@ -419,16 +419,18 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         table.spectra_table_columns(),
         "one block of rows per moments.csv row, at that row's t: axis 0 the shells of |k| (n: the shell, k its mean "
         "|k|, n_modes its wave vectors, k and -k apart), axis 1, 2, 3 the wave numbers n along x, y, z; from the "
-        "grains on the grid of the collision cells (nearest grid point): the structure factor S, the transverse "
-        "and longitudinal current spectra E_perp, E_par (per transverse component) and the spectrum S_T of the "
-        "kinetic energy at fixed density; an ideal gas has S = S_T = 1 and E_perp = E_par = T at every k "
-        "(observables/spectra.hpp)");
+        "grains on the grid of the collision cells (nearest grid point), velocities about the mass-weighted mean: "
+        "the structure factor S, the transverse and longitudinal current spectra E_perp, E_par (per transverse "
+        "component) and the spectrum S_T of the kinetic energy at fixed density and composition; a uniform gas "
+        "(positions independent of velocities) has S = S_T = 1 and, for one species, E_perp = E_par = T_tr at "
+        "every k (observables/spectra.hpp)");
     std::optional<CsvWriter> mcsv = box_csv(
-        table.modes_table_columns().size() > 5 ? table.modes_table_columns() : std::vector<Column>{},
+        table.modes_table_columns(),
         "one block of rows per moments.csv row, at that row's t: the lowest wave numbers n along each axis "
         "(axis 1, 2, 3: x, y, z; k = 2 pi n / L), the complex amplitudes (2/N) sum_j q_j exp(-i k.x_j) of the "
         "density (q = 1), of the flow velocity (mass-weighted) and of the kinetic temperature relative to its "
-        "mean, x_j the centre of grain j's cell: a wave A sin(k x) has the amplitude -i A (observables/spectra.hpp)");
+        "mean, x_j the centre of grain j's cell: a wave A sin(k x) has the amplitude -i A sinc(k Delta/2), Delta the "
+        "cell edge (observables/spectra.hpp)");
     const auto write_box_csvs = [&] { // beside every write of moments.csv
         if (wcsv)
             wcsv->write(dir / walls_file);

@@ -130,9 +130,11 @@ std::size_t memory_per_replica_fixed_bound(const RunSpec& spec) {
     const std::size_t S = spec.species.size();
     // Per cell: each species' start, the sort's counts of up to 64 chunks, a share of the per-unit
     // tallies (one per 64 cells: a pair count each, and the unit's bookkeeping).
-    // With spectra: five fields on the grid of the cells and their transforms (observables/spectra.hpp).
+    // With spectra: five fields on the grid of the cells, their half-spectrum transforms and each
+    // stored wave vector's shell (observables/spectra.hpp): (G_z/2 + 1)/G_z of a cell's each.
+    const double half = (std::floor(d.cells[2] / 2.0) + 1) / d.cells[2];
     const double per_cell = 4.0 * static_cast<double>(S + 1) + 4.0 * 64 + (8.0 * spec.pairs.size() + 64) / 64 +
-                            6 * sizeof(double) + (d.spectra ? 5 * 2 * sizeof(double) + 2 * sizeof(int) : 0);
+                            6 * sizeof(double) + (d.spectra ? 5 * sizeof(double) + (5 * 2 * sizeof(double) + sizeof(int)) * half : 0);
     // The step's local collision frequencies: per chunk of grains (up to 64 per species), bin and species, 5 sums.
     const double bins = d.cells[static_cast<std::size_t>(d.profile_axis)];
     // The rows the replica keeps until the run ends (the sink's copy and the ensemble's): with the

@@ -35,10 +35,11 @@ MomentsTable::MomentsTable(const RunSpec& spec)
         spectrum_bins_ = spectrum_bins(g);
         modes_ = mode_indices(g);
         spectra_columns_ = {solver_[0], solver_[1], {"axis", "-"}, {"n", "-"}, {"k", "1/length"}, {"n_modes", "-"}};
-        modes_columns_ = {solver_[0], solver_[1], {"axis", "-"}, {"n", "-"}, {"k", "1/length"}};
+        if (!modes_.empty()) // spectra.modes = 0 (or no axis long enough): no modes.csv
+            modes_columns_ = {solver_[0], solver_[1], {"axis", "-"}, {"n", "-"}, {"k", "1/length"}};
         for (auto [fields, table] : {std::pair{spectrum_field_columns(), &spectra_columns_},
                                      std::pair{mode_field_columns(), &modes_columns_}})
-            for (const Column& f : fields) {
+            for (const Column& f : table->empty() ? std::vector<Column>{} : fields) {
                 table->push_back(f);
                 if (replicas_ > 1)
                     table->push_back({f.name + "_err", f.unit});

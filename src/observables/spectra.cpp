@@ -22,8 +22,14 @@ int top(int G) { return (G - 1) / 2; }
 // Signed wave number of index i of G (FFT order: 0, 1, ..., then the negative ones).
 int signed_index(int i, int G) { return i <= G / 2 ? i : i - G; }
 
+// 2 pi over the longest side among the axes of more than two cells (the others have no wave vectors
+// of their own: shell 1 is then the smallest |k| there is).
 double shell_width(const SpectraGeometry& g) {
-    return 2 * std::numbers::pi / std::max({g.box[0], g.box[1], g.box[2]});
+    double L = 0;
+    for (std::size_t a = 0; a < 3; ++a)
+        if (g.grid[a] > 2)
+            L = std::max(L, g.box[a]);
+    return L > 0 ? 2 * std::numbers::pi / L : 1.0;
 }
 
 // The largest |k| every axis reaches: the shells go up to it.
@@ -167,35 +173,56 @@ const std::vector<double>& Spectra::field(int f) const { return fields_.at(stati
 std::vector<double> Spectra::compute(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
                                      const std::vector<SpeciesBlock>& species, WorkerTeam& team) {
     const std::array<int, 3>& G = g_.grid;
-    // The mean translational energy e = 3T/2 and the total mass.
-    double N = 0, M = 0, E = 0;
+    // The mass-weighted mean velocity U: the currents and energies are of c = v - U (a drift would
+    // add U times the mass density's wave to the currents).
+    double N = 0, M = 0;
+    Vec3 P{};
     for (const SpeciesBlock& b : species)
         for (std::size_t i = b.offset; i < b.offset + b.count; ++i) {
             N += 1;
             M += b.grain.mass;
-            E += 0.5 * b.grain.mass * norm2(v[i]);
+            P += b.grain.mass * v[i];
         }
-    const double e_mean = N > 0 ? E / N : 0.0, T = 2 * e_mean / 3;
+    const Vec3 U = M > 0 ? (1.0 / M) * P : Vec3{};
+    // Each species' mean kinetic energy e_s, the grains' mean e and the sum of (e_j - e_s)^2.
+    std::vector<double> e_species(species.size(), 0.0);
+    double E = 0, squares = 0;
+    for (std::size_t s = 0; s < species.size(); ++s) {
+        const SpeciesBlock& b = species[s];
+        double sum = 0, sum2 = 0;
+        for (std::size_t i = b.offset; i < b.offset + b.count; ++i) {
+            const double e = 0.5 * b.grain.mass * norm2(v[i] - U);
+            sum += e;
+            sum2 += e * e;
+        }
+        e_species[s] = b.count > 0 ? sum / static_cast<double>(b.count) : 0.0;
+        E += sum;
+        squares += sum2 - e_species[s] * sum;
+    }
+    const double e_mean = N > 0 ? E / N : 0.0;
     // Nearest grid point, grain by grain in store order (a deterministic sum per cell).
     for (std::vector<double>& f : fields_)
         std::fill(f.begin(), f.end(), 0.0);
     std::array<double, 3> per_length{};
     for (std::size_t a = 0; a < 3; ++a)
         per_length[a] = G[a] / g_.box[a];
-    for (const SpeciesBlock& b : species) {
+    for (std::size_t s = 0; s < species.size(); ++s) {
+        const SpeciesBlock& b = species[s];
         const double m = b.grain.mass;
         for (std::size_t i = b.offset; i < b.offset + b.count; ++i) {
             const double q[3] = {x[i].x, x[i].y, x[i].z};
             std::size_t c = 0;
             for (std::size_t a = 0; a < 3; ++a) {
-                const int k = std::clamp(static_cast<int>(std::floor(q[a] * per_length[a])), 0, G[a] - 1);
+                const double r = std::floor(q[a] * per_length[a]); // NaN: cell 0 (the row then reports the NaN)
+                const int k = r >= 0 ? static_cast<int>(std::min(r, static_cast<double>(G[a] - 1))) : 0;
                 c = c * static_cast<std::size_t>(G[a]) + static_cast<std::size_t>(k);
             }
+            const Vec3 cv = v[i] - U;
             fields_[0][c] += 1;
-            fields_[1][c] += m * v[i].x;
-            fields_[2][c] += m * v[i].y;
-            fields_[3][c] += m * v[i].z;
-            fields_[4][c] += 0.5 * m * norm2(v[i]) - e_mean;
+            fields_[1][c] += m * cv.x;
+            fields_[2][c] += m * cv.y;
+            fields_[3][c] += m * cv.z;
+            fields_[4][c] += 0.5 * m * norm2(cv) - e_species[s];
         }
     }
     const fftw_plan plan = plan_->plan;
@@ -213,7 +240,7 @@ std::vector<double> Spectra::compute(const std::vector<Vec3>& x, const std::vect
                    static_cast<std::size_t>(G[2] / 2 + 1) +
                static_cast<std::size_t>(l);
     };
-    const double norm_T = N * 1.5 * T * T;
+    const double norm_T = squares;
     // The four spectra at stored wave vector s of wave numbers n.
     const auto spectra_at = [&](std::size_t s, const int n[3], double out[4]) {
         double k[3], k2 = 0;

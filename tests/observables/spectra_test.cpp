@@ -27,14 +27,14 @@ std::vector<SpeciesBlock> blocks(std::size_t n1, double m1, std::size_t n2, doub
 
 int signed_index(int i, int G) { return i <= G / 2 ? i : i - G; }
 
-// A grid odd along x, even along y and z (the Nyquist planes), a box of unequal sides, and two
+// A grid odd along x and y, even along z (the Nyquist plane), a box of unequal sides, and two
 // species of different mass at random positions and velocities.
 struct Scene {
     SpectraGeometry g;
     std::vector<Vec3> x, v;
     std::vector<SpeciesBlock> species = blocks(300, 1.0, 200, 2.5);
     Scene() {
-        g.grid = {5, 4, 6};
+        g.grid = {7, 5, 8};
         g.box = {10.0, 8.0, 13.0};
         g.modes = 2;
         std::mt19937_64 rng(7);
@@ -44,7 +44,23 @@ struct Scene {
             x.push_back({u(rng) * g.box[0], u(rng) * g.box[1], u(rng) * g.box[2]});
             v.push_back({normal(rng), normal(rng) + 0.3, normal(rng)});
         }
+        Vec3 p{};
+        double M = 0;
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            p += mass(i) * v[i];
+            M += mass(i);
+        }
+        U = (1.0 / M) * p;
+        for (const auto [first, last] : {std::pair{0, 300}, std::pair{300, 500}}) {
+            double sum = 0;
+            for (int j = first; j < last; ++j)
+                sum += energy(static_cast<std::size_t>(j));
+            for (int j = first; j < last; ++j)
+                excess.push_back(energy(static_cast<std::size_t>(j)) - sum / (last - first));
+        }
     }
+    Vec3 U;                     // the mass-weighted mean velocity
+    std::vector<double> excess; // each grain's kinetic energy about U minus its species' mean
     double mass(std::size_t i) const { return i < 300 ? 1.0 : 2.5; }
     // The grain's cell index along each axis.
     std::array<int, 3> cell(std::size_t i) const {
@@ -53,6 +69,24 @@ struct Scene {
         for (std::size_t a = 0; a < 3; ++a)
             c[a] = static_cast<int>(std::floor(q[a] * g.grid[a] / g.box[a]));
         return c;
+    }
+    double energy(std::size_t i) const { return 0.5 * mass(i) * norm2(v[i] - U); }
+    // The grain's value of field f (rho, p_x, p_y, p_z, h).
+    double q(int f, std::size_t i) const {
+        const Vec3 c = v[i] - U;
+        return f == 0 ? 1.0 : f == 1 ? mass(i) * c.x : f == 2 ? mass(i) * c.y : f == 3 ? mass(i) * c.z : excess[i];
+    }
+    // Direct sum of field f at wave numbers n, with the phase of the cell corners.
+    cplx direct(int f, const std::array<int, 3>& n) const {
+        cplx sum = 0;
+        for (std::size_t p = 0; p < x.size(); ++p) {
+            const std::array<int, 3> c = cell(p);
+            double phase = 0;
+            for (std::size_t a = 0; a < 3; ++a)
+                phase += 2 * std::numbers::pi * n[a] * c[a] / static_cast<double>(g.grid[a]);
+            sum += q(f, p) * std::polar(1.0, -phase);
+        }
+        return sum;
     }
 };
 
@@ -65,36 +99,19 @@ TEST(Spectra, TransformsAreTheDirectSumsAndKeepParseval) {
     Spectra sp(s.g);
     WorkerTeam team(2);
     sp.compute(s.x, s.v, s.species, team);
-    double E = 0;
-    for (std::size_t i = 0; i < s.x.size(); ++i)
-        E += 0.5 * s.mass(i) * norm2(s.v[i]);
-    const double e_mean = E / static_cast<double>(s.x.size());
     const int Gx = s.g.grid[0], Gy = s.g.grid[1], Gz = s.g.grid[2], Hz = Gz / 2 + 1;
     for (int f = 0; f < 5; ++f) {
         const std::vector<double>& F = sp.transform(f);
         ASSERT_EQ(F.size(), static_cast<std::size_t>(2 * Gx * Gy * Hz));
-        double power = 0, scale = 0;
+        double power = 0;
         for (int i = 0; i < Gx; ++i)
             for (int j = 0; j < Gy; ++j)
                 for (int l = 0; l < Hz; ++l) {
                     const std::size_t at = static_cast<std::size_t>((i * Gy + j) * Hz + l);
                     const cplx Fk(F[2 * at], F[2 * at + 1]);
                     power += (l == 0 || 2 * l == Gz ? 1.0 : 2.0) * std::norm(Fk);
-                    cplx direct = 0;
-                    for (std::size_t p = 0; p < s.x.size(); ++p) {
-                        const std::array<int, 3> c = s.cell(p);
-                        const double q = f == 0   ? 1.0
-                                         : f == 1 ? s.mass(p) * s.v[p].x
-                                         : f == 2 ? s.mass(p) * s.v[p].y
-                                         : f == 3 ? s.mass(p) * s.v[p].z
-                                                  : 0.5 * s.mass(p) * norm2(s.v[p]) - e_mean;
-                        const double phase = 2 * std::numbers::pi *
-                                             (static_cast<double>(i * c[0]) / Gx + static_cast<double>(j * c[1]) / Gy +
-                                              static_cast<double>(l * c[2]) / Gz);
-                        direct += q * std::polar(1.0, -phase);
-                    }
-                    scale = std::max(scale, std::abs(direct));
-                    ASSERT_NEAR(std::abs(Fk - direct), 0.0, 1e-11 * (1 + scale)) << f << ": " << i << " " << j << " " << l;
+                    const cplx d = s.direct(f, {i, j, l});
+                    ASSERT_NEAR(std::abs(Fk - d), 0.0, 1e-11 * (1 + std::abs(d))) << f << ": " << i << " " << j << " " << l;
                 }
         double squares = 0;
         for (double c : sp.field(f))
@@ -103,48 +120,85 @@ TEST(Spectra, TransformsAreTheDirectSumsAndKeepParseval) {
     }
 }
 
-// The spectra of one wave vector from its transforms: along x, n = 1 (the first axis bin, after the
-// shells) and the first mode of modes.csv, its phase referred to the cell centres.
-TEST(Spectra, FieldsOfAWaveVectorFollowTheirDefinitions) {
+// The spectra.csv values from their definitions by direct sums over the grains: every shell (its
+// wave vectors: every k of the grid with 0 < |k| within the shell's edges, no Nyquist plane; most of
+// them oblique, so that k^ projects the currents) and the axis bins; the first mode of modes.csv
+// with its phase referred to the cell centres.
+TEST(Spectra, ValuesFollowTheirDefinitions) {
     Scene s;
     Spectra sp(s.g);
     WorkerTeam team(1);
     const std::vector<double> out = sp.compute(s.x, s.v, s.species, team);
     const std::vector<SpectrumBin> bins = spectrum_bins(s.g);
-    std::size_t r = 0;
-    while (bins[r].axis != 1)
-        ++r;
-    ASSERT_EQ(bins[r].n, 1);
-    const double k = 2 * std::numbers::pi / s.g.box[0], dx = s.g.box[0] / s.g.grid[0];
-    cplx rho = 0, p[3] = {0, 0, 0}, h = 0, rho_c = 0, uy_c = 0;
-    double N = 0, M = 0, E = 0;
+    double N = 0, M = 0, squares = 0;
     for (std::size_t i = 0; i < s.x.size(); ++i) {
         N += 1;
         M += s.mass(i);
-        E += 0.5 * s.mass(i) * norm2(s.v[i]);
+        squares += s.excess[i] * s.excess[i];
     }
-    const double e_mean = E / N, T = 2 * e_mean / 3;
-    for (std::size_t i = 0; i < s.x.size(); ++i) {
-        const double X = s.cell(i)[0] * dx;
-        const cplx z = std::polar(1.0, -k * X), zc = std::polar(1.0, -k * (X + dx / 2));
-        rho += z;
-        p[0] += s.mass(i) * s.v[i].x * z;
-        p[1] += s.mass(i) * s.v[i].y * z;
-        p[2] += s.mass(i) * s.v[i].z * z;
-        h += (0.5 * s.mass(i) * norm2(s.v[i]) - e_mean) * z;
-        rho_c += zc;
-        uy_c += s.mass(i) * s.v[i].y * zc;
+    // The four spectra of one wave vector, by direct sums.
+    const auto spectra_of = [&](const std::array<int, 3>& n) {
+        double k[3], k2 = 0;
+        for (std::size_t a = 0; a < 3; ++a) {
+            k[a] = 2 * std::numbers::pi * n[a] / s.g.box[a];
+            k2 += k[a] * k[a];
+        }
+        const cplx rho = s.direct(0, n), p[3] = {s.direct(1, n), s.direct(2, n), s.direct(3, n)}, h = s.direct(4, n);
+        cplx par = 0;
+        for (std::size_t a = 0; a < 3; ++a)
+            par += k[a] / std::sqrt(k2) * p[a];
+        double perp = 0;
+        for (std::size_t a = 0; a < 3; ++a)
+            perp += std::norm(p[a] - par * (k[a] / std::sqrt(k2)));
+        return std::array<double, 4>{std::norm(rho) / N, perp / (2 * M), std::norm(par) / M, std::norm(h) / squares};
+    };
+    const double dk = 2 * std::numbers::pi / 13.0; // the longest side
+    int oblique = 0;
+    for (std::size_t r = 0; r < bins.size(); ++r) {
+        const SpectrumBin& b = bins[r];
+        std::array<double, 4> expected{};
+        int count = 0;
+        if (b.axis == 0) {
+            for (int i = -3; i <= 3; ++i) // |n_x| <= (7 - 1)/2, |n_y| <= (5 - 1)/2, |n_z| <= (8 - 1)/2
+                for (int j = -2; j <= 2; ++j)
+                    for (int l = -3; l <= 3; ++l) {
+                        const double kn = std::hypot(2 * std::numbers::pi * i / 10.0, 2 * std::numbers::pi * j / 8.0,
+                                                     2 * std::numbers::pi * l / 13.0);
+                        if (kn < (b.n - 0.5) * dk || kn >= (b.n + 0.5) * dk)
+                            continue;
+                        const std::array<double, 4> e = spectra_of({i, j, l});
+                        for (std::size_t f = 0; f < 4; ++f)
+                            expected[f] += e[f];
+                        ++count;
+                        oblique += (i != 0) + (j != 0) + (l != 0) > 1;
+                    }
+            ASSERT_EQ(count, b.modes) << "shell " << b.n;
+            for (double& e : expected)
+                e /= count;
+        } else {
+            std::array<int, 3> n{0, 0, 0};
+            n[static_cast<std::size_t>(b.axis - 1)] = b.n;
+            expected = spectra_of(n);
+        }
+        for (std::size_t f = 0; f < 4; ++f)
+            EXPECT_NEAR(out[r * spectrum_field_count + f], expected[f], 1e-12 * (1 + expected[f]))
+                << "axis " << b.axis << ", n = " << b.n << ", " << spectrum_fields[f];
     }
-    const double* f = out.data() + r * spectrum_field_count;
-    EXPECT_NEAR(f[0], std::norm(rho) / N, 1e-12);
-    EXPECT_NEAR(f[1], (std::norm(p[1]) + std::norm(p[2])) / (2 * M), 1e-12);
-    EXPECT_NEAR(f[2], std::norm(p[0]) / M, 1e-12);
-    EXPECT_NEAR(f[3], std::norm(h) / (N * 1.5 * T * T), 1e-12);
+    EXPECT_GT(oblique, 20);
+    // modes.csv, n = 1 along x: the phase at the cell centres, exp(-i k dx/2) times the corners'.
+    const double k = 2 * std::numbers::pi / s.g.box[0], dx = s.g.box[0] / s.g.grid[0];
+    const cplx centre = std::polar(1.0, -k * dx / 2);
     const double* m = out.data() + bins.size() * spectrum_field_count;
-    EXPECT_NEAR(m[0], (2.0 / N * rho_c).real(), 1e-14);
-    EXPECT_NEAR(m[1], (2.0 / N * rho_c).imag(), 1e-14);
-    EXPECT_NEAR(m[4], (2.0 / M * uy_c).real(), 1e-14);
-    EXPECT_NEAR(m[5], (2.0 / M * uy_c).imag(), 1e-14);
+    double e_mean = 0;
+    for (std::size_t i = 0; i < s.x.size(); ++i)
+        e_mean += s.energy(i) / N;
+    const cplx expected[5] = {2.0 / N * centre * s.direct(0, {1, 0, 0}), 2.0 / M * centre * s.direct(1, {1, 0, 0}),
+                              2.0 / M * centre * s.direct(2, {1, 0, 0}), 2.0 / M * centre * s.direct(3, {1, 0, 0}),
+                              2.0 / (N * e_mean) * centre * s.direct(4, {1, 0, 0})};
+    for (std::size_t f = 0; f < 5; ++f) {
+        EXPECT_NEAR(m[2 * f], expected[f].real(), 1e-14) << mode_fields[2 * f];
+        EXPECT_NEAR(m[2 * f + 1], expected[f].imag(), 1e-14) << mode_fields[2 * f + 1];
+    }
 }
 
 // Shells: every wave vector of the grid with 0 < |k| up to the reach (the largest |k| every axis

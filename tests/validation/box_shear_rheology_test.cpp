@@ -31,10 +31,13 @@ std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
 // therefore gives eta* (1 + eps), a* / sqrt(1 + eps), P*_xy sqrt(1 + eps), and theta unchanged;
 // the diagonal P*_ii are compared unchanged.
 //
-// Allowed beyond 4 combined standard errors: 0.5 %. With the laws put in, the box of these runs
-// (104 grains per cell) is 0.35 % above the homogeneous eta* (0.28 % with 347 grains per cell and
-// the laws' terms measured away): the laws' next orders, and fewer grains per cell (0.4 % more with
-// 35 per cell, 1.5 % with 12). Without the laws the box is 1.3 % above: the check fails.
+// Allowed beyond 4 combined standard errors: 0.5 % for eta*, half of it for a* and P*_xy, which move
+// as the square root of the viscosity, and 0.5 % for theta and the diagonal P*_ii, which move by its
+// next orders. With the laws put in, the box of these runs (104 grains per cell) is 0.35 % above the
+// homogeneous eta* (0.28 % with 347 grains per cell and the laws' terms measured away): the laws'
+// next orders, and fewer grains per cell (0.4 % more with 35 per cell, 1.5 % with 12); a* is 0.27 %
+// below, P*_xy 0.08 % above, the diagonal within 0.2 %. Without the laws eta* is 1.2 % above, a*
+// 0.7 % below and P*_xy 0.5 % above: those checks fail.
 TEST(BoxShearRheology, LeesEdwardsBoxReproducesTheHomogeneousShearFlowAfterTheCellSizeCorrection) {
     const test::ScratchDir dir;
     const fs::path root = ROUGHGAS_SOURCE_DIR;
@@ -63,22 +66,22 @@ TEST(BoxShearRheology, LeesEdwardsBoxReproducesTheHomogeneousShearFlowAfterTheCe
                        16.0 / (75.0 * std::numbers::pi) * step * step;
     const struct {
         const char* col;
-        double factor;
+        double factor, allowed;
     } expected[] = {
-        {"eta_star", 1 + eps},
-        {"a_star", 1 / std::sqrt(1 + eps)},
-        {"P_xy_star", std::sqrt(1 + eps)},
-        {"theta", 1.0},
-        {"P_xx_star", 1.0},
-        {"P_yy_star", 1.0},
-        {"P_zz_star", 1.0},
+        {"eta_star", 1 + eps, 0.005},
+        {"a_star", 1 / std::sqrt(1 + eps), 0.0025},
+        {"P_xy_star", std::sqrt(1 + eps), 0.0025},
+        {"theta", 1.0, 0.005},
+        {"P_xx_star", 1.0, 0.005},
+        {"P_yy_star", 1.0, 0.005},
+        {"P_zz_star", 1.0, 0.005},
     };
     for (const auto& e : expected) {
         const std::string err = std::string(e.col) + "_err";
         const double box = bs.at(e.col).at(0), hom = hs.at(e.col).at(0);
         const double ratio = box / (hom * e.factor);
         const double se = std::hypot(bs.at(err).at(0) / box, hs.at(err).at(0) / hom);
-        EXPECT_NEAR(ratio, 1.0, 4 * se + 0.005) << e.col << ": box " << box << ", homogeneous " << hom;
+        EXPECT_NEAR(ratio, 1.0, 4 * se + e.allowed) << e.col << ": box " << box << ", homogeneous " << hom;
     }
     // The correction is there to be seen: the box's eta* is above the homogeneous one by more than
     // its errors.

@@ -6,33 +6,38 @@
 //
 // Assignment: nearest grid point. Each grain counts in its cell, at the cell's corner X_c (the
 // transforms' phase; modes.csv refers the phase to the cell's centre). With N grains of masses m_j,
-// total mass M, translational energies e_j = m_j |v_j|^2 / 2 of mean e (= 3T/2) and, for a wave
-// vector k = (2 pi n_x / L_x, 2 pi n_y / L_y, 2 pi n_z / L_z) of the grid,
-//   rho_k = sum_j exp(-i k.X_j),  p_k = sum_j m_j v_j exp(-i k.X_j),  h_k = sum_j (e_j - e) exp(-i k.X_j),
+// total mass M, mass-weighted mean velocity U, peculiar velocities c_j = v_j - U, kinetic energies
+// e_j = m_j |c_j|^2 / 2, e_s the mean of e_j over species s and, for a wave vector
+// k = (2 pi n_x / L_x, 2 pi n_y / L_y, 2 pi n_z / L_z) of the grid,
+//   rho_k = sum_j exp(-i k.X_j),  p_k = sum_j m_j c_j exp(-i k.X_j),  h_k = sum_j (e_j - e_s(j)) exp(-i k.X_j),
 //   S = |rho_k|^2 / N,
 //   E_par = |k^.p_k|^2 / M,   E_perp = |p_k - k^ (k^.p_k)|^2 / (2 M)   (k^ = k / |k|),
-//   S_T = |h_k|^2 / (N (3/2) T^2),   T = 2e/3.
-// Why these normalisations: in an ideal gas (positions uniform and independent of each other and
-// of the velocities, a Maxwellian at T), E|rho_k|^2 = N, E|k^.p_k|^2 = sum m_j T and E|h_k|^2 = N
-// Var(e_j) = N (3/2) T^2 at every k != 0 of the grid whatever the cell size, so S = S_T = 1 and
-// E_par = E_perp = T: the shot noise is the value 1 (T), and no term is subtracted. The DSMC keeps
-// exactly that state in equilibrium (its cell collisions leave the product of Maxwellians
+//   S_T = |h_k|^2 / sum_j (e_j - e_s(j))^2.
+// Why these normalisations: when the positions are uniform and independent of each other and of the
+// velocities, E|rho_k|^2 = N, E|k^.p_k|^2 = sum_j m_j^2 <c_a^2>_j and E|h_k|^2 = sum_j (e_j - e_s)^2 at
+// every k != 0 of the grid whatever the cell size: S = S_T = 1, and E_par = E_perp = sum_j m_j^2
+// |c_j|^2 / (3M), which is T for one species (T_tr; for a mixture sum_s x_s m_s T_s / (mean mass)).
+// So the shot noise is the value 1 (T), with no term to subtract, for a Maxwellian or not (a
+// cooling gas's a20 changes the energies' variance, which S_T divides by). S_T is the spectrum of the
+// kinetic energy at fixed density and composition (the species' mean energies taken away). The
+// DSMC keeps an elastic gas in that state (its cell collisions leave the product of Maxwellians
 // invariant). Nearest-grid-point assignment multiplies a field's long waves by the cell's window,
 // prod_a sinc(k_a Delta_a / 2), and folds the wave numbers beyond the grid's onto it (aliasing):
 // below a quarter of the grid's wave numbers the window costs less than 20 % of a spectrum.
 //
 // Spectra are given over shells of |k| (axis 0: shell s holds the wave vectors with
-// (s - 1/2) dk <= |k| < (s + 1/2) dk, dk = 2 pi / max L_a, up to the largest |k| every axis
-// reaches) and along each axis (axis 1, 2, 3: k = 2 pi n / L_a along x, y, z). The wave numbers
+// (s - 1/2) dk <= |k| < (s + 1/2) dk, dk = 2 pi / max L_a over the axes of more than two cells, up
+// to the largest |k| every such axis reaches) and along each axis (axis 1, 2, 3: k = 2 pi n / L_a along x, y, z). The wave numbers
 // |n_a| = G_a/2 of an even grid (the Nyquist planes, real and without a direction) are left out.
 // A shell's n_modes counts k and -k apart: they are one mode of the real fields, so the independent
 // modes are half of it.
 //
 // modes.csv: for the lowest `modes` wave numbers n = 1, 2, ... along each axis a (k = 2 pi n / L_a)
 // the amplitudes (2/N) sum_j q_j exp(-i k.x_j) with the cell centre for x_j, of q = 1 (density
-// relative to its mean), of the velocity (2/M) sum_j m_j v_j exp(-i k.x_j) (the flow's amplitude),
-// and of (e_j - e) / (3T/2) (the kinetic temperature's, relative): a wave A sin(k.x) has the
-// amplitude -i A (A cos(k.x): A).
+// relative to its mean), of the velocity (2/M) sum_j m_j c_j exp(-i k.x_j) (the flow's amplitude),
+// and of (e_j - e_s(j)) / e, e the mean of e_j (the kinetic temperature's, relative): a wave
+// A sin(k.x) sampled at the cell centres has the amplitude -i A (A cos(k.x): A); grains spread
+// through their cells see it through the window, -i A sinc(k Delta / 2).
 //
 // The transforms: FFTW's real-to-complex 3-D transform of each field, planned once per run
 // (FFTW_ESTIMATE: the same plan, and so the same bits, in every run) for one thread; the five
