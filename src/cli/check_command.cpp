@@ -1,5 +1,6 @@
 // roughgas check CASE.toml [--set KEY=VALUE]... : parse and validate only.
 #include "commands.hpp"
+#include "linear_stability.hpp"
 
 #include "roughgas/io/case_file.hpp"
 #include "roughgas/io/run_spec_from_case.hpp"
@@ -8,6 +9,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 
 namespace roughgas::cli {
 namespace {
@@ -21,9 +23,12 @@ struct CheckOptions {
 
 int run_check(const CheckOptions& o) {
     const CaseConfig cfg = load_case(o.case_file, o.sets, o.use); // throws InputError: exit 2
-    if (o.use == CaseUse::run && cfg.initial && !cfg.initial->from.empty()) { // its state files too
+    std::optional<std::string> stability;
+    if (o.use == CaseUse::run) {
         RunSpec spec = run_spec_from_case(cfg);
-        attach_initial_state(spec, cfg, o.case_file);
+        if (cfg.initial && !cfg.initial->from.empty()) // its state files too
+            attach_initial_state(spec, cfg, o.case_file);
+        stability = linear_stability_note(spec);
     }
     for (const std::string& u : cfg.unused)
         std::cerr << o.case_file << ": warning: " << u << '\n';
@@ -31,6 +36,8 @@ int run_check(const CheckOptions& o) {
         std::cout << emit_case(cfg);
     } else {
         std::cout << o.case_file << ": valid\n";
+        if (stability)
+            std::cout << o.case_file << ": " << *stability << '\n';
     }
     return exit_ok;
 }

@@ -156,6 +156,30 @@ TEST(BoxCli, SpectraAndModesOfATransverseWave) {
     EXPECT_FALSE(fs::exists(dir / "none" / "modes.csv"));
 }
 
+// roughgas check of a cooling box states the shear mode's linear stability: for smooth grains
+// (alpha = 0.8) the Navier-Stokes critical length, 18.8 mean free paths (observables/shear_mode.hpp),
+// against the box's longest side, longer (60 of them) or shorter (17.8); for rough grains that there
+// is no such statement.
+TEST(BoxCli, CheckStatesTheShearModesStability) {
+    const test::ScratchDir dir;
+    const std::string c = std::string(ROUGHGAS_SOURCE_DIR) + "/cases/box_shear_mode.toml";
+    const test::CommandResult rough = test::run_roughgas("check '" + c + "'", dir);
+    ASSERT_EQ(rough.status, 0) << rough.err;
+    EXPECT_NE(rough.out.find("given for smooth grains (collision.beta = -1) of one species"), std::string::npos)
+        << rough.out;
+    const test::CommandResult unstable = test::run_roughgas("check '" + c + "' --set collision.beta=-1", dir);
+    EXPECT_NE(unstable.out.find("critical length 18.8 mean free paths; the box's longest side, 59.98 of them, is "
+                                "longer: linearly unstable: its longest transverse wave grows"),
+              std::string::npos)
+        << unstable.out;
+    const test::CommandResult stable = test::run_roughgas(
+        "check '" + c + "' --set collision.beta=-1 --set 'domain.size=[200.0,11.25,11.25]' --set 'domain.cells=[60,3,3]'",
+        dir);
+    EXPECT_NE(stable.out.find("17.77 of them, is shorter: linearly stable: its longest transverse wave decays"),
+              std::string::npos)
+        << stable.out;
+}
+
 // Elastic smooth grains between two diffuse walls at their temperature (normal to y): walls.csv has
 // a row per moments.csv row, the same bytes for one and two threads; averaged over the rows after
 // the first, each wall's pressure P_yy is n T_w and its hit rate n sqrt(T_w/(2 pi m)) (5 standard

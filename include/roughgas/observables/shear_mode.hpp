@@ -1,0 +1,41 @@
+#pragma once
+// The shear (transverse) mode of the homogeneous cooling state of smooth inelastic hard spheres in
+// Navier-Stokes hydrodynamics: dilute gas, constant normal restitution alpha, the transport
+// coefficients of the first Sonine approximation with the fourth cumulant a2 (Brey, Dufty, Kim &
+// Santos 1998; Garzo & Dufty 1999; a2 of van Noije & Ernst 1998).
+//
+// A transverse wave u_y = u_k sin(k x), u_k much smaller than the thermal speed, decouples from the
+// density and temperature: du_k/dt = -eta k^2 u_k/(n m) while the gas cools as dT/dt = -zeta T. Per
+// collision per particle s (ds/dt = nu_c, the true collision frequency per grain), the wave's
+// amplitude against the thermal speed changes at the rate
+//   gamma(k) = d ln(u_k / sqrt(T/m)) / ds = [zeta/2 - eta k^2/(n m)] / nu_c
+//            = [(2/5) zeta* - (5 pi/32) eta* (k lambda)^2] / (1 - a2/16),
+// independent of T: it grows (the gas leaves the homogeneous state by shear vortices) when k is
+// below k_c, (k_c lambda)^2 = (64/(25 pi)) zeta*/eta*, i.e. in a periodic box longer than
+// L_c = 2 pi/k_c = (5 pi^(3/2)/4) sqrt(eta*/zeta*) lambda. Here lambda = 1/(sqrt(2) pi n sigma^2),
+// nu_M = 4 n sigma^2 sqrt(pi T/m), nu_c = nu_M (1 - a2/16), and
+//   a2    = 16 (1 - alpha)(1 - 2 alpha^2) / (81 - 17 alpha + 30 alpha^2 (1 - alpha)),
+//   zeta* = zeta/nu_0 = (5/12)(1 - alpha^2)(1 + 3 a2/16),          nu_0 = n T/eta_0 = (4/5) nu_M,
+//   eta*  = eta/eta_0 = 1/(nu_eta* - zeta*/2),  nu_eta* = (3 - alpha)(1 + alpha)/4 (1 - a2/32),
+// eta_0 = (5/(16 sigma^2)) sqrt(m T/pi). At alpha = 1: a2 = zeta* = 0, eta* = 1 (the first Sonine
+// elastic viscosity, 1.6 % below the converged Chapman-Enskog 1.016034), and no finite L_c; as
+// alpha -> 1, L_c ~ 10.78 lambda / sqrt(1 - alpha^2).
+namespace roughgas {
+
+struct ShearModeTheory {
+    double alpha = 1;
+    double a2 = 0;        // fourth cumulant of the cooling state
+    double zeta_star = 0; // cooling rate over nu_0
+    double eta_star = 1;  // shear viscosity over eta_0
+    // gamma(k) = growth - damping (k lambda)^2, per collision per particle.
+    double growth = 0, damping = 0;
+    double critical_length = 0; // L_c / lambda (infinite at alpha = 1)
+};
+
+// The theory above for 0 < alpha <= 1.
+ShearModeTheory smooth_shear_mode(double alpha);
+
+// gamma(k) per collision per particle, for k lambda = `k_lambda`.
+double shear_mode_rate(const ShearModeTheory& t, double k_lambda);
+
+} // namespace roughgas

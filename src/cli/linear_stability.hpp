@@ -1,0 +1,15 @@
+#pragma once
+// What `roughgas check` says of a cooling box's linear stability (observables/shear_mode.hpp).
+#include "roughgas/dsmc/run_spec.hpp"
+
+#include <optional>
+#include <string>
+
+namespace roughgas::cli {
+
+// For a cooling box without walls: the shear mode's critical length against the box's longest side
+// (smooth grains of one species with constant alpha), or why there is no such statement for it;
+// nothing for other runs.
+std::optional<std::string> linear_stability_note(const RunSpec& spec);
+
+} // namespace roughgas::cli

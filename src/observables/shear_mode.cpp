@@ -1,0 +1,34 @@
+// The shear mode of the homogeneous cooling state: observables/shear_mode.hpp.
+#include "roughgas/observables/shear_mode.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+namespace roughgas {
+
+ShearModeTheory smooth_shear_mode(double alpha) {
+    if (!(alpha > 0 && alpha <= 1))
+        throw std::invalid_argument("smooth_shear_mode: alpha must be in (0, 1]");
+    constexpr double pi = std::numbers::pi;
+    ShearModeTheory t;
+    t.alpha = alpha;
+    t.a2 = 16 * (1 - alpha) * (1 - 2 * alpha * alpha) / (81 - 17 * alpha + 30 * alpha * alpha * (1 - alpha));
+    t.zeta_star = 5.0 / 12.0 * (1 - alpha * alpha) * (1 + 3 * t.a2 / 16);
+    const double nu_eta = (3 - alpha) * (1 + alpha) / 4 * (1 - t.a2 / 32);
+    t.eta_star = 1 / (nu_eta - t.zeta_star / 2);
+    // zeta/(2 nu_c) with zeta = zeta* nu_0 = (4/5) zeta* nu_M; eta k^2/(n m nu_M) = (5 pi/32) eta* (k lambda)^2.
+    const double per_collision = 1 / (1 - t.a2 / 16);
+    t.growth = 0.4 * t.zeta_star * per_collision;
+    t.damping = 5 * pi / 32 * t.eta_star * per_collision;
+    t.critical_length = t.zeta_star > 0 ? 2 * pi / std::sqrt(t.growth / t.damping)
+                                        : std::numeric_limits<double>::infinity();
+    return t;
+}
+
+double shear_mode_rate(const ShearModeTheory& t, double k_lambda) {
+    return t.growth - t.damping * k_lambda * k_lambda;
+}
+
+} // namespace roughgas

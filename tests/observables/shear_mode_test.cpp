@@ -1,0 +1,61 @@
+// The Navier-Stokes shear mode of the homogeneous cooling state (observables/shear_mode.hpp): the
+// elastic and quasi-elastic limits exactly, and the coefficients against an independent evaluation.
+#include "roughgas/observables/shear_mode.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace roughgas {
+namespace {
+
+// Elastic grains: no cooling, the first Sonine viscosity, no instability.
+TEST(ShearMode, ElasticGasHasNoCriticalLength) {
+    const ShearModeTheory t = smooth_shear_mode(1.0);
+    EXPECT_EQ(t.a2, 0.0);
+    EXPECT_EQ(t.zeta_star, 0.0);
+    EXPECT_EQ(t.eta_star, 1.0);
+    EXPECT_EQ(t.growth, 0.0);
+    EXPECT_TRUE(std::isinf(t.critical_length));
+    // A wave decays at the viscous rate eta_0 k^2/(n m) per collision frequency nu_M:
+    // (5 pi/32) (k lambda)^2.
+    EXPECT_NEAR(shear_mode_rate(t, 0.2), -5 * std::numbers::pi / 32 * 0.04, 1e-15);
+    EXPECT_THROW(smooth_shear_mode(0.0), std::invalid_argument);
+    EXPECT_THROW(smooth_shear_mode(1.1), std::invalid_argument);
+}
+
+// As alpha -> 1: a2 -> 0, eta* -> 1, zeta* -> (5/12)(1 - alpha^2), so that
+// L_c sqrt(1 - alpha^2) -> (5 pi^(3/2)/4) sqrt(12/5) lambda = 10.78 lambda; the growth rate at
+// k -> 0 is half the cooling rate per collision, (1 - alpha^2)/6.
+TEST(ShearMode, QuasiElasticLimit) {
+    const double alpha = 0.99999, e = 1 - alpha * alpha;
+    const ShearModeTheory t = smooth_shear_mode(alpha);
+    const double limit = 5 * std::pow(std::numbers::pi, 1.5) / 4 * std::sqrt(12.0 / 5);
+    EXPECT_NEAR(t.critical_length * std::sqrt(e) / limit, 1.0, 1e-4);
+    EXPECT_NEAR(t.growth / (e / 6), 1.0, 1e-4);
+    EXPECT_NEAR(shear_mode_rate(t, 2 * std::numbers::pi / t.critical_length), 0.0, 1e-15);
+}
+
+// Against a separate evaluation of the same formulas (a Python script; its cooling rate and a2 also
+// re-derived there from exact collision integrals of the first Sonine distribution): a2, eta*,
+// the growth rate at k -> 0 per collision and L_c / lambda, to the 5 digits it printed.
+TEST(ShearMode, CoefficientsOfTheFirstSonineTheory) {
+    const struct {
+        double alpha, a2, eta_star, growth, critical_length;
+    } rows[] = {
+        {0.95, -0.00973, 1.02103, 0.01621, 34.926}, {0.90, -0.01456, 1.04332, 0.03155, 25.303},
+        {0.80, -0.01258, 1.09222, 0.05981, 18.804}, {0.70, +0.00131, 1.14786, 0.08503, 16.175},
+        {0.60, +0.02386, 1.21160, 0.10730, 14.803}, {0.50, +0.05246, 1.28506, 0.12664, 14.046},
+    };
+    for (const auto& r : rows) {
+        const ShearModeTheory t = smooth_shear_mode(r.alpha);
+        EXPECT_NEAR(t.a2, r.a2, 6e-6) << r.alpha;
+        EXPECT_NEAR(t.eta_star, r.eta_star, 6e-6) << r.alpha;
+        EXPECT_NEAR(t.growth, r.growth, 6e-6) << r.alpha;
+        EXPECT_NEAR(t.critical_length, r.critical_length, 6e-4) << r.alpha;
+    }
+}
+
+} // namespace
+} // namespace roughgas
