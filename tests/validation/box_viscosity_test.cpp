@@ -4,6 +4,7 @@
 // by the DSMC's cell-size error 16/(45 pi) (dx/lambda)^2 (Alexander, Garcia & Alder 1998).
 // CPU: about 40 s (Release; 4 replicas of 2e5 grains to 80 collisions per particle).
 #include "../dsmc/test_stats.hpp"
+#include "../dsmc/run_test_support.hpp"
 #include "roughgas/dsmc/run.hpp"
 
 #include <gtest/gtest.h>
@@ -46,14 +47,7 @@ RunSpec wave_run(std::int64_t particles, const DomainSpec& domain, std::uint64_t
 // m u_wave^2 / 4 per grain, (m/6) u_wave^2 of T; its mean over the rows (the gas warms by the
 // dissipated wave) sets eta_0 ~ sqrt(T).
 std::vector<double> decay_over_chapman_enskog(const RunSpec& spec, int replicas) {
-    const std::vector<Column> cols = dsmc_columns(spec);
-    const auto col = [&](const char* name) {
-        for (std::size_t j = 0; j < cols.size(); ++j)
-            if (cols[j].name == name)
-                return j;
-        ADD_FAILURE() << name;
-        return std::size_t{0};
-    };
+    const auto col = [&](const char* name) { return test::column(spec, name); };
     const std::size_t jt = col("t"), ju = col("u_wave"), jT = col("T_tr");
     const double k = 2 * std::numbers::pi / spec.domain->size[0];
     std::vector<double> ratio;

@@ -5,6 +5,7 @@
 // particle.
 // CPU: about 30 s (Release; two boxes, 8 replicas of 1e5 grains to 40 collisions per particle).
 #include "../dsmc/test_stats.hpp"
+#include "../dsmc/run_test_support.hpp"
 #include "roughgas/dsmc/run.hpp"
 #include "roughgas/observables/shear_mode.hpp"
 
@@ -48,14 +49,7 @@ RunSpec wave_run(double L) {
 // sampling noise and below a third of the thermal speed). T is the temperature about the flow:
 // T_tr about the box's mean velocity holds the wave's (m/6) u_wave^2.
 std::vector<double> growth_rates(const RunSpec& spec, int replicas) {
-    const std::vector<Column> cols = dsmc_columns(spec);
-    const auto col = [&](const char* name) {
-        for (std::size_t j = 0; j < cols.size(); ++j)
-            if (cols[j].name == name)
-                return j;
-        ADD_FAILURE() << name;
-        return std::size_t{0};
-    };
+    const auto col = [&](const char* name) { return test::column(spec, name); };
     const std::size_t js = col("coll_per_particle"), ju = col("u_wave"), jT = col("T_tr");
     std::vector<double> rates;
     for (int r = 0; r < replicas; ++r) {
