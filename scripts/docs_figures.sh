@@ -9,6 +9,7 @@
 #   docs/box_*.png             roughgas run cases/box_{couette,fourier,thermal_walls,heated_bed,usf,shear_mode}.toml,
 #                              plot_profiles.py (the shear mode's last block: --from 60)
 #   docs/box_shear_mode_spectra.png  the same run of box_shear_mode.toml, plot_spectra.py
+#   docs/box_cooling_slab_spectra.png  roughgas run cases/box_cooling_slab.toml, plot_spectra.py --times 5
 # docs/accuracy.png is the work-precision study of docs/accuracy.md (scripts/bench_accuracy.py,
 # minutes of CPU) and docs/transport_errors.png the study of docs/validation.md
 # (scripts/transport_errors.py --collisions 3000 --plot docs/transport_errors.png, ten minutes on
@@ -57,5 +58,7 @@ for c in couette fourier thermal_walls heated_bed usf shear_mode; do
   fi
   cp "$work/box_$c/profiles.png" "$root/docs/box_$c.png"
 done
+"$roughgas" run "$root/cases/box_cooling_slab.toml" --out "$work/box_cooling_slab" --force --quiet
+"$py" "$root/scripts/plot_spectra.py" "$work/box_cooling_slab" --times 5 --out "$root/docs/box_cooling_slab_spectra.png"
 
-echo "docs_figures: redrew docs/ice_normal.png, fig2c_tangential.png, hcs_mixture.png, usf_rough.png, usf_sweep_alpha.png, box_*.png (with box_shear_mode_spectra.png)"
+echo "docs_figures: redrew docs/ice_normal.png, fig2c_tangential.png, hcs_mixture.png, usf_rough.png, usf_sweep_alpha.png, box_*.png (with the spectra of box_shear_mode and box_cooling_slab)"
