@@ -132,12 +132,15 @@ std::vector<std::string> steady_monitored(const std::vector<std::string>& names,
                 out.push_back(w);
         return out;
     }
-    // Smooth grains: T_rot the same in every row (no collision changes a spin).
+    // Smooth grains: T_rot the same in every row (no collision changes a spin), to round-off (a box
+    // sums the spins in the order its sort by cell leaves them).
     bool spins_change = true;
     if (rows && !rows->empty() && has("T_rot")) {
         const auto k = static_cast<std::size_t>(std::find(names.begin(), names.end(), "T_rot") - names.begin());
-        spins_change = std::any_of(rows->begin(), rows->end(),
-                                   [&](const std::vector<double>& r) { return r[k] != rows->front()[k]; });
+        const double first = rows->front()[k];
+        spins_change = std::any_of(rows->begin(), rows->end(), [&](const std::vector<double>& r) {
+            return !(std::abs(r[k] - first) <= 1e-12 * std::abs(first));
+        });
     }
     const auto rotational = [](const std::string& n) {
         return n.rfind("theta", 0) == 0 || n.rfind("a02", 0) == 0 || n.rfind("a11", 0) == 0 ||

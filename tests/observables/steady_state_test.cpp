@@ -100,3 +100,26 @@ TEST(SteadyState, DriftIsNotSteady) {
 
 } // namespace
 } // namespace roughgas
+
+namespace roughgas {
+namespace {
+
+// What the scaled-state detector of a cooling run watches: with spins that change (rough grains)
+// theta and the rotational cumulants too; with smooth grains, whose T_rot stays the same in every
+// row up to the round-off of summing the spins in another order (a box's sort), only the
+// translational ones.
+TEST(SteadyMonitored, SmoothGrainsLeaveOutTheRotationalRatios) {
+    const std::vector<std::string> names = {"t", "coll_per_particle", "T_tr", "T_rot", "theta", "a20", "a02", "a11"};
+    const std::vector<std::vector<double>> smooth = {{0, 0, 1, 0.3, 0.3, 0, 0, 0},
+                                                     {1, 1, 0.9, 0.3 * (1 + 2e-16), 0.33, 0.01, 0, 0},
+                                                     {2, 2, 0.8, 0.3 * (1 - 3e-16), 0.37, 0.01, 0, 0}};
+    std::vector<std::vector<double>> rough = smooth;
+    rough[2][3] = 0.29;
+    EXPECT_EQ(steady_monitored(names, false, &smooth), std::vector<std::string>{"a20"});
+    const std::vector<std::string> all = steady_monitored(names, false, &rough);
+    EXPECT_NE(std::find(all.begin(), all.end(), "theta"), all.end());
+    EXPECT_NE(std::find(all.begin(), all.end(), "a02"), all.end());
+}
+
+} // namespace
+} // namespace roughgas
