@@ -7,9 +7,9 @@
 
 namespace roughgas::cli {
 
-// For a cooling box without walls: the shear mode's critical length against the box's longest side
-// (smooth grains of one species with constant alpha), or why there is no such statement for it;
-// nothing for other runs.
+// For a cooling box without walls or gravity: the shear mode's critical length against the box's
+// longest side (grains of one species with constant alpha and beta), or why there is no such
+// statement for it; nothing for other runs.
 std::optional<std::string> linear_stability_note(const RunSpec& spec);
 
 } // namespace roughgas::cli

@@ -1,6 +1,8 @@
 // The shear mode of the homogeneous cooling state: observables/shear_mode.hpp.
 #include "roughgas/observables/shear_mode.hpp"
 
+#include "roughgas/observables/theory.hpp"
+
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -9,8 +11,8 @@
 namespace roughgas {
 
 ShearModeTheory smooth_shear_mode(double alpha) {
-    if (!(alpha > 0 && alpha <= 1))
-        throw std::invalid_argument("smooth_shear_mode: alpha must be in (0, 1]");
+    if (!(alpha >= 0 && alpha <= 1))
+        throw std::invalid_argument("smooth_shear_mode: alpha must be in [0, 1]");
     constexpr double pi = std::numbers::pi;
     ShearModeTheory t;
     t.alpha = alpha;
@@ -22,6 +24,29 @@ ShearModeTheory smooth_shear_mode(double alpha) {
     const double per_collision = 1 / (1 - t.a2 / 16);
     t.growth = 0.4 * t.zeta_star * per_collision;
     t.damping = 5 * pi / 32 * t.eta_star * per_collision;
+    t.critical_length = t.zeta_star > 0 ? 2 * pi / std::sqrt(t.growth / t.damping)
+                                        : std::numeric_limits<double>::infinity();
+    return t;
+}
+
+ShearModeTheory rough_shear_mode(double alpha, double beta, double q) {
+    if (beta == -1)
+        return smooth_shear_mode(alpha);
+    if (!(alpha >= 0 && alpha <= 1 && beta > -1 && beta <= 1 && q > 0))
+        throw std::invalid_argument("rough_shear_mode: needs 0 <= alpha <= 1, -1 <= beta <= 1, q > 0");
+    constexpr double pi = std::numbers::pi;
+    ShearModeTheory t;
+    t.alpha = alpha;
+    t.beta = beta;
+    t.theta = theta_fixed_point(alpha, beta, q);
+    const double at = (1 + alpha) / 2, bt = q * (1 + beta) / (2 * (1 + q));
+    t.zeta_star = 5.0 / 12.0 * (1 - alpha * alpha + 4 * bt * (1 - bt) - 4 * bt * bt * t.theta / q);
+    if (std::abs(t.zeta_star) < 1e-14) // elastic perfectly rough grains: no cooling (round-off aside)
+        t.zeta_star = 0;
+    const double nu_eta = (at + bt) * (2 - at - bt) + bt * bt * t.theta / (6 * q);
+    t.eta_star = 1 / (nu_eta - t.zeta_star / 2);
+    t.growth = 0.4 * t.zeta_star;
+    t.damping = 5 * pi / 32 * t.eta_star;
     t.critical_length = t.zeta_star > 0 ? 2 * pi / std::sqrt(t.growth / t.damping)
                                         : std::numeric_limits<double>::infinity();
     return t;

@@ -156,17 +156,27 @@ TEST(BoxCli, SpectraAndModesOfATransverseWave) {
     EXPECT_FALSE(fs::exists(dir / "none" / "modes.csv"));
 }
 
-// roughgas check of a cooling box states the shear mode's linear stability: for smooth grains
-// (alpha = 0.8) the Navier-Stokes critical length, 18.8 mean free paths (observables/shear_mode.hpp),
-// against the box's longest side, longer (60 of them) or shorter (17.8); for rough grains that there
-// is no such statement.
+// roughgas check of a cooling box states the shear mode's linear stability (observables/shear_mode.hpp):
+// for the case's rough grains (alpha = 0.8, beta = 0.4) and for smooth ones (beta = -1) the
+// Navier-Stokes critical length, 14.83 and 18.8 mean free paths, against the box's longest side,
+// longer (60 of them) or shorter (17.8); for a mixture, that there is no such statement.
 TEST(BoxCli, CheckStatesTheShearModesStability) {
     const test::ScratchDir dir;
     const std::string c = std::string(ROUGHGAS_SOURCE_DIR) + "/cases/box_shear_mode.toml";
     const test::CommandResult rough = test::run_roughgas("check '" + c + "'", dir);
     ASSERT_EQ(rough.status, 0) << rough.err;
-    EXPECT_NE(rough.out.find("given for smooth grains (collision.beta = -1) of one species"), std::string::npos)
+    EXPECT_NE(rough.out.find("rough grains, alpha = 0.8, beta = 0.4, in their cooling state theta = 1): critical "
+                             "length 14.83 mean free paths; the box's longest side, 59.98 of them, is longer"),
+              std::string::npos)
         << rough.out;
+    const fs::path mix = dir.write(
+        "mix.toml", replaced(test::read_file(c), "[[species]]\nname = \"grain\"\nmass = 1.0\nradius = 0.5\n",
+                             "[[species]]\nname = \"a\"\nmass = 1.0\nradius = 0.5\nfraction = 0.5\n\n[[species]]\nname = \"b\"\nfraction = 0.5\n"
+                             "mass = 2.0\nradius = 0.5\n"));
+    const test::CommandResult mixture = test::run_roughgas("check " + q(mix), dir);
+    ASSERT_EQ(mixture.status, 0) << mixture.err;
+    EXPECT_NE(mixture.out.find("given for grains of one species with constant alpha and beta only"), std::string::npos)
+        << mixture.out;
     const test::CommandResult unstable = test::run_roughgas("check '" + c + "' --set collision.beta=-1", dir);
     EXPECT_NE(unstable.out.find("critical length 18.8 mean free paths; the box's longest side, 59.98 of them, is "
                                 "longer: linearly unstable: its longest transverse wave grows"),
@@ -175,6 +185,7 @@ TEST(BoxCli, CheckStatesTheShearModesStability) {
     const test::CommandResult stable = test::run_roughgas(
         "check '" + c + "' --set collision.beta=-1 --set 'domain.size=[200.0,11.25,11.25]' --set 'domain.cells=[60,3,3]'",
         dir);
+    EXPECT_EQ(stable.status, 0) << stable.err;
     EXPECT_NE(stable.out.find("17.77 of them, is shorter: linearly stable: its longest transverse wave decays"),
               std::string::npos)
         << stable.out;

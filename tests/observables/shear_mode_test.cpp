@@ -2,6 +2,8 @@
 // elastic and quasi-elastic limits exactly, and the coefficients against an independent evaluation.
 #include "roughgas/observables/shear_mode.hpp"
 
+#include "roughgas/observables/theory.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -21,7 +23,8 @@ TEST(ShearMode, ElasticGasHasNoCriticalLength) {
     // A wave decays at the viscous rate eta_0 k^2/(n m) per collision frequency nu_M:
     // (5 pi/32) (k lambda)^2.
     EXPECT_NEAR(shear_mode_rate(t, 0.2), -5 * std::numbers::pi / 32 * 0.04, 1e-15);
-    EXPECT_THROW(smooth_shear_mode(0.0), std::invalid_argument);
+    EXPECT_THROW(smooth_shear_mode(-0.1), std::invalid_argument);
+    EXPECT_TRUE(std::isfinite(smooth_shear_mode(0.0).critical_length)); // a valid case: alpha = 0
     EXPECT_THROW(smooth_shear_mode(1.1), std::invalid_argument);
 }
 
@@ -55,6 +58,46 @@ TEST(ShearMode, CoefficientsOfTheFirstSonineTheory) {
         EXPECT_NEAR(t.growth, r.growth, 6e-6) << r.alpha;
         EXPECT_NEAR(t.critical_length, r.critical_length, 6e-4) << r.alpha;
     }
+}
+
+// Rough grains: beta = -1 is the smooth theory; elastic perfectly rough grains do not cool and have
+// Pidduck's viscosity 6 (1 + q)^2/(6 + 13 q) eta_0; theta is the cooling state's (Maxwellian
+// approximation, observables/theory.hpp).
+TEST(ShearMode, RoughGrainsLimits) {
+    const ShearModeTheory smooth = smooth_shear_mode(0.9), same = rough_shear_mode(0.9, -1.0, 0.4);
+    EXPECT_EQ(same.critical_length, smooth.critical_length);
+    EXPECT_EQ(same.a2, smooth.a2);
+    const ShearModeTheory pidduck = rough_shear_mode(1.0, 1.0, 0.4);
+    EXPECT_EQ(pidduck.zeta_star, 0.0);
+    EXPECT_TRUE(std::isinf(pidduck.critical_length));
+    EXPECT_NEAR(pidduck.eta_star, 6 * 1.4 * 1.4 / (6 + 13 * 0.4), 1e-14);
+    EXPECT_NEAR(pidduck.theta, 1.0, 1e-14);
+    EXPECT_NEAR(rough_shear_mode(0.9, 0.5, 0.4).theta, theta_fixed_point(0.9, 0.5, 0.4), 0.0);
+    EXPECT_THROW(rough_shear_mode(0.9, 1.5, 0.4), std::invalid_argument);
+}
+
+// Against the separate evaluation (a Python script whose cooling rates and viscosity were checked
+// there by Monte Carlo integration of the collision integrals): L_c / lambda and the growth rate at
+// k -> 0 to the 4 decimals it printed, for q = 2/5; and the "dual role" of roughness at alpha = 0.9:
+// medium roughness (beta = 0) more unstable than smooth grains, nearly perfect roughness less.
+TEST(ShearMode, RoughGrainsCoefficients) {
+    const struct {
+        double alpha, beta, theta, eta_star, growth, critical_length;
+    } rows[] = {
+        {0.9, -0.5, 0.3426, 1.10004, 0.07297, 17.092}, {0.9, 0.0, 0.5738, 1.13762, 0.09378, 15.332},
+        {0.9, 1.0, 1.1231, 1.03735, 0.01492, 36.712},  {0.8, 0.5, 1.0429, 1.12189, 0.09243, 15.337},
+        {0.7, 0.9, 1.3323, 1.04210, 0.05324, 19.475},  {0.5, -0.5, 8.5174, 1.15576, 0.09679, 15.212},
+    };
+    for (const auto& r : rows) {
+        const ShearModeTheory t = rough_shear_mode(r.alpha, r.beta, 0.4);
+        EXPECT_NEAR(t.theta, r.theta, 6e-5) << r.alpha << " " << r.beta;
+        EXPECT_NEAR(t.eta_star, r.eta_star, 6e-6) << r.alpha << " " << r.beta;
+        EXPECT_NEAR(t.growth, r.growth, 6e-6) << r.alpha << " " << r.beta;
+        EXPECT_NEAR(t.critical_length, r.critical_length, 6e-4) << r.alpha << " " << r.beta;
+    }
+    const double smooth = smooth_shear_mode(0.9).critical_length;
+    EXPECT_LT(rough_shear_mode(0.9, 0.0, 0.4).critical_length, 0.7 * smooth);
+    EXPECT_GT(rough_shear_mode(0.9, 1.0, 0.4).critical_length, 1.4 * smooth);
 }
 
 } // namespace

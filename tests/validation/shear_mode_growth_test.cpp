@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 namespace roughgas {
@@ -46,7 +47,7 @@ RunSpec wave_run(double L) {
 
 // Each replica's gamma: the least-squares slope of ln(u_wave / sqrt(T/m)) over coll_per_particle
 // from 5 to 40 (after the transient of the Maxwellian start, while the wave stays well above the
-// sampling noise and below a third of the thermal speed). T is the temperature about the flow:
+// sampling noise and below half the thermal speed). T is the temperature about the flow:
 // T_tr about the box's mean velocity holds the wave's (m/6) u_wave^2.
 std::vector<double> growth_rates(const RunSpec& spec, int replicas) {
     const auto col = [&](const char* name) { return test::column(spec, name); };
@@ -73,16 +74,18 @@ std::vector<double> growth_rates(const RunSpec& spec, int replicas) {
 // The prediction for the DSMC's gas: the viscosity raised by its cell-size and time-step laws,
 // 16/(45 pi) (dx/lambda)^2 + 16/(75 pi) (0.2 sqrt(pi)/2)^2 = 0.9 % (docs/validation.md). Allowed
 // beyond 4 standard errors of the replicas' mean: 3 % of the damping term (the first Sonine
-// viscosity is 1.6 % below the converged one at alpha = 1, and the Burnett order of a wave with
-// k lambda = 0.31 lowers the damping by a few per cent: measured 1.6 % there, 2.3 % at 0.41, none
-// at 0.2) and 1 % of the growth term (the first Sonine cooling rate). Measured: -0.0174 +- 0.0006
-// against -0.0182 in the box of 0.8 L_c, +0.0190 +- 0.0002 against +0.0191 in the box of 1.6 L_c.
-// A gas that did not cool, a viscosity off by 15 % or a cooling rate off by 5 % fails the checks.
+// viscosity is 1.6 % below the converged one at alpha = 1; the order beyond Navier-Stokes at
+// k lambda = 0.31 is not resolved by these runs, 1.6 +- 1.1 % less damping) and 1 % of the growth
+// term (the first Sonine cooling rate). Measured: -0.0174 +- 0.0006 against -0.0182 in the box of
+// 0.8 L_c, +0.0190 +- 0.0002 against +0.0191 in the box of 1.6 L_c. A gas that did not cool, a
+// viscosity off by 15 % or a cooling rate off by 10 % fails the checks.
 TEST(ShearModeGrowth, TransverseWaveDecaysBelowAndGrowsAboveTheCriticalLength) {
     const ShearModeTheory t = smooth_shear_mode(alpha);
     const double laws = 16.0 / (45.0 * std::numbers::pi) / 16 +
                         16.0 / (75.0 * std::numbers::pi) * std::pow(0.2 * std::sqrt(std::numbers::pi) / 2, 2);
-    for (const double factor : {0.8, 1.6}) {
+    // The replicas resolve the rate to (standard error at most) 2.4 % of the damping at 0.8 L_c and
+    // 2.6 % of the rate at 1.6 L_c: about twice the errors reached.
+    for (const auto [factor, resolution] : {std::pair{0.8, 0.0012}, std::pair{1.6, 0.0005}}) {
         const double L = factor * t.critical_length * lambda, k_lambda = 2 * std::numbers::pi * lambda / L;
         const double damping = t.damping * (1 + laws) * k_lambda * k_lambda, expected = t.growth - damping;
         const test::MeanErr g = test::mean_err(growth_rates(wave_run(L), 8));
@@ -91,7 +94,7 @@ TEST(ShearModeGrowth, TransverseWaveDecaysBelowAndGrowsAboveTheCriticalLength) {
                     factor, k_lambda, g.mean, g.err, expected);
         EXPECT_EQ(g.mean > 0, factor > 1) << "the wave must decay below L_c and grow above it";
         EXPECT_NEAR(g.mean, expected, 4 * g.err + 0.03 * damping + 0.01 * t.growth) << factor << " L_c";
-        EXPECT_LT(g.err, 0.0008); // resolved to 4 % of the damping at 0.8 L_c, 2 % of the growth at 1.6 L_c
+        EXPECT_LT(g.err, resolution);
     }
 }
 
