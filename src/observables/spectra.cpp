@@ -83,14 +83,16 @@ std::vector<SpectrumBin> spectrum_bins(const SpectraGeometry& g) {
     const int shells = shell_count(g);
     std::vector<double> ksum(static_cast<std::size_t>(shells) + 1, 0.0);
     std::vector<int> count(static_cast<std::size_t>(shells) + 1, 0);
+    // The half spectrum n_z >= 0, as the transforms store it: n_z > 0 stands for -k too.
     for (int i = 0; i < g.grid[0]; ++i)
         for (int j = 0; j < g.grid[1]; ++j)
-            for (int l = 0; l < g.grid[2]; ++l) {
-                const int n[3] = {signed_index(i, g.grid[0]), signed_index(j, g.grid[1]), signed_index(l, g.grid[2])};
+            for (int l = 0; l <= g.grid[2] / 2; ++l) {
+                const int n[3] = {signed_index(i, g.grid[0]), signed_index(j, g.grid[1]), l};
                 const auto [s, k] = shell_of(g, n);
+                const int mirrors = l == 0 ? 1 : 2;
                 if (s > 0) {
-                    ksum[static_cast<std::size_t>(s)] += k;
-                    ++count[static_cast<std::size_t>(s)];
+                    ksum[static_cast<std::size_t>(s)] += mirrors * k;
+                    count[static_cast<std::size_t>(s)] += mirrors;
                 }
             }
     for (int s = 1; s <= shells; ++s)
@@ -240,7 +242,6 @@ std::vector<double> Spectra::compute(const std::vector<Vec3>& x, const std::vect
                    static_cast<std::size_t>(G[2] / 2 + 1) +
                static_cast<std::size_t>(l);
     };
-    const double norm_T = squares;
     // The four spectra at stored wave vector s of wave numbers n.
     const auto spectra_at = [&](std::size_t s, const int n[3], double out[4]) {
         double k[3], k2 = 0;
@@ -257,7 +258,7 @@ std::vector<double> Spectra::compute(const std::vector<Vec3>& x, const std::vect
         out[0] += std::norm(rho) / N;
         out[1] += perp / (2 * M);
         out[2] += std::norm(par) / M;
-        out[3] += std::norm(h) / norm_T;
+        out[3] += std::norm(h) / squares;
     };
 
     std::vector<double> result;
