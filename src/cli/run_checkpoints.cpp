@@ -4,6 +4,7 @@
 #include "roughgas/io/atomic_file.hpp"
 #include "roughgas/io/case_file.hpp"
 #include "roughgas/io/csv_writer.hpp"
+#include "roughgas/io/fields_series.hpp"
 #include "roughgas/io/input_error.hpp"
 #include "roughgas/io/run_spec_from_case.hpp"
 #include "roughgas/io/state_file.hpp"
@@ -143,11 +144,18 @@ void CheckpointWriter::save_replica(std::uint64_t r, std::vector<std::vector<dou
 }
 
 void remove_stale_temporaries(const fs::path& dir) {
-    for (const fs::path& d : {dir, checkpoint_dir(dir), state_dir(dir)}) {
+    std::vector<fs::path> dirs = {dir, checkpoint_dir(dir), state_dir(dir), fields_dir(dir)};
+    std::error_code error;
+    for (const auto& e : fs::directory_iterator(fields_dir(dir), error))
+        if (e.is_directory())
+            dirs.push_back(e.path());
+    for (const fs::path& d : dirs) {
         std::error_code ec;
         for (const auto& e : fs::directory_iterator(d, ec)) {
             const std::string name = e.path().filename().string();
-            bool ours = d != dir && name.find(".bin.tmp.") != std::string::npos;
+            bool ours = d != dir && (name.find(".bin.tmp.") != std::string::npos ||
+                                     name.find(".h5.tmp.") != std::string::npos ||
+                                     name.find(".xmf.tmp.") != std::string::npos);
             for (const char* csv : {"moments", "histograms", "steady", "scaled", "walls", "profiles", "steady_profiles",
                                     "spectra", "modes"})
                 ours |= name.starts_with(std::string(csv) + ".csv.tmp.");

@@ -39,6 +39,7 @@
 #include "roughgas/io/case_file.hpp"
 #include "roughgas/io/checkpoint_file.hpp"
 #include "roughgas/io/csv_writer.hpp"
+#include "roughgas/io/fields_series.hpp"
 #include "roughgas/io/histograms_csv.hpp"
 #include "roughgas/io/moments_csv.hpp"
 #include "roughgas/io/run_spec_from_case.hpp"
@@ -140,7 +141,7 @@ std::pair<std::uint64_t, std::uint64_t> replica_range(const std::string& text, s
 // Never overwrite earlier results by accident: that is an input error, reported before any work.
 // A checkpoint of an earlier run counts too: it is continued with --resume, or replaced with --force.
 void check_output_dir(const fs::path& dir, bool force, bool histograms, bool shear, bool walls, bool box,
-                      bool spectra, bool modes) {
+                      bool spectra, bool modes, bool fields) {
     if (fs::exists(dir) && !fs::is_directory(dir))
         throw InputError(dir.string(), "--out", "--out " + dir.string() + ": exists and is not a directory");
     if (force)
@@ -155,6 +156,10 @@ void check_output_dir(const fs::path& dir, bool force, bool histograms, bool she
         throw InputError(dir.string(), "--out",
                          fmt::format("--out {}: {} exists (use --force to overwrite)", dir.string(),
                                      state_dir(dir).string()));
+    if (fields && fs::exists(fields_dir(dir)))
+        throw InputError(dir.string(), "--out",
+                         fmt::format("--out {}: {} exists (use --force to overwrite)", dir.string(),
+                                     fields_dir(dir).string()));
     for (const char* file :
          {output_file, histograms_file, steady_file, scaled_file, walls_file, profiles_file, steady_profiles_file,
           spectra_file, modes_file}) {
@@ -199,7 +204,8 @@ RunSetup new_run(const RunOptions& o, bool root) {
         s.lock.lock_if_exists(s.dir); // before its files are checked: another run may be writing them
         check_output_dir(s.dir, o.force, s.cfg.run.histogram_every > 0, driven(s.cfg),
                          s.cfg.domain && s.cfg.domain->has_walls(), s.cfg.domain.has_value(),
-                         s.cfg.domain && s.cfg.spectra, s.cfg.domain && s.cfg.spectra && s.cfg.spectra->modes > 0);
+                         s.cfg.domain && s.cfg.spectra, s.cfg.domain && s.cfg.spectra && s.cfg.spectra->modes > 0,
+                         s.cfg.domain && s.cfg.fields);
     }
     s.manifest.run = {roughgas_version(),
                       o.case_file,
@@ -479,6 +485,7 @@ int run_run(const RunOptions& o, const Communicator& comm) {
             std::error_code ec;
             fs::remove_all(checkpoint_dir(dir), ec);
             fs::remove_all(state_dir(dir), ec);
+            fs::remove_all(fields_dir(dir), ec); // an earlier run's snapshots would mix with this run's
         }
         if (checkpoint_every > 0 || partial || comm.size() > 1) // a kill before the first replica
             checkpoints.write_manifest_once();                  // checkpoint still leaves a resumable run
@@ -662,9 +669,16 @@ int run_run(const RunOptions& o, const Communicator& comm) {
             ck.stop = [&] { return signals.requested(); };
             if (setup.resuming && setup.resumed[k]) // checked before the run; read again now (memory)
                 ck.resume = read_replica_state(dir, k, setup.manifest.run);
+            // The replica's cell fields: written from its own thread, each replica to its own files.
+            std::optional<FieldsSeries> series;
+            FieldSink fsink;
+            if (spec.domain && spec.domain->fields && r < spec.domain->fields->replicas) {
+                series.emplace(dir, r, *spec.domain, setup.resuming);
+                fsink = [&series](const FieldSnapshot& s) { series->add(s); };
+            }
             ReplicaEnd end;
             try {
-                end = run_replica(spec, *tables, r, sink, report, &summaries[k], hsink, &ck);
+                end = run_replica(spec, *tables, r, sink, report, &summaries[k], hsink, &ck, fsink);
             } catch (const ResumeError& e) {
                 const fs::path file = replica_checkpoint_path(dir, k);
                 throw InputError(file.string(), "--resume",

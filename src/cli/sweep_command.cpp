@@ -170,6 +170,10 @@ int run_sweep(const SweepOptions& o, const Communicator& comm) {
         std::vector<std::string> sets = o.sets;
         sets.push_back(fmt::format("{}={}", s.key, x));
         cases.push_back(load_case(o.case_file, sets, CaseUse::run));
+        if (cases.back().fields)
+            throw InputError(o.case_file, "fields",
+                             "[fields] in a sweep: a sweep writes each point's moments.csv only (run a point with "
+                             "roughgas run CASE --set KEY=VALUE for its fields)");
         values.push_back(x);
         point_sets.push_back(sets);
     }

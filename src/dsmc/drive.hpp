@@ -29,6 +29,7 @@ struct ReplicaIo {
     ReplicaSummary* summary;
     const HistogramSink& histograms;
     const ReplicaCheckpoints* checkpoints;
+    const FieldSink& fields;
 };
 
 // Constant restitution: the policies the Maxwell kernel (validated: constant only) and the

@@ -108,6 +108,11 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
     std::optional<Spectra> spectra; // planned once per replica
     if (domain.spectra)
         spectra.emplace(spectra_geometry(domain));
+    // The cell fields: of the replicas below fields.replicas, at every fields.every-th row, computed
+    // once per state (a row repeated for outputs its step passed has the same fields).
+    const bool writes_fields = domain.fields && io.fields && replica < domain.fields->replicas;
+    const std::array<bool, 3> walled{domain.walled(0), domain.walled(1), domain.walled(2)};
+    std::optional<CellFields> cell_fields;
 
     const auto state = [&] {
         ByteWriter w;
@@ -125,8 +130,10 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
 
     std::vector<double> row;
     std::optional<double> nu_ahead; // the collision frequency a row found for the step that follows it
-    const auto emit = [&](bool repeat) {
+    // Row `row_index` of moments.csv (0: t = 0).
+    const auto emit = [&](bool repeat, std::size_t row_index) {
         if (!repeat) {
+            cell_fields.reset();
             const double t = engine.time();
             const std::int64_t c = engine.collisions();
             const bool first = c == 0 && t == 0;
@@ -200,6 +207,14 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
             c_prev = c;
             tally.next_interval();
         }
+        if (writes_fields && row_index % static_cast<std::size_t>(domain.fields->every) == 0) {
+            if (!cell_fields)
+                cell_fields = compute_cell_fields(profile_geometry, domain.cells, walled, domain.fields->quantities,
+                                                  engine.positions(), engine.velocities(),
+                                                  engine.angular_velocities(), blocks);
+            io.fields(FieldSnapshot{row_index, engine.time(), 2.0 * static_cast<double>(engine.collisions()) / N,
+                                    *cell_fields});
+        }
         io.sink(row);
     };
 
@@ -228,7 +243,7 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
         }
         resumed_at = engine.collisions();
     } else {
-        emit(false); // t = 0
+        emit(false, 0); // t = 0
     }
 
     const auto coll_per_particle = [&] { return 2.0 * static_cast<double>(engine.collisions()) / N; };
@@ -243,7 +258,7 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
         engine.step(h / nu, tally);
         bool repeat = false;
         while (next < outputs.size() && coll_per_particle() >= outputs[next] * (1 - 1e-12)) {
-            emit(repeat);
+            emit(repeat, next + 1);
             repeat = true;
             ++next;
         }

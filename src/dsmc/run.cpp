@@ -80,6 +80,8 @@ void validate(const RunSpec& spec) {
                 "spectra need a periodic box (no walls, no Lees-Edwards)");
         require(!spec.domain->spectra || (spec.domain->spectra->modes >= 0 && spec.domain->spectra->modes <= 4096),
                 "spectra modes must be in [0, 4096]");
+        require(!spec.domain->fields || (spec.domain->fields->every >= 1 && spec.domain->fields->replicas >= 1),
+                "fields every and replicas must be at least 1");
         for (double g : spec.domain->gravity)
             require(std::isfinite(g), "gravity must be finite");
         for (const WallSpec* w : {&spec.domain->wall_lower, &spec.domain->wall_upper}) {
@@ -251,9 +253,9 @@ std::vector<Column> dsmc_columns(const RunSpec& spec) {
 
 ReplicaEnd run_replica(const RunSpec& spec, const RestitutionTables& tables, int replica, const RowSink& sink,
                        const ProgressSink& progress, ReplicaSummary* summary, const HistogramSink& histograms,
-                       const ReplicaCheckpoints* checkpoints) {
+                       const ReplicaCheckpoints* checkpoints, const FieldSink& fields) {
     validate(spec);
-    const ReplicaIo io{sink, progress, summary, histograms, checkpoints};
+    const ReplicaIo io{sink, progress, summary, histograms, checkpoints, fields};
     require(replica >= 0, "negative replica index");
     const std::vector<SpeciesBlock> blocks = make_species_blocks(spec.species, spec.particles);
     const std::vector<PairType> types = make_pair_types(blocks);

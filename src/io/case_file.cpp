@@ -108,6 +108,8 @@ std::string type_phrase(KeyType t) {
         return "an array of three integers";
     case KeyType::string3:
         return "an array of three strings";
+    case KeyType::string_list:
+        return "an array of distinct strings";
     }
     return "?";
 }
@@ -250,6 +252,20 @@ class Reader {
             return {d, d, d};
         }
         return {a->get(0)->as_string()->get(), a->get(1)->as_string()->get(), a->get(2)->as_string()->get()};
+    }
+    std::vector<std::string> strings(std::string_view k) const {
+        std::vector<std::string> list;
+        if (const toml::array* a = node(k) ? node(k)->as_array() : nullptr) {
+            for (const toml::node& e : *a)
+                list.push_back(e.as_string()->get());
+            return list;
+        }
+        const std::string d = std::get<std::string>(spec(k).default_value);
+        for (std::size_t a = 0, b = 0; a < d.size(); a = b + 1) {
+            b = std::min(d.find(' ', a), d.size());
+            list.push_back(d.substr(a, b - a));
+        }
+        return list;
     }
     template <class E, std::size_t N>
     E choice(std::string_view k, const std::array<std::string_view, N>& names) const {
@@ -523,6 +539,25 @@ class SchemaCheck {
                 value(element, *a->get(i), fmt::format("{}[{}]", key, i));
             return;
         }
+        case KeyType::string_list: {
+            // At least one element, each a string of the choices, none twice.
+            const toml::array* a = n.as_array();
+            if (a == nullptr || a->empty()) {
+                d_.add(key, fmt::format("{}: must be {} ({})", shown, type_phrase(s.type), s.allowed()), &n);
+                return;
+            }
+            KeySpec element = s;
+            element.type = KeyType::string;
+            for (std::size_t i = 0; i < a->size(); ++i) {
+                value(element, *a->get(i), fmt::format("{}[{}]", key, i));
+                for (std::size_t j = 0; j < i; ++j)
+                    if (a->get(i)->is_string() && a->get(j)->is_string() &&
+                        a->get(i)->as_string()->get() == a->get(j)->as_string()->get())
+                        d_.add(key, fmt::format("{}: \"{}\" is given twice", shown, a->get(i)->as_string()->get()),
+                               &n);
+            }
+            return;
+        }
         case KeyType::string: {
             const auto* str = n.as_string();
             if (str == nullptr) {
@@ -628,6 +663,17 @@ class Builder {
             SpectraConfig s;
             s.modes = r.integer("modes");
             c.spectra = s;
+        }
+        if (const toml::table* t = root_["fields"].as_table()) {
+            const Reader r(t, "fields");
+            FieldsConfig f;
+            for (const std::string& q : r.strings("quantities"))
+                f.quantities.push_back(static_cast<FieldQuantity>(
+                    std::find(field_quantity_names.begin(), field_quantity_names.end(), q) -
+                    field_quantity_names.begin()));
+            f.every = r.integer("every");
+            f.replicas = r.integer("replicas");
+            c.fields = f;
         }
         c.restitution = grid(Reader(root_["restitution"].as_table(), "restitution"));
         check(c);
@@ -884,6 +930,14 @@ class Builder {
             else if (c.run.kind == RunKind::shear)
                 add("spectra", "[spectra] with run.kind = \"shear\": the Lees-Edwards box is periodic only in its "
                                "sheared frame, which the spectra do not follow");
+        }
+        if (c.fields) {
+            if (!c.domain)
+                add("fields", "[fields] without [domain]: fields are of a box's cells (give the box in [domain])");
+            else if (c.fields->replicas > c.run.replicas)
+                add("fields.replicas", fmt::format("fields.replicas = {}: more than the run's replicas (must be "
+                                                   "<= run.replicas = {})",
+                                                   c.fields->replicas, c.run.replicas));
         }
         if (c.run.kernel == CollisionKernel::maxwell)
             check_maxwell_kernel(c);
@@ -1154,6 +1208,12 @@ class Emitter {
     void put(std::string_view k, const std::array<std::int64_t, 3>& x) {
         line(k, fmt::format("[{}, {}, {}]", x[0], x[1], x[2]));
     }
+    void put(std::string_view k, const std::vector<std::string>& x) {
+        std::string text;
+        for (const std::string& s : x)
+            text += (text.empty() ? "" : ", ") + quote(s);
+        line(k, "[" + text + "]");
+    }
     void put(std::string_view k, const std::array<std::string, 3>& x) {
         line(k, fmt::format("[{}, {}, {}]", quote(x[0]), quote(x[1]), quote(x[2])));
     }
@@ -1302,6 +1362,15 @@ std::string emit_case(const CaseConfig& c) {
     if (c.spectra) {
         e.header("[spectra]");
         e.put("modes", c.spectra->modes);
+    }
+    if (c.fields) {
+        e.header("[fields]");
+        std::vector<std::string> names;
+        for (const FieldQuantity q : c.fields->quantities)
+            names.emplace_back(field_quantity_names[static_cast<std::size_t>(q)]);
+        e.put("quantities", names);
+        e.put("every", c.fields->every);
+        e.put("replicas", c.fields->replicas);
     }
     for (const auto& [side, w] : {std::pair{"[wall_lower]", &c.wall_lower}, std::pair{"[wall_upper]", &c.wall_upper}}) {
         if (!*w)

@@ -3,6 +3,7 @@
 
 #include "roughgas/contact/contact_model.hpp"
 #include "roughgas/io/case_config.hpp"
+#include "roughgas/observables/field_quantity.hpp"
 
 #include <fmt/format.h>
 
@@ -376,6 +377,23 @@ std::vector<Key> keys() {
             .le(4096)
             .doc("modes.csv: the lowest wave numbers n = 1 ... modes along each axis (fewer where the axis "
                  "has fewer cells: up to (cells - 1)/2); 0: no modes.csv"),
+        // [fields]
+        Key("fields.quantities", T::string_list)
+            .fallback(std::string("n u T_tr T_rot theta omega P q"))
+            .one_of(field_quantity_names)
+            .doc("the cell fields written: n (number density), u (flow velocity), T_tr, T_rot, theta, omega "
+                 "(mean spin), P (kinetic pressure tensor), q (heat flux); defined as the profiles' "
+                 "(docs/model.md §8)"),
+        Key("fields.every", T::integer)
+            .fallback(std::int64_t{1})
+            .ge(1)
+            .le(1000000)
+            .doc("write the fields at every this-many-th row of moments.csv (the first row, t = 0, always)"),
+        Key("fields.replicas", T::integer)
+            .fallback(std::int64_t{1})
+            .ge(1)
+            .le(1000000)
+            .doc("the replicas 0 ... replicas - 1 write fields, each to its own files"),
         // [restitution]
         Key("restitution.g_n_min", T::real)
             .unit("m/s")
@@ -523,6 +541,15 @@ std::string KeySpec::default_text() const {
         std::string operator()(double d) const { return toml_real(d); }
         std::string operator()(const std::string& s) const { return roughgas::quoted(s); }
     };
+    if (type == KeyType::string_list && std::holds_alternative<std::string>(default_value)) {
+        std::string text;
+        for (std::size_t a = 0, b = 0; a < std::get<std::string>(default_value).size(); a = b + 1) {
+            const std::string& d = std::get<std::string>(default_value);
+            b = std::min(d.find(' ', a), d.size());
+            text += (text.empty() ? "" : ", ") + roughgas::quoted(d.substr(a, b - a));
+        }
+        return "[" + text + "]";
+    }
     if (type == KeyType::string3 && std::holds_alternative<std::string>(default_value)) {
         const std::string q = roughgas::quoted(std::get<std::string>(default_value));
         return "[" + q + ", " + q + ", " + q + "]";
@@ -548,6 +575,8 @@ std::string KeySpec::type_name() const {
         return "[integer, integer, integer]";
     case KeyType::string3:
         return "[string, string, string]";
+    case KeyType::string_list:
+        return "[string, ...]";
     }
     return "?";
 }
@@ -582,6 +611,9 @@ const std::vector<TableSpec>& case_tables() {
         {"initial", false, "optional (with [domain])", "a wave on the uniform start of a spatially resolved run"},
         {"spectra", false, "optional (with a periodic [domain])",
          "Fourier spectra of the box's fields at every output row: spectra.csv and modes.csv (docs/model.md §8)"},
+        {"fields", false, "optional (with [domain])",
+         "the fields of every collision cell at output rows, as HDF5 files with an XDMF sidecar for ParaView "
+         "(docs/reference.md)"},
         {"wall_lower", false, "required for domain.boundary with \"walls\"",
          "the wall at coordinate 0 of every walled axis"},
         {"wall_upper", false, "required for domain.boundary with \"walls\"",

@@ -82,6 +82,9 @@ RunSpec run_spec_from_case(const CaseConfig& cfg) {
         }
         if (cfg.spectra)
             d.spectra = SpectraSpec{static_cast<int>(cfg.spectra->modes)};
+        if (cfg.fields)
+            d.fields = FieldsSpec{cfg.fields->quantities, static_cast<int>(cfg.fields->every),
+                                  static_cast<int>(cfg.fields->replicas)};
         spec.domain = d;
     }
     for (const SpeciesConfig& s : cfg.species) {

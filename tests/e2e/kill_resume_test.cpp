@@ -3,7 +3,8 @@
 // count) give moments.csv, histograms.csv and steady.csv byte for byte as the run that was never
 // interrupted. Cases: a rough cooling run with 3 replicas on 2 threads (one replica waits for a
 // thread) and histograms, a shear run, a rough binary mixture with histograms, a spatially
-// resolved box. The kill moments
+// resolved box (with its cell fields: every HDF5 file the same bytes, the XDMF sidecars the same
+// but for the directory they name). The kill moments
 // come from a seeded generator (printed on failure); no result depends on them.
 #include "../io/io_test_support.hpp"
 #include "child_process.hpp"
@@ -43,6 +44,9 @@ std::string box() {
            "[[species]]\nmass = 1.0\nradius = 0.5\n\n[collision]\nmodel = \"constant\"\nalpha = 0.8\nbeta = 0.3\n\n"
            "[domain]\nsize = [40.0, 40.0, 40.0]\ncells = [8, 8, 8]\n";
 }
+
+// The same with cell fields of both replicas at every third row.
+std::string box_fields() { return box() + "\n[fields]\nevery = 3\nreplicas = 2\n"; }
 
 // Between a diffuse wall at rest (below) and a rough one moving along x (above), under gravity: the
 // flight's random emission and the walls' tallies (walls.csv) in the checkpoint too.
@@ -96,6 +100,26 @@ void expect_same_outputs(const fs::path& reference, const fs::path& out, const s
     }
     for (const auto& e : fs::recursive_directory_iterator(out)) // no temporary left behind
         EXPECT_EQ(e.path().filename().string().find(".tmp."), std::string::npos) << e.path();
+    // The cell fields: the same files, the same bytes (the sidecars name their own directory).
+    if (fs::exists(reference / "fields") || fs::exists(out / "fields")) {
+        const auto files = [](const fs::path& root) {
+            std::vector<std::string> names;
+            for (const auto& e : fs::recursive_directory_iterator(root / "fields"))
+                if (e.is_regular_file())
+                    names.push_back(fs::relative(e.path(), root).string());
+            std::sort(names.begin(), names.end());
+            return names;
+        };
+        const std::vector<std::string> names = files(reference);
+        ASSERT_EQ(names, files(out)) << context;
+        for (const std::string& n : names) {
+            std::string a = test::read_file(reference / n);
+            const std::string b = test::read_file(out / n);
+            if (n.ends_with(".xmf"))
+                a = test::replaced_all(a, fs::absolute(reference).string(), fs::absolute(out).string());
+            EXPECT_TRUE(a == b) << n << " differs from the uninterrupted run, " << context;
+        }
+    }
 }
 
 bool any_replica_file(const fs::path& out) {
@@ -168,7 +192,7 @@ INSTANTIATE_TEST_SUITE_P(
     E2e, KillAndResume,
     ::testing::Values(Scenario{"RoughCooling3Replicas", rough_cooling(20000, 40.0), "1.5"},
                       Scenario{"Shear", shear(), "1"}, Scenario{"RoughMixture", rough_mixture(), "2"},
-                      Scenario{"Box", box(), "2"}, Scenario{"BoxWalls", box_walls(), "2"},
+                      Scenario{"Box", box_fields(), "2"}, Scenario{"BoxWalls", box_walls(), "2"},
                       Scenario{"BoxShear", box_shear(), "2"}),
     [](const ::testing::TestParamInfo<Scenario>& info) { return info.param.name; });
 

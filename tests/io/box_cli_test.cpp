@@ -1,8 +1,13 @@
 // `roughgas run` of a spatially resolved case ([domain]; src/dsmc/drive_spatial.cpp): the same
 // bytes for any thread count and for merged replica ranges; the box reported in mean free paths;
-// what the box cannot run refused before any work; a small box cools as the homogeneous gas.
+// what the box cannot run refused before any work; a small box cools as the homogeneous gas; the
+// cell fields in HDF5 files with their XDMF sidecars.
 #include "io_test_support.hpp"
 
+#include "roughgas/io/fields_file.hpp"
+#include "roughgas/io/fields_series.hpp"
+
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -92,6 +97,12 @@ TEST(BoxCli, RefusesWhatTheBoxCannotRunBeforeAnyWork) {
         {replaced(base, "seed = 4", "seed = 4\nkind = \"shear\"") + "\n[shear]\nrate = 0.01\n[spectra]\n", "spectra",
          "Lees-Edwards box is periodic only in its sheared frame"},
         {base + "\n[spectra]\nmodes = -1\n", "spectra.modes", "must be in [0, 4096]"},
+        {base.substr(0, base.find("[domain]")) + "[fields]\n", "fields", "[fields] without [domain]"},
+        {base + "\n[fields]\nreplicas = 3\n", "fields.replicas", "must be <= run.replicas = 2"},
+        {base + "\n[fields]\nquantities = [\"n\", \"rho\"]\n", "fields.quantities[1]", "must be one of \"n\""},
+        {base + "\n[fields]\nquantities = [\"n\", \"u\", \"n\"]\n", "fields.quantities", "\"n\" is given twice"},
+        {base + "\n[fields]\nquantities = []\n", "fields.quantities", "an array of distinct strings"},
+        {base + "\n[fields]\nevery = 0\n", "fields.every", "must be in [1, 1000000]"},
     };
     for (const auto& b : bad) {
         const fs::path f = dir.write("bad.toml", b.text);
@@ -154,6 +165,73 @@ TEST(BoxCli, SpectraAndModesOfATransverseWave) {
     ASSERT_EQ(test::run_roughgas("run " + q(none) + " --quiet --out " + q(dir / "none"), dir).status, 0);
     EXPECT_TRUE(fs::exists(dir / "none" / "spectra.csv"));
     EXPECT_FALSE(fs::exists(dir / "none" / "modes.csv"));
+}
+
+// [fields]: the cells' fields of the replicas below fields.replicas at every fields.every-th row,
+// one HDF5 file each and an XDMF sidecar per replica listing them; the grains the files count are
+// the run's (n summed over the cells times the cell volume over the weight n V / N), the flow
+// averages to the box's mean (zero: the grains start at rest on average and collisions keep the
+// momentum), and the same run on another thread count writes the same bytes. An earlier run's
+// fields are not overwritten without --force.
+TEST(BoxCli, FieldsOfTheCellsInHdf5WithAnXdmfSidecar) {
+    const test::ScratchDir dir;
+    const std::string c =
+        replaced(box_case(6000, 3, 2.0), "output_spacing = \"log\"", "output_spacing = \"linear\"") +
+        "\n[fields]\nquantities = [\"n\", \"u\", \"P\"]\nevery = 2\nreplicas = 2\n";
+    const fs::path f = dir.write("fields.toml", c);
+    const std::string run = "run " + q(f) + " --quiet --out ";
+    const test::CommandResult r = test::run_roughgas(run + q(dir / "a") + " --threads 1", dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    ASSERT_EQ(test::run_roughgas(run + q(dir / "b") + " --threads 2", dir).status, 0);
+    const std::size_t rows = test::read_csv(dir / "a" / "moments.csv").at("t").size();
+    ASSERT_EQ(rows, 5u); // t = 0, 0.5, ..., 2
+    for (int replica = 0; replica < 3; ++replica) {
+        const fs::path d = fields_replica_dir(dir / "a", replica);
+        EXPECT_EQ(fs::exists(d), replica < 2) << d;
+        EXPECT_EQ(fs::exists(fields_xdmf_path(dir / "a", replica)), replica < 2);
+        if (replica == 2)
+            continue;
+        const std::string xdmf = test::read_file(fields_xdmf_path(dir / "a", replica));
+        for (std::size_t row = 0; row < rows; ++row) {
+            const fs::path file = d / fmt::format("row_{:06d}.h5", row);
+            ASSERT_EQ(fs::exists(file), row % 2 == 0) << file;
+            if (row % 2 != 0)
+                continue;
+            EXPECT_NE(xdmf.find(fs::absolute(file).string() + ":/u"), std::string::npos) << xdmf;
+            const FieldsFileHeader h = read_fields_header(file);
+            EXPECT_EQ(h.row, row);
+            EXPECT_EQ(h.replica, replica);
+            EXPECT_EQ(h.cells, (std::array<std::int64_t, 3>{5, 5, 5}));
+            const FieldsDataset n = read_fields_dataset(file, "n");
+            EXPECT_EQ(n.shape, (std::vector<std::size_t>{5, 5, 5}));
+            EXPECT_EQ(n.unit, "1/volume");
+            double grains = 0;
+            for (double x : n.values)
+                grains += x * (10.0 * 10.0 * 10.0) / (0.02 * 50.0 * 50.0 * 50.0 / 6000);
+            EXPECT_NEAR(grains, 6000, 1e-9);
+            const FieldsDataset u = read_fields_dataset(file, "u"), P = read_fields_dataset(file, "P");
+            EXPECT_EQ(u.shape, (std::vector<std::size_t>{5, 5, 5, 3}));
+            EXPECT_EQ(P.shape, (std::vector<std::size_t>{5, 5, 5, 6}));
+            Vec3 momentum{};
+            for (std::size_t k = 0; k < 125; ++k)
+                momentum += n.values[k] * Vec3{u.values[3 * k], u.values[3 * k + 1], u.values[3 * k + 2]};
+            EXPECT_NEAR(norm(momentum) / 125, 0.0, 1e-12);
+            EXPECT_THROW(read_fields_dataset(file, "T_tr"), std::runtime_error); // not asked for
+        }
+        for (const auto& e : fs::directory_iterator(d))
+            EXPECT_EQ(test::read_file(e.path()),
+                      test::read_file(fields_replica_dir(dir / "b", replica) / e.path().filename()))
+                << e.path();
+    }
+    // Another run into the same directory needs --force, which removes the earlier fields first.
+    const test::CommandResult again = test::run_roughgas(run + q(dir / "a"), dir);
+    EXPECT_EQ(again.status, 2);
+    EXPECT_NE(again.err.find("fields exists (use --force to overwrite)"), std::string::npos) << again.err;
+    fs::remove_all(dir / "a" / "moments.csv");
+    const fs::path every3 = dir.write("every3.toml", replaced(c, "every = 2", "every = 3"));
+    ASSERT_EQ(test::run_roughgas("run " + q(every3) + " --quiet --force --out " + q(dir / "a"), dir).status, 0);
+    EXPECT_TRUE(fs::exists(fields_replica_dir(dir / "a", 0) / "row_000003.h5"));
+    EXPECT_FALSE(fs::exists(fields_replica_dir(dir / "a", 0) / "row_000002.h5"));
 }
 
 // roughgas check of a cooling box states the shear mode's linear stability (observables/shear_mode.hpp):

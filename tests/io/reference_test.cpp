@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sstream>
+
 #include <regex>
 #include <set>
 
@@ -154,7 +156,13 @@ TEST(Schema, EveryKeyIsWellFormed) {
             EXPECT_TRUE(k.allows(*d)) << k.path << ": default outside the allowed range";
         }
         if (const auto* s = std::get_if<std::string>(&k.default_value)) {
-            EXPECT_TRUE(k.allows(*s)) << k.path;
+            if (k.type == KeyType::string_list) { // the elements, separated by spaces
+                std::istringstream words(*s);
+                for (std::string w; words >> w;)
+                    EXPECT_TRUE(k.allows(w)) << k.path << ": " << w;
+            } else {
+                EXPECT_TRUE(k.allows(*s)) << k.path;
+            }
         }
     }
 }

@@ -51,7 +51,7 @@ struct Scene {
             M += mass(i);
         }
         U = (1.0 / M) * p;
-        for (const auto [first, last] : {std::pair{0, 300}, std::pair{300, 500}}) {
+        for (const auto& [first, last] : {std::pair{0, 300}, std::pair{300, 500}}) {
             double sum = 0;
             for (int j = first; j < last; ++j)
                 sum += energy(static_cast<std::size_t>(j));

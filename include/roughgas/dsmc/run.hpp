@@ -2,6 +2,7 @@
 // One DSMC run of the homogeneous gas: the columns it reports and the run itself.
 #include "roughgas/dsmc/output_columns.hpp"
 #include "roughgas/dsmc/run_spec.hpp"
+#include "roughgas/observables/cell_fields.hpp"
 #include "roughgas/observables/histograms.hpp"
 #include "roughgas/observables/spectra.hpp"
 
@@ -24,6 +25,15 @@ struct HistogramSet {
     std::vector<SpeciesHistograms> species; // in spec.species order
 };
 using HistogramSink = std::function<void(const HistogramSet&)>;
+
+// The cell fields of one replica at output row `row` (0: t = 0), every spec.domain->fields->every
+// rows, for the replicas below spec.domain->fields->replicas.
+struct FieldSnapshot {
+    std::size_t row = 0;
+    double t = 0, coll_per_particle = 0;
+    const CellFields& fields;
+};
+using FieldSink = std::function<void(const FieldSnapshot&)>;
 
 // Columns of moments.csv for this spec, in the order of docs/reference.md: t, coll_per_particle, T_tr,
 // T_rot, theta, a20, a02, a11, A_cw, coll_rate, E_diss_rate, then per species X.NAME and ratios
@@ -139,9 +149,10 @@ struct ResumeError : std::runtime_error {
 // The same with tables built by the caller (RestitutionTables::build, or build_run_tables for the
 // cache file): in the physics library. `summary` (optional) receives what the run did; `histograms`
 // (optional) is called at every spec.histogram_times entry; `checkpoints` (optional) saves and
-// resumes states.
+// resumes states; `fields` (optional) receives the cell fields of box runs with spec.domain->fields.
 ReplicaEnd run_replica(const RunSpec& spec, const RestitutionTables& tables, int replica, const RowSink& sink,
                        const ProgressSink& progress = {}, ReplicaSummary* summary = nullptr,
-                       const HistogramSink& histograms = {}, const ReplicaCheckpoints* checkpoints = nullptr);
+                       const HistogramSink& histograms = {}, const ReplicaCheckpoints* checkpoints = nullptr,
+                       const FieldSink& fields = {});
 
 } // namespace roughgas

@@ -4,6 +4,7 @@
 #include "roughgas/contact/contact_pair.hpp"
 #include "roughgas/contact/tolerance.hpp"
 #include "roughgas/dsmc/grain_state.hpp"
+#include "roughgas/observables/field_quantity.hpp"
 
 #include <array>
 #include <cstdint>
@@ -89,6 +90,14 @@ struct SpectraSpec {
     int modes = 3;
 };
 
+// The fields of every collision cell (observables/cell_fields.hpp) at every `every`-th output row
+// (the first included), of the replicas 0 ... replicas - 1: what run_replica gives its FieldSink.
+struct FieldsSpec {
+    std::vector<FieldQuantity> quantities;
+    int every = 1;
+    int replicas = 1;
+};
+
 // A spatially resolved run (dsmc/spatial_engine.hpp): a box of collision cells.
 struct DomainSpec {
     std::array<double, 3> size{1, 1, 1}; // L_x, L_y, L_z (the case's length unit)
@@ -105,6 +114,7 @@ struct DomainSpec {
     PartnerSelection partners = PartnerSelection::random;
     InitialSpec initial;
     std::optional<SpectraSpec> spectra; // set: spectra.csv and modes.csv (periodic boxes)
+    std::optional<FieldsSpec> fields;   // set: cell fields at output rows
     // Set: the grains start from this state (velocities and spins; positions when it comes from a
     // box of the same size, else uniform) instead of the Maxwellian; `initial`'s wave is added.
     GrainStateSource initial_state;

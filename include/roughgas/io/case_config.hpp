@@ -207,6 +207,15 @@ struct SpectraConfig {
     friend bool operator==(const SpectraConfig&, const SpectraConfig&) = default;
 };
 
+// [fields]: the cell fields of a [domain] run in HDF5 files with an XDMF sidecar (FieldsSpec,
+// dsmc/run_spec.hpp).
+struct FieldsConfig {
+    std::vector<FieldQuantity> quantities;
+    std::int64_t every = 1;
+    std::int64_t replicas = 1;
+    friend bool operator==(const FieldsConfig&, const FieldsConfig&) = default;
+};
+
 // [restitution]: the grid of `roughgas restitution` (speeds in m/s).
 struct RestitutionGridConfig {
     double g_n_min = 1e-4;
@@ -230,6 +239,7 @@ struct CaseConfig {
     std::optional<DomainConfig> domain; // present iff [domain] was given: a spatially resolved run
     std::optional<InitialConfig> initial; // present iff [initial] was given
     std::optional<SpectraConfig> spectra; // present iff [spectra] was given
+    std::optional<FieldsConfig> fields;   // present iff [fields] was given
     std::optional<WallConfig> wall_lower, wall_upper; // present iff given
     // Keys and tables given but not used by the chosen models or run kind (kept, not refused: a user
     // may switch the model or kind with --set and back); commands print them as warnings.

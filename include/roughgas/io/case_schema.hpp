@@ -12,7 +12,9 @@ namespace roughgas {
 
 // real3, integer3, string3: an array of three (one per axis x, y, z), each element within the
 // key's bounds or choices; a string default applies to every element.
-enum class KeyType { boolean, integer, real, string, string_pair, real3, integer3, string3 };
+// string_list: an array of distinct strings, at least one, each one of the key's choices; the
+// default is the elements separated by spaces.
+enum class KeyType { boolean, integer, real, string, string_pair, real3, integer3, string3, string_list };
 
 // How a missing key is resolved.
 enum class Need {

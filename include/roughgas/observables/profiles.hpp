@@ -51,13 +51,9 @@ std::vector<Column> profile_field_columns();
 // The symmetrised virial sums of one slab's collisions: xx, yy, zz, xy, xz, yz.
 using Virial = std::array<double, 6>;
 
-struct ProfileGeometry {
-    int axis = 0;            // 0, 1, 2: x, y, z
-    int bins = 1;
-    double length = 1;       // of the box along the axis
-    double bin_volume = 1;   // V_b (the case's volume unit)
+// How the grains are taken in the middle of a flight (the profiles and the cell fields alike).
+struct FlightSampling {
     double weight = 1;       // F: physical grains per simulated one
-    bool periodic = true;    // along the axis (else walls)
     bool rotation = true;    // the spins take part in the energy exchange (rough grains or walls)
     double half_flight = 0;  // h/2: the grains are taken in the middle of a flight of length h
     Vec3 gravity{};
@@ -65,6 +61,14 @@ struct ProfileGeometry {
     // taken as the image's grain (v_x -/+ a L_y, x -/+ a L_y t at t = time + h/2).
     double shear_rate = 0, time = 0;
     std::array<double, 3> box{1, 1, 1};
+};
+
+struct ProfileGeometry : FlightSampling {
+    int axis = 0;            // 0, 1, 2: x, y, z
+    int bins = 1;
+    double length = 1;       // of the box along the axis
+    double bin_volume = 1;   // V_b (the case's volume unit)
+    bool periodic = true;    // along the axis (else walls)
 };
 
 // The fields of every bin, bin after bin (profile_field_count each). `virial[b]` are bin b's sums

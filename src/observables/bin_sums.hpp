@@ -1,0 +1,37 @@
+#pragma once
+// The sums over the grains of each bin of a grid, taken in the middle of a flight
+// (observables/profiles.hpp): what the profiles (slabs along one axis) and the cell fields (every
+// collision cell) are computed from, with the same sampling.
+#include "roughgas/observables/profiles.hpp"
+
+#include <array>
+#include <vector>
+
+namespace roughgas::detail {
+
+// bins[a] bins of length[a] / bins[a] along axis a; walled[a]: walls at 0 and length[a] (else periodic).
+struct BinGrid {
+    std::array<int, 3> bins{1, 1, 1};
+    std::array<double, 3> length{1, 1, 1};
+    std::array<bool, 3> walled{false, false, false};
+    std::size_t size() const {
+        return static_cast<std::size_t>(bins[0]) * static_cast<std::size_t>(bins[1]) * static_cast<std::size_t>(bins[2]);
+    }
+};
+
+// Per bin, with c = v - u (u the bin's mass-weighted mean velocity).
+struct BinSums {
+    double count = 0, mass = 0, rot = 0; // grains, sum m, sum J omega^2
+    Vec3 momentum{}, spin{};             // sum m v, sum omega
+    double cc[6] = {};                   // sum m c_a c_b: xx, yy, zz, xy, xz, yz
+    Vec3 heat{};                         // sum (m c^2/2 + J omega^2/2) c (J omega^2/2 with s.rotation)
+    Vec3 flow() const { return mass > 0 ? (1.0 / mass) * momentum : Vec3{}; }
+};
+
+// Bin i_x + B_x (i_y + B_y i_z) of each grain in the middle of its flight; grain order within a bin
+// (a deterministic sum).
+std::vector<BinSums> bin_sums(const FlightSampling& s, const BinGrid& g, const std::vector<Vec3>& x,
+                              const std::vector<Vec3>& v, const std::vector<Vec3>& w,
+                              const std::vector<SpeciesBlock>& species);
+
+} // namespace roughgas::detail

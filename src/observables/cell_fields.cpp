@@ -1,0 +1,93 @@
+// The fields of a box's collision cells: observables/cell_fields.hpp.
+#include "roughgas/observables/cell_fields.hpp"
+
+#include "bin_sums.hpp"
+
+#include <limits>
+#include <stdexcept>
+
+namespace roughgas {
+
+std::string_view field_unit(FieldQuantity q) {
+    switch (q) {
+    case FieldQuantity::n:
+        return "1/volume";
+    case FieldQuantity::u:
+        return "length/time";
+    case FieldQuantity::T_tr:
+    case FieldQuantity::T_rot:
+        return "energy";
+    case FieldQuantity::theta:
+        return "-";
+    case FieldQuantity::omega:
+        return "1/time";
+    case FieldQuantity::P:
+        return "energy/volume";
+    case FieldQuantity::q:
+        return "energy/(length^2*time)";
+    }
+    return "?";
+}
+
+CellFields compute_cell_fields(const FlightSampling& s, const std::array<int, 3>& cells,
+                               const std::array<bool, 3>& walled, const std::vector<FieldQuantity>& quantities,
+                               const std::vector<Vec3>& x, const std::vector<Vec3>& v, const std::vector<Vec3>& w,
+                               const std::vector<SpeciesBlock>& species) {
+    detail::BinGrid grid;
+    grid.bins = cells;
+    grid.length = s.box;
+    grid.walled = walled;
+    for (std::size_t a = 0; a < 3; ++a)
+        if (cells[a] < 1 || !(s.box[a] > 0))
+            throw std::invalid_argument("compute_cell_fields: cells and box must be positive");
+    const std::vector<detail::BinSums> sums = detail::bin_sums(s, grid, x, v, w, species);
+    const double f = s.weight * static_cast<double>(grid.size()) / (s.box[0] * s.box[1] * s.box[2]); // F / V_c
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+
+    CellFields out;
+    out.cells = cells;
+    out.quantities = quantities;
+    for (const FieldQuantity q : quantities) {
+        std::vector<double> values;
+        values.reserve(sums.size() * static_cast<std::size_t>(field_components(q)));
+        for (const detail::BinSums& b : sums) {
+            const bool empty = b.count == 0;
+            const double T_tr = empty ? nan : (b.cc[0] + b.cc[1] + b.cc[2]) / (3 * b.count);
+            const double T_rot = empty ? nan : b.rot / (3 * b.count);
+            const Vec3 u = empty ? Vec3{nan, nan, nan} : b.flow();
+            const Vec3 spin = empty ? Vec3{nan, nan, nan} : (1.0 / b.count) * b.spin;
+            const Vec3 heat = empty ? Vec3{nan, nan, nan} : f * b.heat;
+            switch (q) {
+            case FieldQuantity::n:
+                values.push_back(f * b.count);
+                break;
+            case FieldQuantity::u:
+                values.insert(values.end(), {u.x, u.y, u.z});
+                break;
+            case FieldQuantity::T_tr:
+                values.push_back(T_tr);
+                break;
+            case FieldQuantity::T_rot:
+                values.push_back(T_rot);
+                break;
+            case FieldQuantity::theta:
+                values.push_back(T_tr > 0 ? T_rot / T_tr : nan);
+                break;
+            case FieldQuantity::omega:
+                values.insert(values.end(), {spin.x, spin.y, spin.z});
+                break;
+            case FieldQuantity::P: // Tensor6: xx, xy, xz, yy, yz, zz from cc's xx, yy, zz, xy, xz, yz
+                for (int k : {0, 3, 4, 1, 5, 2})
+                    values.push_back(empty ? nan : f * b.cc[k]);
+                break;
+            case FieldQuantity::q:
+                values.insert(values.end(), {heat.x, heat.y, heat.z});
+                break;
+            }
+        }
+        out.values.push_back(std::move(values));
+    }
+    return out;
+}
+
+} // namespace roughgas
