@@ -260,12 +260,7 @@ class Reader {
                 list.push_back(e.as_string()->get());
             return list;
         }
-        const std::string d = std::get<std::string>(spec(k).default_value);
-        for (std::size_t a = 0, b = 0; a < d.size(); a = b + 1) {
-            b = std::min(d.find(' ', a), d.size());
-            list.push_back(d.substr(a, b - a));
-        }
-        return list;
+        return spec(k).default_list();
     }
     template <class E, std::size_t N>
     E choice(std::string_view k, const std::array<std::string_view, N>& names) const {

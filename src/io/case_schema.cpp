@@ -543,11 +543,8 @@ std::string KeySpec::default_text() const {
     };
     if (type == KeyType::string_list && std::holds_alternative<std::string>(default_value)) {
         std::string text;
-        for (std::size_t a = 0, b = 0; a < std::get<std::string>(default_value).size(); a = b + 1) {
-            const std::string& d = std::get<std::string>(default_value);
-            b = std::min(d.find(' ', a), d.size());
-            text += (text.empty() ? "" : ", ") + roughgas::quoted(d.substr(a, b - a));
-        }
+        for (const std::string& e : default_list())
+            text += (text.empty() ? "" : ", ") + roughgas::quoted(e);
         return "[" + text + "]";
     }
     if (type == KeyType::string3 && std::holds_alternative<std::string>(default_value)) {
@@ -555,6 +552,16 @@ std::string KeySpec::default_text() const {
         return "[" + q + ", " + q + ", " + q + "]";
     }
     return std::visit(Text{}, default_value);
+}
+
+std::vector<std::string> KeySpec::default_list() const {
+    std::vector<std::string> list;
+    if (const auto* d = std::get_if<std::string>(&default_value))
+        for (std::size_t a = 0, b = 0; a < d->size(); a = b + 1) {
+            b = std::min(d->find(' ', a), d->size());
+            list.push_back(d->substr(a, b - a));
+        }
+    return list;
 }
 
 std::string KeySpec::type_name() const {

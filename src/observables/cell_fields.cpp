@@ -47,17 +47,19 @@ CellFields compute_cell_fields(const FlightSampling& s, const std::array<int, 3>
     CellFields out;
     out.cells = cells;
     out.quantities = quantities;
-    for (const FieldQuantity q : quantities) {
-        std::vector<double> values;
-        values.reserve(sums.size() * static_cast<std::size_t>(field_components(q)));
-        for (const detail::BinSums& b : sums) {
-            const bool empty = b.count == 0;
-            const double T_tr = empty ? nan : (b.cc[0] + b.cc[1] + b.cc[2]) / (3 * b.count);
-            const double T_rot = empty ? nan : b.rot / (3 * b.count);
-            const Vec3 u = empty ? Vec3{nan, nan, nan} : b.flow();
-            const Vec3 spin = empty ? Vec3{nan, nan, nan} : (1.0 / b.count) * b.spin;
-            const Vec3 heat = empty ? Vec3{nan, nan, nan} : f * b.heat;
-            switch (q) {
+    out.values.resize(quantities.size());
+    for (std::size_t k = 0; k < quantities.size(); ++k)
+        out.values[k].reserve(sums.size() * static_cast<std::size_t>(field_components(quantities[k])));
+    for (const detail::BinSums& b : sums) {
+        const bool empty = b.count == 0;
+        const double T_tr = empty ? nan : (b.cc[0] + b.cc[1] + b.cc[2]) / (3 * b.count);
+        const double T_rot = empty ? nan : b.rot / (3 * b.count);
+        const Vec3 u = empty ? Vec3{nan, nan, nan} : b.flow();
+        const Vec3 spin = empty ? Vec3{nan, nan, nan} : (1.0 / b.count) * b.spin;
+        const Vec3 heat = empty ? Vec3{nan, nan, nan} : f * b.heat;
+        for (std::size_t k = 0; k < quantities.size(); ++k) {
+            std::vector<double>& values = out.values[k];
+            switch (quantities[k]) {
             case FieldQuantity::n:
                 values.push_back(f * b.count);
                 break;
@@ -77,15 +79,14 @@ CellFields compute_cell_fields(const FlightSampling& s, const std::array<int, 3>
                 values.insert(values.end(), {spin.x, spin.y, spin.z});
                 break;
             case FieldQuantity::P: // Tensor6: xx, xy, xz, yy, yz, zz from cc's xx, yy, zz, xy, xz, yz
-                for (int k : {0, 3, 4, 1, 5, 2})
-                    values.push_back(empty ? nan : f * b.cc[k]);
+                for (int c : {0, 3, 4, 1, 5, 2})
+                    values.push_back(empty ? nan : f * b.cc[c]);
                 break;
             case FieldQuantity::q:
                 values.insert(values.end(), {heat.x, heat.y, heat.z});
                 break;
             }
         }
-        out.values.push_back(std::move(values));
     }
     return out;
 }

@@ -11,8 +11,6 @@
 
 #include <gtest/gtest.h>
 
-#include <sstream>
-
 #include <regex>
 #include <set>
 
@@ -156,9 +154,9 @@ TEST(Schema, EveryKeyIsWellFormed) {
             EXPECT_TRUE(k.allows(*d)) << k.path << ": default outside the allowed range";
         }
         if (const auto* s = std::get_if<std::string>(&k.default_value)) {
-            if (k.type == KeyType::string_list) { // the elements, separated by spaces
-                std::istringstream words(*s);
-                for (std::string w; words >> w;)
+            if (k.type == KeyType::string_list) {
+                EXPECT_FALSE(k.default_list().empty()) << k.path;
+                for (const std::string& w : k.default_list())
                     EXPECT_TRUE(k.allows(w)) << k.path << ": " << w;
             } else {
                 EXPECT_TRUE(k.allows(*s)) << k.path;

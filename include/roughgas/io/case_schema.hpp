@@ -50,6 +50,7 @@ struct KeySpec {
     // "> 0", "in (-1, 0.5)", "one of \"eq24\", \"eq25\"" or "" (anything of the right type).
     std::string allowed() const;
     std::string default_text() const; // "1.0", "\"cooling\"", "required", the note, or "unset"
+    std::vector<std::string> default_list() const; // a string_list's default: its elements
     std::string type_name() const;    // "real", "integer", "boolean", "string", "[string, string]", "[real, real, real]", ...
     bool allows(double x) const;      // within [lower, upper]
     bool allows(std::string_view s) const;
