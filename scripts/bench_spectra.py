@@ -1,15 +1,19 @@
 #!/usr/bin/env python3
-"""What spectra.csv and modes.csv cost a box run, at an output row per collision per particle.
+"""What spectra.csv, modes.csv and the cell fields cost a box run, at an output row per collision per
+particle.
 
     scripts/python3 scripts/bench_spectra.py [--build build] [--rounds 5] [--sizes 1e5,1e6] [--out out/bench_spectra]
 
 The deck: an elastic hard-sphere gas in a periodic cube, cells of 0.42 mean free paths holding 20
 grains (the DSMC reference deck of bench_box.py), steps of 0.2 mean free times (the default), 30
 collisions per particle with a row after each (150 steps, 31 rows), one thread. The same case is
-run with and without [spectra] (spectra.modes = 3), alternately for --rounds rounds (the order
-reversed every other round, so that a drift of the machine's speed hits both alike). Reported: the
-median and range of the wall time per particle and step of each, and of the ratio with/without
-(docs/performance.md). The machine, date, commit and load are printed with the table.
+run without either, with [spectra] (spectra.modes = 3), with [spectra] and [fields] at their
+defaults (every quantity of every cell at every row, an HDF5 file per row), and with [spectra] and
+the fields n, u, T_tr at every fifth row (as cases/box_cooling_slab.toml writes them), in turn for
+--rounds rounds (the order rotated every round, so that a drift of the machine's speed hits all alike).
+Reported: the median and range of the wall time per particle and step of each, and of the ratios
+to the run without (docs/performance.md). The machine, date, commit and load are printed with the
+table.
 """
 import argparse
 import os
@@ -24,9 +28,14 @@ TIME_STEP = 0.2
 STEPS = round(END / TIME_STEP)
 
 
-def deck(n, spectra):
+SPECTRA = "\n[spectra]\nmodes = 3\n"
+VARIANTS = {"plain": "", "spectra": SPECTRA, "fields": SPECTRA + "\n[fields]\n",
+            "some_fields": SPECTRA + "\n[fields]\nquantities = [\"n\", \"u\", \"T_tr\"]\nevery = 5\n"}
+
+
+def deck(n, variant):
     """The case text for n grains: cells of 0.42 mean free paths with 20 grains each."""
-    return box_deck(n, END, 1.0, TIME_STEP, extra="\n[spectra]\nmodes = 3\n" if spectra else "")
+    return box_deck(n, END, 1.0, TIME_STEP, extra=VARIANTS[variant])
 
 
 def main():
@@ -43,30 +52,31 @@ def main():
     rows = []
     for n in (int(float(x)) for x in a.sizes.split(",")):
         cases = {}
-        for spectra in (False, True):
-            path = os.path.join(a.out, f"deck_{n}_{'spectra' if spectra else 'plain'}.toml")
+        for variant in VARIANTS:
+            path = os.path.join(a.out, f"deck_{n}_{variant}.toml")
             with open(path, "w") as f:
-                f.write(deck(n, spectra))
-            cases[spectra] = path
-        times = {False: [], True: []}
+                f.write(deck(n, variant))
+            cases[variant] = path
+        names = list(VARIANTS)
+        times = {v: [] for v in names}
         for r in range(a.rounds):
-            for spectra in ((False, True) if r % 2 == 0 else (True, False)):
-                t = timed([roughgas, "run", cases[spectra], "--out", os.path.join(a.out, "run"), "--force",
+            for variant in names[r % len(names):] + names[:r % len(names)]:
+                t = timed([roughgas, "run", cases[variant], "--out", os.path.join(a.out, "run"), "--force",
                            "--quiet", "--threads", "1"], "bench_spectra")
-                times[spectra].append(t / (n * STEPS) * 1e9)
-                print(f"  N = {n:.0e}, {'with' if spectra else 'without'} spectra, round {r + 1}: "
-                      f"{times[spectra][-1]:.1f} ns", file=sys.stderr)
+                times[variant].append(t / (n * STEPS) * 1e9)
+                print(f"  N = {n:.0e}, {variant}, round {r + 1}: {times[variant][-1]:.1f} ns", file=sys.stderr)
 
-        def fmt(x):
-            return f"{statistics.median(x):.1f} ({min(x):.1f}-{max(x):.1f})"
-        ratios = [y / x for x, y in zip(times[False], times[True])]
+        def fmt(x, digits=1):
+            return f"{statistics.median(x):.{digits}f} ({min(x):.{digits}f}-{max(x):.{digits}f})"
         cells = max(1, round((n / 20) ** (1 / 3)))
-        rows.append(f"| {n:.0e} | {cells}^3 | {fmt(times[False])} | {fmt(times[True])} | "
-                    f"{statistics.median(ratios):.3f} ({min(ratios):.3f}-{max(ratios):.3f}) |")
+        ratios = {v: [y / x for x, y in zip(times["plain"], times[v])] for v in names[1:]}
+        rows.append(f"| {n:.0e} | {cells}^3 | " + " | ".join(fmt(times[v]) for v in names) + " | " +
+                    " | ".join(fmt(ratios[v], 3) for v in names[1:]) + " |")
     print(measured_line(a.rounds, f"wall ns per particle and step (whole runs: start, initial state, {STEPS} "
                                   f"steps, {round(END) + 1} rows), one thread: median (min-max)", load0, steal0))
-    print("| N | cells | without spectra | with spectra | with/without |")
-    print("|---|---|---|---|---|")
+    print("| N | cells | without | spectra | spectra, fields | spectra, n u T_tr every 5th row | spectra/without "
+          "| spectra, fields/without | spectra, n u T_tr every 5th row/without |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for r in rows:
         print(r)
 

@@ -10,10 +10,12 @@
 #                              plot_profiles.py (the shear mode's last block: --from 60)
 #   docs/box_shear_mode_spectra.png  the same run of box_shear_mode.toml, plot_spectra.py
 #   docs/box_cooling_slab_spectra.png  roughgas run cases/box_cooling_slab.toml, plot_spectra.py --times 5
-# docs/accuracy.png is the work-precision study of docs/accuracy.md (scripts/bench_accuracy.py,
-# minutes of CPU) and docs/transport_errors.png the study of docs/validation.md
-# (scripts/transport_errors.py --collisions 3000 --plot docs/transport_errors.png, ten minutes on
-# two cores): they are not redrawn here.
+#   docs/box_cooling_slab_fields.png   the same run of box_cooling_slab.toml, plot_fields.py --from 140 --times 4
+# Not redrawn here (minutes of CPU each): docs/accuracy.png, the work-precision study of
+# docs/accuracy.md (scripts/bench_accuracy.py); docs/transport_errors.png, the study of
+# docs/validation.md (scripts/transport_errors.py --collisions 3000 --plot docs/transport_errors.png,
+# ten minutes on two cores); docs/instability_map.png, its instability map
+# (scripts/instability_map.py --seeds 8 --plot docs/instability_map.png, eight minutes on two cores).
 # Usage: scripts/docs_figures.sh [WORK_DIR]   (default out/docs_figures; the build must exist)
 set -euo pipefail
 case "${1:-}" in
@@ -60,5 +62,7 @@ for c in couette fourier thermal_walls heated_bed usf shear_mode; do
 done
 "$roughgas" run "$root/cases/box_cooling_slab.toml" --out "$work/box_cooling_slab" --force --quiet
 "$py" "$root/scripts/plot_spectra.py" "$work/box_cooling_slab" --times 5 --out "$root/docs/box_cooling_slab_spectra.png"
+"$py" "$root/scripts/plot_fields.py" "$work/box_cooling_slab" --from 140 --times 4 \
+    --out "$root/docs/box_cooling_slab_fields.png"
 
-echo "docs_figures: redrew docs/ice_normal.png, fig2c_tangential.png, hcs_mixture.png, usf_rough.png, usf_sweep_alpha.png, box_*.png (with the spectra of box_shear_mode and box_cooling_slab)"
+echo "docs_figures: redrew docs/ice_normal.png, fig2c_tangential.png, hcs_mixture.png, usf_rough.png, usf_sweep_alpha.png, box_*.png (with the spectra of box_shear_mode and box_cooling_slab, and the fields of box_cooling_slab)"

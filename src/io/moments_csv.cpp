@@ -1,8 +1,11 @@
 #include "roughgas/io/moments_csv.hpp"
 
 #include "roughgas/dsmc/run.hpp"
+#include "roughgas/dsmc/species.hpp"
 #include "roughgas/io/replica_mean.hpp"
+#include "roughgas/observables/longitudinal_modes.hpp"
 #include "roughgas/observables/profiles.hpp"
+#include "roughgas/observables/shear_mode.hpp"
 
 #include <fmt/format.h>
 
@@ -44,6 +47,27 @@ MomentsTable::MomentsTable(const RunSpec& spec)
                 if (replicas_ > 1)
                     table->push_back({f.name + "_err", f.unit});
             }
+        // The Navier-Stokes rates of each mode where the theory applies: the transverse wave's
+        // (observables/shear_mode.hpp), and for smooth grains the heat and sound modes'
+        // (observables/longitudinal_modes.hpp); per wave number, the same in every block.
+        if (const std::optional<ShearModeTheory> t = shear_mode_theory(spec); t && !modes_.empty()) {
+            const double lambda = mean_free_path(spec.density, 2 * spec.species[0].radius);
+            const bool smooth = t->beta == -1;
+            const std::optional<LongitudinalModeTheory> lt =
+                smooth ? std::optional{smooth_longitudinal_modes(t->alpha)} : std::nullopt;
+            for (const ModeIndex& m : modes_) {
+                std::vector<double>& v = mode_theory_.emplace_back();
+                v.push_back(shear_mode_rate(*t, m.k * lambda));
+                if (lt) {
+                    const LongitudinalModeRates r = longitudinal_mode_rates(*lt, m.k * lambda);
+                    v.insert(v.end(), {r.heat.real(), r.sound[0].real(), std::abs(r.sound[0].imag())});
+                }
+            }
+            modes_columns_.push_back({"gamma_perp_theory", "-"});
+            if (lt)
+                for (const char* name : {"gamma_heat_theory", "gamma_sound_theory", "omega_sound_theory"})
+                    modes_columns_.push_back({name, "-"});
+        }
     }
     if (spec.domain) {
         const int a = spec.domain->profile_axis;
@@ -226,13 +250,16 @@ MomentsTable::combine_spectra(std::span<const std::span<const double>> rows) con
 }
 
 std::vector<std::vector<double>> MomentsTable::combine_modes(std::span<const std::span<const double>> rows) const {
-    return combine_entries(
+    std::vector<std::vector<double>> out = combine_entries(
         rows, modes_.size(),
         [&](std::size_t e) {
             const ModeIndex& m = modes_[e];
             return std::vector<double>{static_cast<double>(m.axis), static_cast<double>(m.n), m.k};
         },
         spectra_start_ + spectrum_bins_.size() * spectrum_field_count, mode_field_count);
+    for (std::size_t e = 0; e < mode_theory_.size(); ++e)
+        out[e].insert(out[e].end(), mode_theory_[e].begin(), mode_theory_[e].end());
+    return out;
 }
 
 std::vector<double> MomentsTable::combine(std::span<const std::span<const double>> rows) {

@@ -7,6 +7,7 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <variant>
 
 namespace roughgas {
 
@@ -54,6 +55,15 @@ ShearModeTheory rough_shear_mode(double alpha, double beta, double q) {
 
 double shear_mode_rate(const ShearModeTheory& t, double k_lambda) {
     return t.growth - t.damping * k_lambda * k_lambda;
+}
+
+std::optional<ShearModeTheory> shear_mode_theory(const RunSpec& spec) {
+    if (!spec.domain || spec.shear || spec.domain->has_walls() || spec.domain->has_gravity())
+        return std::nullopt;
+    const auto* c = spec.pairs.size() == 1 ? std::get_if<ConstantRestitution>(&spec.pairs[0]) : nullptr;
+    if (spec.species.size() != 1 || c == nullptr)
+        return std::nullopt;
+    return rough_shear_mode(c->alpha, c->beta, spec.species[0].inertia);
 }
 
 } // namespace roughgas

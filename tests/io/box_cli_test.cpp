@@ -6,6 +6,8 @@
 
 #include "roughgas/io/fields_file.hpp"
 #include "roughgas/io/fields_series.hpp"
+#include "roughgas/observables/longitudinal_modes.hpp"
+#include "roughgas/observables/shear_mode.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -149,6 +151,14 @@ TEST(BoxCli, SpectraAndModesOfATransverseWave) {
     EXPECT_NEAR(m.at("u_x_im")[1], 0.0, 5 * se_u);
     EXPECT_NEAR(m.at("n_re")[1], 0.0, 5 * se_n);
     EXPECT_NEAR(m.at("n_im")[1], 0.0, 5 * se_n);
+    // gamma_perp_theory: the transverse wave's Navier-Stokes rate at each row's k, the same in every
+    // block: growth - damping (k lambda)^2 with lambda = 1/(sqrt(2) pi n sigma^2) of the case.
+    const ShearModeTheory theory = rough_shear_mode(0.9, 0.4, 0.4);
+    const double lambda = 1 / (std::sqrt(2.0) * std::numbers::pi * 0.02);
+    for (std::size_t i = 0; i < m.at("t").size(); ++i) {
+        const double kl = m.at("k")[i] * lambda;
+        EXPECT_NEAR(m.at("gamma_perp_theory")[i], theory.growth - theory.damping * kl * kl, 1e-12 * kl * kl) << i;
+    }
     EXPECT_EQ(s.at("t").size() % rows, 0u);
     const std::size_t block = s.at("t").size() / rows;
     int seen = 0;
@@ -161,6 +171,21 @@ TEST(BoxCli, SpectraAndModesOfATransverseWave) {
     }
     EXPECT_EQ(seen, 1);
     EXPECT_GT(s.at("t")[block], 0.0);
+    EXPECT_EQ(m.count("gamma_heat_theory"), 0u) << "rough grains have no longitudinal theory columns";
+    // Smooth grains: the longitudinal modes' eigenvalues at each row's k beside the transverse one.
+    const fs::path smooth = dir.write("smooth.toml", replaced(c, "beta = 0.4", "beta = -1.0"));
+    ASSERT_EQ(test::run_roughgas("run " + q(smooth) + " --quiet --set run.end=0.5 --out " + q(dir / "smooth"), dir).status,
+              0);
+    const auto ms = test::read_csv(dir / "smooth" / "modes.csv");
+    const LongitudinalModeTheory lt = smooth_longitudinal_modes(0.9);
+    for (std::size_t i = 0; i < ms.at("t").size(); ++i) {
+        const double kl = ms.at("k")[i] * lambda;
+        const LongitudinalModeRates r = longitudinal_mode_rates(lt, kl);
+        EXPECT_EQ(ms.at("gamma_perp_theory")[i], shear_mode_rate(lt.shear, kl)) << i;
+        EXPECT_EQ(ms.at("gamma_heat_theory")[i], r.heat.real()) << i;
+        EXPECT_EQ(ms.at("gamma_sound_theory")[i], r.sound[0].real()) << i;
+        EXPECT_EQ(ms.at("omega_sound_theory")[i], std::abs(r.sound[0].imag())) << i;
+    }
     const fs::path none = dir.write("none.toml", replaced(c, "modes = 2", "modes = 0"));
     ASSERT_EQ(test::run_roughgas("run " + q(none) + " --quiet --out " + q(dir / "none"), dir).status, 0);
     EXPECT_TRUE(fs::exists(dir / "none" / "spectra.csv"));
@@ -260,6 +285,14 @@ TEST(BoxCli, CheckStatesTheShearModesStability) {
                                 "longer: linearly unstable: its longest transverse wave grows"),
               std::string::npos)
         << unstable.out;
+    // Smooth grains: the heat mode too (observables/longitudinal_modes.hpp), at alpha = 0.8.
+    const LongitudinalModeTheory heat = smooth_longitudinal_modes(0.8);
+    EXPECT_NE(unstable.out.find(fmt::format("heat mode (density clusters): critical length {:.4g} mean free paths, "
+                                            "the box is longer: the heat mode of its longest wave grows",
+                                            heat.critical_length)),
+              std::string::npos)
+        << unstable.out;
+    EXPECT_EQ(rough.out.find("heat mode"), std::string::npos) << rough.out;
     const test::CommandResult stable = test::run_roughgas(
         "check '" + c + "' --set collision.beta=-1 --set 'domain.size=[200.0,11.25,11.25]' --set 'domain.cells=[60,3,3]'",
         dir);

@@ -52,7 +52,9 @@ class MomentsTable {
     // spectra.csv and modes.csv (box runs with spectra; empty otherwise; observables/spectra.hpp):
     // t, coll_per_particle, axis (0: shells of |k|; 1, 2, 3: along x, y, z), n (the shell or wave
     // number), k, n_modes (spectra.csv only), then the fields, with replicas > 1 each followed by
-    // X_err; one row per shell or wave number.
+    // X_err; one row per shell or wave number; modes.csv ends with the theory's rates where
+    // shear_mode_theory applies (gamma_perp_theory; for smooth grains also gamma_heat_theory,
+    // gamma_sound_theory, omega_sound_theory).
     const std::vector<Column>& spectra_table_columns() const { return spectra_columns_; }
     const std::vector<Column>& modes_table_columns() const { return modes_columns_; }
     bool has_theory() const { return trajectory_.has_value(); }
@@ -90,6 +92,7 @@ class MomentsTable {
     std::size_t spectra_start_ = 0;     // the first spectra value in a replica row
     std::vector<SpectrumBin> spectrum_bins_;
     std::vector<ModeIndex> modes_;
+    std::vector<std::vector<double>> mode_theory_; // per mode, its theory columns (empty: none)
     // One block of profiles.csv, spectra.csv or modes.csv rows: per entry, t and coll_per_particle,
     // head(entry), then the replicas' mean (and error) of its `count` fields from `first` in the row.
     std::vector<std::vector<double>> combine_entries(std::span<const std::span<const double>> rows,

@@ -36,6 +36,10 @@
 // viscosity 6 (1 + q)^2/(6 + 13 q) eta_0. Medium roughness makes the gas more unstable than smooth
 // grains (L_c = 15.3 lambda at alpha = 0.9, beta = 0, q = 2/5), nearly perfect roughness less (36.7
 // lambda at beta = 1): the "dual role" of roughness (Garzo, Santos & Kremer 2018).
+#include "roughgas/dsmc/run_spec.hpp"
+
+#include <optional>
+
 namespace roughgas {
 
 struct ShearModeTheory {
@@ -58,5 +62,9 @@ ShearModeTheory rough_shear_mode(double alpha, double beta, double q);
 
 // gamma(k) per collision per particle, for k lambda = `k_lambda`.
 double shear_mode_rate(const ShearModeTheory& t, double k_lambda);
+
+// The theory of a run's cooling state when it applies: a freely cooling periodic box (no shear, walls
+// or gravity) of grains of one species with constant alpha and beta; nullopt otherwise.
+std::optional<ShearModeTheory> shear_mode_theory(const RunSpec& spec);
 
 } // namespace roughgas
