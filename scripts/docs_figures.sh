@@ -11,6 +11,8 @@
 #   docs/box_shear_mode_spectra.png  the same run of box_shear_mode.toml, plot_spectra.py
 #   docs/box_cooling_slab_spectra.png  roughgas run cases/box_cooling_slab.toml, plot_spectra.py --times 5
 #   docs/box_cooling_slab_fields.png   the same run of box_cooling_slab.toml, plot_fields.py --from 140 --times 4
+#   docs/box_cooling_slab_{medium,strong}_roughness_fields.png  roughgas run of those cases, plot_fields.py
+#                              --from 20 and --from 300, --times 4
 # Not redrawn here (minutes of CPU each): docs/accuracy.png, the work-precision study of
 # docs/accuracy.md (scripts/bench_accuracy.py); docs/transport_errors.png, the study of
 # docs/validation.md (scripts/transport_errors.py --collisions 3000 --plot docs/transport_errors.png,
@@ -64,5 +66,10 @@ done
 "$py" "$root/scripts/plot_spectra.py" "$work/box_cooling_slab" --times 5 --out "$root/docs/box_cooling_slab_spectra.png"
 "$py" "$root/scripts/plot_fields.py" "$work/box_cooling_slab" --from 140 --times 4 \
     --out "$root/docs/box_cooling_slab_fields.png"
+for c in medium:20 strong:300; do
+  r="box_cooling_slab_${c%%:*}_roughness"
+  "$roughgas" run "$root/cases/$r.toml" --out "$work/$r" --force --quiet
+  "$py" "$root/scripts/plot_fields.py" "$work/$r" --from "${c##*:}" --times 4 --out "$root/docs/${r}_fields.png"
+done
 
-echo "docs_figures: redrew docs/ice_normal.png, fig2c_tangential.png, hcs_mixture.png, usf_rough.png, usf_sweep_alpha.png, box_*.png (with the spectra of box_shear_mode and box_cooling_slab, and the fields of box_cooling_slab)"
+echo "docs_figures: redrew docs/ice_normal.png, fig2c_tangential.png, hcs_mixture.png, usf_rough.png, usf_sweep_alpha.png, box_*.png (with the spectra of box_shear_mode and box_cooling_slab, and the fields of the three cooling slabs)"
