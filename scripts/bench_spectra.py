@@ -12,8 +12,10 @@ defaults (every quantity of every cell at every row, an HDF5 file per row), and 
 the fields n, u, T_tr at every fifth row (as cases/box_cooling_slab.toml writes them), in turn for
 --rounds rounds (the order rotated every round, so that a drift of the machine's speed hits all alike).
 Reported: the median and range of the wall time per particle and step of each, and of the ratios
-to the run without (docs/performance.md). The machine, date, commit and load are printed with the
-table.
+to the run without, of the wall times and of the processes' CPU times (the fields are written on a
+thread of their own, behind the run: the wall time shows what the user waits for, the CPU time
+what the writing costs a machine whose cores are all busy) (docs/performance.md). The machine,
+date, commit and load are printed with the table.
 """
 import argparse
 import os
@@ -21,7 +23,7 @@ import statistics
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_common import box_deck, cpu_times, loadavg, machine, measured_line, timed  # noqa: E402
+from bench_common import box_deck, cpu_times, loadavg, machine, measured_line, run_roughgas  # noqa: E402
 
 END = 30.0              # collisions per particle, a row after each
 TIME_STEP = 0.2
@@ -59,24 +61,32 @@ def main():
             cases[variant] = path
         names = list(VARIANTS)
         times = {v: [] for v in names}
+        cpu = {v: [] for v in names}
         for r in range(a.rounds):
             for variant in names[r % len(names):] + names[:r % len(names)]:
-                t = timed([roughgas, "run", cases[variant], "--out", os.path.join(a.out, "run"), "--force",
-                           "--quiet", "--threads", "1"], "bench_spectra")
-                times[variant].append(t / (n * STEPS) * 1e9)
-                print(f"  N = {n:.0e}, {variant}, round {r + 1}: {times[variant][-1]:.1f} ns", file=sys.stderr)
+                try:
+                    res = run_roughgas(roughgas, cases[variant], os.path.join(a.out, "run"))
+                except RuntimeError as e:
+                    sys.exit(f"bench_spectra: {e}")
+                times[variant].append(res["process_seconds"] / (n * STEPS) * 1e9)
+                cpu[variant].append(res["cpu_seconds"] / (n * STEPS) * 1e9)
+                print(f"  N = {n:.0e}, {variant}, round {r + 1}: {times[variant][-1]:.1f} ns wall, "
+                      f"{cpu[variant][-1]:.1f} ns CPU", file=sys.stderr)
 
         def fmt(x, digits=1):
             return f"{statistics.median(x):.{digits}f} ({min(x):.{digits}f}-{max(x):.{digits}f})"
         cells = max(1, round((n / 20) ** (1 / 3)))
         ratios = {v: [y / x for x, y in zip(times["plain"], times[v])] for v in names[1:]}
+        cpu_ratios = {v: [y / x for x, y in zip(cpu["plain"], cpu[v])] for v in names[1:]}
         rows.append(f"| {n:.0e} | {cells}^3 | " + " | ".join(fmt(times[v]) for v in names) + " | " +
-                    " | ".join(fmt(ratios[v], 3) for v in names[1:]) + " |")
+                    " | ".join(fmt(ratios[v], 3) for v in names[1:]) + " | " +
+                    " | ".join(fmt(cpu_ratios[v], 3) for v in names[1:]) + " |")
     print(measured_line(a.rounds, f"wall ns per particle and step (whole runs: start, initial state, {STEPS} "
                                   f"steps, {round(END) + 1} rows), one thread: median (min-max)", load0, steal0))
     print("| N | cells | without | spectra | spectra, fields | spectra, n u T_tr every 5th row | spectra/without "
-          "| spectra, fields/without | spectra, n u T_tr every 5th row/without |")
-    print("|---|---|---|---|---|---|---|---|---|")
+          "| spectra, fields/without | spectra, n u T_tr every 5th row/without | CPU: spectra/without "
+          "| CPU: spectra, fields/without | CPU: spectra, n u T_tr every 5th row/without |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for r in rows:
         print(r)
 

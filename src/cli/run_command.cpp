@@ -663,22 +663,29 @@ int run_run(const RunOptions& o, const Communicator& comm) {
                     flush_histograms();
                 };
             }
-            ReplicaCheckpoints ck;
-            ck.every = checkpoint_every;
-            ck.save = [&, r](std::string state) { save_replica(r, std::move(state)); };
-            ck.stop = [&] { return signals.requested(); };
-            if (setup.resuming && setup.resumed[k]) // checked before the run; read again now (memory)
-                ck.resume = read_replica_state(dir, k, setup.manifest.run);
-            // The replica's cell fields: written from its own thread, each replica to its own files.
+            // The replica's cell fields: each replica to its own files, written behind the run
+            // (io/fields_series.hpp).
             std::optional<FieldsSeries> series;
             FieldSink fsink;
             if (spec.domain && spec.domain->fields && r < spec.domain->fields->replicas) {
                 series.emplace(dir, r, *spec.domain, setup.resuming);
                 fsink = [&series](const FieldSnapshot& s) { series->add(s); };
             }
+            ReplicaCheckpoints ck;
+            ck.every = checkpoint_every;
+            ck.save = [&, r](std::string state) {
+                if (series) // the snapshots before a checkpoint are on disk before it
+                    series->flush();
+                save_replica(r, std::move(state));
+            };
+            ck.stop = [&] { return signals.requested(); };
+            if (setup.resuming && setup.resumed[k]) // checked before the run; read again now (memory)
+                ck.resume = read_replica_state(dir, k, setup.manifest.run);
             ReplicaEnd end;
             try {
                 end = run_replica(spec, *tables, r, sink, report, &summaries[k], hsink, &ck, fsink);
+                if (series)
+                    series->flush();
             } catch (const ResumeError& e) {
                 const fs::path file = replica_checkpoint_path(dir, k);
                 throw InputError(file.string(), "--resume",

@@ -18,9 +18,11 @@
 #include "roughgas/dsmc/spatial_engine.hpp"
 #include "roughgas/observables/pressure.hpp"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -112,7 +114,26 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
     // once per state (a row repeated for outputs its step passed has the same fields).
     const bool writes_fields = domain.fields && io.fields && replica < domain.fields->replicas;
     const std::array<bool, 3> walled{domain.walled(0), domain.walled(1), domain.walled(2)};
-    std::optional<CellFields> cell_fields;
+    std::shared_ptr<const CellFields> cell_fields;
+    // Two buffers for them, each reused once its snapshot is written (io/fields_series.hpp writes
+    // one snapshot behind the run).
+    std::array<std::shared_ptr<CellFields>, 2> field_buffers;
+    const auto field_buffer = [&]() -> CellFields& {
+        auto& buffer = field_buffers[0].use_count() <= 1 ? field_buffers[0] : field_buffers[1];
+        if (!buffer || buffer.use_count() > 1)
+            buffer = std::make_shared<CellFields>();
+        cell_fields = buffer;
+        return *buffer;
+    };
+    const auto fields_at = [&](std::size_t row_index) {
+        return writes_fields && row_index % static_cast<std::size_t>(domain.fields->every) == 0;
+    };
+    // A row that writes fields takes its profiles from the cells' sums, one pass over the grains for
+    // both, where the profile bins are layers of cells with walls only across them.
+    bool other_walls = false;
+    for (int a = 0; a < 3; ++a)
+        other_walls = other_walls || (a != domain.profile_axis && domain.walled(a));
+    const bool fused_profiles = !other_walls;
 
     const auto state = [&] {
         ByteWriter w;
@@ -146,9 +167,15 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
             profile_geometry.half_flight = nu > 0 && std::isfinite(nu) ? 0.5 * domain.time_step / nu : 0.0;
             profile_geometry.time = t;
             const std::vector<Virial> virial = engine.take_virial();
+            const double profile_dt = first ? nan : t - t_prev;
             const std::vector<double> profiles =
-                compute_profiles(profile_geometry, engine.positions(), engine.velocities(),
-                                 engine.angular_velocities(), blocks, virial, first ? nan : t - t_prev);
+                fused_profiles && fields_at(row_index)
+                    ? compute_cell_fields_and_profiles(profile_geometry, domain.cells, walled,
+                                                       domain.fields->quantities, engine.positions(),
+                                                       engine.velocities(), engine.angular_velocities(), blocks,
+                                                       virial, profile_dt, field_buffer())
+                    : compute_profiles(profile_geometry, engine.positions(), engine.velocities(),
+                                       engine.angular_velocities(), blocks, virial, profile_dt);
             // A sheared box: the moments of the peculiar velocities (about the images' flow) in the
             // middle of the next flight, as the profiles (observables/profiles.hpp) and as the
             // homogeneous shear runs' Strang steps report them (half a stream after the collisions:
@@ -207,13 +234,13 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
             c_prev = c;
             tally.next_interval();
         }
-        if (writes_fields && row_index % static_cast<std::size_t>(domain.fields->every) == 0) {
-            if (!cell_fields)
-                cell_fields = compute_cell_fields(profile_geometry, domain.cells, walled, domain.fields->quantities,
-                                                  engine.positions(), engine.velocities(),
-                                                  engine.angular_velocities(), blocks);
+        if (fields_at(row_index)) {
+            if (!cell_fields) // a repeated row's state, or walls across another axis than the profiles'
+                compute_cell_fields(profile_geometry, domain.cells, walled, domain.fields->quantities,
+                                    engine.positions(), engine.velocities(), engine.angular_velocities(), blocks,
+                                    field_buffer());
             io.fields(FieldSnapshot{row_index, engine.time(), 2.0 * static_cast<double>(engine.collisions()) / N,
-                                    *cell_fields});
+                                    cell_fields});
         }
         io.sink(row);
     };

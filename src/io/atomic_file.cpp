@@ -18,10 +18,16 @@ namespace {
 // write_file_atomically cleans up.
 class TemporaryFile {
   public:
-    explicit TemporaryFile(std::filesystem::path path) : path_(std::move(path)) {
-        fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-        if (fd_ < 0)
-            fail("cannot create", path_, errno);
+    // `existing`: a file already written, to be synced and renamed (else created empty).
+    explicit TemporaryFile(std::filesystem::path path, bool existing = false) : path_(std::move(path)) {
+        fd_ = existing ? ::open(path_.c_str(), O_RDONLY | O_CLOEXEC)
+                       : ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+        if (fd_ < 0) {
+            const int err = errno;
+            if (existing)
+                ::unlink(path_.c_str());
+            fail(existing ? "cannot open" : "cannot create", path_, err);
+        }
     }
     TemporaryFile(const TemporaryFile&) = delete;
     TemporaryFile& operator=(const TemporaryFile&) = delete;
@@ -84,6 +90,12 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
     TemporaryFile tmp(temporary_path(path));
     tmp.write(contents);
     tmp.commit(path);
+    sync_directory(path.parent_path());
+}
+
+void publish_file_atomically(const std::filesystem::path& tmp, const std::filesystem::path& path) {
+    TemporaryFile file(tmp, true);
+    file.commit(path);
     sync_directory(path.parent_path());
 }
 

@@ -22,8 +22,9 @@ std::mutex& hdf5_mutex() {
 }
 std::unique_lock<std::mutex> lock_hdf5() {
     std::unique_lock<std::mutex> lock(hdf5_mutex());
-    static const bool quiet = [] { return H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr) >= 0; }();
-    (void)quiet;
+    // HDF5 prints its error stack unless told not to, per thread where it is built thread-safe;
+    // its failures reach the user as exceptions naming the file instead.
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
     return lock;
 }
 
@@ -84,34 +85,21 @@ template <class T> void get_attribute(hid_t where, const char* name, hid_t memor
 }
 
 // A file's bytes, not zeroed before HDF5 writes them.
-struct FileImage {
-    std::unique_ptr<char[]> bytes;
-    std::size_t size = 0;
-};
-
-// The file's bytes, built with the in-memory driver (no file on disk until the atomic write). The
-// driver's memory grows in steps of the datasets' size and a margin for the metadata: one
-// allocation, not a copy of the image at every megabyte.
-FileImage file_image(const std::filesystem::path& path, const FieldsFileHeader& h, const CellFields& f) {
-    std::size_t data_bytes = 0;
-    for (const std::vector<double>& v : f.values)
-        data_bytes += v.size() * sizeof(double);
-    const Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, path, "make file properties");
-    check(H5Pset_fapl_core(fapl, data_bytes + (64 << 10), 0), path, "choose the in-memory driver");
-    // No times in the objects' headers: the same snapshot gives the same bytes (a resumed run's
-    // files are those of the run never stopped).
+// Writes the file at `file` (a temporary name) with HDF5's own POSIX driver: the datasets go from
+// the fields' arrays to the file without a copy in between. `path` names the file in messages.
+void write_hdf5(const std::filesystem::path& file, const std::filesystem::path& path, const FieldsFileHeader& h,
+                const CellFields& f) {
     const Handle fcpl(H5Pcreate(H5P_FILE_CREATE), H5Pclose, path, "make file properties");
     const Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, path, "make dataset properties");
     check(H5Pset_obj_track_times(fcpl, 0), path, "leave out the times");
     check(H5Pset_obj_track_times(dcpl, 0), path, "leave out the times");
-    const Handle file(H5Fcreate(path.filename().c_str(), H5F_ACC_TRUNC, fcpl, fapl), H5Fclose, path,
-                      "create the file");
-    put_attribute(file, "t", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &h.t, 1, path);
-    put_attribute(file, "coll_per_particle", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &h.coll_per_particle, 1, path);
-    put_attribute(file, "row", H5T_STD_U64LE, H5T_NATIVE_UINT64, &h.row, 1, path);
-    put_attribute(file, "replica", H5T_STD_I64LE, H5T_NATIVE_INT64, &h.replica, 1, path);
-    put_attribute(file, "box", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, h.box.data(), 3, path);
-    put_attribute(file, "cells", H5T_STD_I64LE, H5T_NATIVE_INT64, h.cells.data(), 3, path);
+    const Handle out(H5Fcreate(file.c_str(), H5F_ACC_TRUNC, fcpl, H5P_DEFAULT), H5Fclose, path, "create the file");
+    put_attribute(out, "t", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &h.t, 1, path);
+    put_attribute(out, "coll_per_particle", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &h.coll_per_particle, 1, path);
+    put_attribute(out, "row", H5T_STD_U64LE, H5T_NATIVE_UINT64, &h.row, 1, path);
+    put_attribute(out, "replica", H5T_STD_I64LE, H5T_NATIVE_INT64, &h.replica, 1, path);
+    put_attribute(out, "box", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, h.box.data(), 3, path);
+    put_attribute(out, "cells", H5T_STD_I64LE, H5T_NATIVE_INT64, h.cells.data(), 3, path);
     for (std::size_t k = 0; k < f.quantities.size(); ++k) {
         const int C = field_components(f.quantities[k]);
         const hsize_t dims[4] = {static_cast<hsize_t>(f.cells[2]), static_cast<hsize_t>(f.cells[1]),
@@ -120,32 +108,27 @@ FileImage file_image(const std::filesystem::path& path, const FieldsFileHeader& 
             throw std::logic_error("write_fields_file: a quantity has the wrong number of values");
         const Handle space(H5Screate_simple(C == 1 ? 3 : 4, dims, nullptr), H5Sclose, path, "make a dataspace");
         const std::string name(field_quantity_names[static_cast<std::size_t>(f.quantities[k])]);
-        const Handle set(H5Dcreate2(file, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT),
+        const Handle set(H5Dcreate2(out, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT),
                          H5Dclose, path, "create a dataset");
         check(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, f.values[k].data()), path,
               "write a dataset");
         put_string_attribute(set, "unit", std::string(field_unit(f.quantities[k])), path);
     }
-    check(H5Fflush(file, H5F_SCOPE_GLOBAL), path, "flush the file");
-    const ssize_t size = H5Fget_file_image(file, nullptr, 0);
-    if (size <= 0)
-        throw std::runtime_error("HDF5: cannot take the file's image in " + path.string());
-    FileImage image{std::make_unique_for_overwrite<char[]>(static_cast<std::size_t>(size)),
-                    static_cast<std::size_t>(size)};
-    if (H5Fget_file_image(file, image.bytes.get(), image.size) != size)
-        throw std::runtime_error("HDF5: cannot take the file's image in " + path.string());
-    return image;
 }
 
 } // namespace
 
 void write_fields_file(const std::filesystem::path& path, const FieldsFileHeader& header, const CellFields& fields) {
-    FileImage image;
-    {
+    const std::filesystem::path tmp = temporary_path(path);
+    try {
         const auto lock = lock_hdf5();
-        image = file_image(path, header, fields);
+        write_hdf5(tmp, path, header, fields);
+    } catch (...) {
+        std::error_code ec;
+        std::filesystem::remove(tmp, ec);
+        throw;
     }
-    write_file_atomically(path, std::string_view(image.bytes.get(), image.size));
+    publish_file_atomically(tmp, path);
 }
 
 FieldsFileHeader read_fields_header(const std::filesystem::path& path) {

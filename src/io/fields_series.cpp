@@ -93,7 +93,24 @@ FieldsSeries::FieldsSeries(const fs::path& run_dir, int replica, const DomainSpe
     std::sort(entries_.begin(), entries_.end(), [](const FieldsEntry& a, const FieldsEntry& b) { return a.row < b.row; });
 }
 
-void FieldsSeries::add(const FieldSnapshot& s) {
+FieldsSeries::~FieldsSeries() {
+    if (writing_.valid())
+        writing_.wait();
+}
+
+void FieldsSeries::add(FieldSnapshot s) {
+    if (!s.fields)
+        throw std::invalid_argument("FieldsSeries::add: a snapshot without fields");
+    flush();
+    writing_ = std::async(std::launch::async, [this, s = std::move(s)] { write(s); });
+}
+
+void FieldsSeries::flush() {
+    if (writing_.valid())
+        writing_.get();
+}
+
+void FieldsSeries::write(const FieldSnapshot& s) {
     const fs::path file = dir_ / file_name(s.row);
     FieldsFileHeader h;
     h.t = s.t;
@@ -102,8 +119,8 @@ void FieldsSeries::add(const FieldSnapshot& s) {
     h.replica = replica_;
     h.box = box_;
     for (std::size_t a = 0; a < 3; ++a)
-        h.cells[a] = s.fields.cells[a];
-    write_fields_file(file, h, s.fields);
+        h.cells[a] = s.fields->cells[a];
+    write_fields_file(file, h, *s.fields);
     while (!entries_.empty() && entries_.back().row >= s.row) {
         if (entries_.back().row > s.row) {
             std::error_code ec;
@@ -112,7 +129,7 @@ void FieldsSeries::add(const FieldSnapshot& s) {
         entries_.pop_back();
     }
     entries_.push_back({s.row, s.t, file});
-    write_file_atomically(xdmf_, fields_xdmf(entries_, s.fields.cells, box_, s.fields.quantities, replica_));
+    write_file_atomically(xdmf_, fields_xdmf(entries_, s.fields->cells, box_, s.fields->quantities, replica_));
 }
 
 } // namespace roughgas

@@ -89,4 +89,42 @@ std::vector<BinSums> bin_sums(const FlightSampling& s, const BinGrid& g, const s
     return sums;
 }
 
+std::vector<BinSums> layer_sums(const std::vector<BinSums>& cells, const BinGrid& g, int axis, bool rotation) {
+    const auto a = static_cast<std::size_t>(axis);
+    const std::size_t stride = a == 0 ? 1 : a == 1 ? static_cast<std::size_t>(g.bins[0])
+                                                    : static_cast<std::size_t>(g.bins[0]) * static_cast<std::size_t>(g.bins[1]);
+    const auto layers = static_cast<std::size_t>(g.bins[a]);
+    const auto layer_of = [&](std::size_t k) { return k / stride % layers; };
+    std::vector<BinSums> out(layers);
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+        const BinSums& c = cells[k];
+        BinSums& l = out[layer_of(k)];
+        l.count += c.count;
+        l.mass += c.mass;
+        l.rot += c.rot;
+        l.momentum += c.momentum;
+        l.spin += c.spin;
+    }
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+        const BinSums& c = cells[k];
+        if (c.count == 0)
+            continue;
+        BinSums& l = out[layer_of(k)];
+        const Vec3 d = c.flow() - l.flow();
+        const double M = c.mass;
+        l.cc[0] += c.cc[0] + M * d.x * d.x;
+        l.cc[1] += c.cc[1] + M * d.y * d.y;
+        l.cc[2] += c.cc[2] + M * d.z * d.z;
+        l.cc[3] += c.cc[3] + M * d.x * d.y;
+        l.cc[4] += c.cc[4] + M * d.x * d.z;
+        l.cc[5] += c.cc[5] + M * d.y * d.z;
+        const Vec3 Cd{c.cc[0] * d.x + c.cc[3] * d.y + c.cc[4] * d.z, c.cc[3] * d.x + c.cc[1] * d.y + c.cc[5] * d.z,
+                      c.cc[4] * d.x + c.cc[5] * d.y + c.cc[2] * d.z};
+        l.heat += c.heat + Cd + (0.5 * (c.cc[0] + c.cc[1] + c.cc[2]) + 0.5 * M * norm2(d)) * d;
+        if (rotation)
+            l.heat += (0.5 * c.rot) * d;
+    }
+    return out;
+}
+
 } // namespace roughgas::detail

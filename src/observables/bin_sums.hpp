@@ -34,4 +34,16 @@ std::vector<BinSums> bin_sums(const FlightSampling& s, const BinGrid& g, const s
                               const std::vector<Vec3>& v, const std::vector<Vec3>& w,
                               const std::vector<SpeciesBlock>& species);
 
+// The sums of the layers of cells along `axis` (cells: bin_sums over a grid of every cell; the
+// layers: what bin_sums over that axis's bins alone would give, to round-off): the counts, masses,
+// momenta, spins and rotational energies add, the moments about each layer's flow U follow from
+// those about the cells' flows U_c with d = U_c - U (the parallel-axis identities):
+//   sum m c_a c_b = sum_cells [C_ab + M_c d_a d_b],
+//   sum (m c^2/2) c = sum_cells [Q + C.d + (tr C/2) d + (M_c d^2/2) d] (+ (rot_c/2) d with `rotation`).
+std::vector<BinSums> layer_sums(const std::vector<BinSums>& cells, const BinGrid& g, int axis, bool rotation);
+
+// The profiles (compute_profiles' layout) from the sums of their bins.
+std::vector<double> profiles_from_sums(const ProfileGeometry& g, const std::vector<BinSums>& sums,
+                                       const std::vector<Virial>& virial, double dt);
+
 } // namespace roughgas::detail

@@ -33,6 +33,14 @@ CellFields compute_cell_fields(const FlightSampling& s, const std::array<int, 3>
                                const std::array<bool, 3>& walled, const std::vector<FieldQuantity>& quantities,
                                const std::vector<Vec3>& x, const std::vector<Vec3>& v, const std::vector<Vec3>& w,
                                const std::vector<SpeciesBlock>& species) {
+    CellFields out;
+    compute_cell_fields(s, cells, walled, quantities, x, v, w, species, out);
+    return out;
+}
+
+namespace {
+
+detail::BinGrid cell_grid(const FlightSampling& s, const std::array<int, 3>& cells, const std::array<bool, 3>& walled) {
     detail::BinGrid grid;
     grid.bins = cells;
     grid.length = s.box;
@@ -40,16 +48,22 @@ CellFields compute_cell_fields(const FlightSampling& s, const std::array<int, 3>
     for (std::size_t a = 0; a < 3; ++a)
         if (cells[a] < 1 || !(s.box[a] > 0))
             throw std::invalid_argument("compute_cell_fields: cells and box must be positive");
-    const std::vector<detail::BinSums> sums = detail::bin_sums(s, grid, x, v, w, species);
+    return grid;
+}
+
+void fields_from_sums(const FlightSampling& s, const detail::BinGrid& grid, const std::vector<detail::BinSums>& sums,
+                      const std::vector<FieldQuantity>& quantities, CellFields& out) {
+    const std::array<int, 3>& cells = grid.bins;
     const double f = s.weight * static_cast<double>(grid.size()) / (s.box[0] * s.box[1] * s.box[2]); // F / V_c
     const double nan = std::numeric_limits<double>::quiet_NaN();
 
-    CellFields out;
     out.cells = cells;
     out.quantities = quantities;
     out.values.resize(quantities.size());
-    for (std::size_t k = 0; k < quantities.size(); ++k)
+    for (std::size_t k = 0; k < quantities.size(); ++k) {
+        out.values[k].clear();
         out.values[k].reserve(sums.size() * static_cast<std::size_t>(field_components(quantities[k])));
+    }
     for (const detail::BinSums& b : sums) {
         const bool empty = b.count == 0;
         const double T_tr = empty ? nan : (b.cc[0] + b.cc[1] + b.cc[2]) / (3 * b.count);
@@ -88,7 +102,36 @@ CellFields compute_cell_fields(const FlightSampling& s, const std::array<int, 3>
             }
         }
     }
-    return out;
+}
+
+} // namespace
+
+void compute_cell_fields(const FlightSampling& s, const std::array<int, 3>& cells, const std::array<bool, 3>& walled,
+                         const std::vector<FieldQuantity>& quantities, const std::vector<Vec3>& x,
+                         const std::vector<Vec3>& v, const std::vector<Vec3>& w,
+                         const std::vector<SpeciesBlock>& species, CellFields& out) {
+    const detail::BinGrid grid = cell_grid(s, cells, walled);
+    fields_from_sums(s, grid, detail::bin_sums(s, grid, x, v, w, species), quantities, out);
+}
+
+std::vector<double> compute_cell_fields_and_profiles(const ProfileGeometry& g, const std::array<int, 3>& cells,
+                                                     const std::array<bool, 3>& walled,
+                                                     const std::vector<FieldQuantity>& quantities,
+                                                     const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+                                                     const std::vector<Vec3>& w, const std::vector<SpeciesBlock>& species,
+                                                     const std::vector<Virial>& virial, double dt, CellFields& out) {
+    const auto axis = static_cast<std::size_t>(g.axis);
+    // The profile's own pass reflects the grains only at the walls across its axis.
+    bool other_walls = false;
+    for (std::size_t a = 0; a < 3; ++a)
+        other_walls = other_walls || (a != axis && walled[a]);
+    if (axis > 2 || g.bins != cells[axis] || g.length != g.box[axis] || walled[axis] == g.periodic || other_walls)
+        throw std::invalid_argument(
+            "compute_cell_fields_and_profiles: the profile bins must be layers of cells, walls only across them");
+    const detail::BinGrid grid = cell_grid(g, cells, walled);
+    const std::vector<detail::BinSums> sums = detail::bin_sums(g, grid, x, v, w, species);
+    fields_from_sums(g, grid, sums, quantities, out);
+    return detail::profiles_from_sums(g, detail::layer_sums(sums, grid, g.axis, g.rotation), virial, dt);
 }
 
 } // namespace roughgas

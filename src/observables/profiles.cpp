@@ -31,20 +31,28 @@ std::vector<double> compute_profiles(const ProfileGeometry& g, const std::vector
                                      const std::vector<Virial>& virial, double dt) {
     if (g.bins < 1 || virial.size() != static_cast<std::size_t>(g.bins))
         throw std::invalid_argument("compute_profiles: one virial per bin needed");
-    const auto B = static_cast<std::size_t>(g.bins);
     detail::BinGrid grid;
     grid.length = g.box;
     const auto axis = static_cast<std::size_t>(g.axis);
     grid.bins[axis] = g.bins;
     grid.length[axis] = g.length;
     grid.walled[axis] = !g.periodic;
-    const std::vector<detail::BinSums> s = detail::bin_sums(g, grid, x, v, w, species);
+    return detail::profiles_from_sums(g, detail::bin_sums(g, grid, x, v, w, species), virial, dt);
+}
+
+namespace detail {
+
+std::vector<double> profiles_from_sums(const ProfileGeometry& g, const std::vector<BinSums>& s,
+                                       const std::vector<Virial>& virial, double dt) {
+    const auto B = static_cast<std::size_t>(g.bins);
+    if (s.size() != B || virial.size() != B)
+        throw std::invalid_argument("profiles_from_sums: one sum and one virial per bin needed");
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double f = g.weight / g.bin_volume;
     std::vector<double> out;
     out.reserve(B * profile_field_count);
     for (std::size_t k = 0; k < B; ++k) {
-        const detail::BinSums& b = s[k];
+        const BinSums& b = s[k];
         out.push_back(f * b.count);
         if (b.count == 0) {
             out.insert(out.end(), profile_field_count - 1, nan);
@@ -66,4 +74,5 @@ std::vector<double> compute_profiles(const ProfileGeometry& g, const std::vector
     return out;
 }
 
+} // namespace detail
 } // namespace roughgas

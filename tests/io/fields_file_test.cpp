@@ -11,6 +11,8 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <stdexcept>
 
 namespace roughgas {
 namespace {
@@ -89,7 +91,7 @@ TEST(FieldsSeries, SidecarListsTheSnapshotsAndAResumeReplacesWhatFollows) {
     {
         FieldsSeries s(run, 1, d, false);
         for (std::size_t row : {0, 2, 4}) {
-            const CellFields f = sample(static_cast<double>(row));
+            const auto f = std::make_shared<const CellFields>(sample(static_cast<double>(row)));
             s.add(FieldSnapshot{row, 10.0 * static_cast<double>(row), static_cast<double>(row), f});
         }
     }
@@ -109,8 +111,7 @@ TEST(FieldsSeries, SidecarListsTheSnapshotsAndAResumeReplacesWhatFollows) {
     // A resumed run writes row 2 again (another time, to tell): rows 0 and 2 remain.
     {
         FieldsSeries s(run, 1, d, true);
-        const CellFields f = sample(7.0);
-        s.add(FieldSnapshot{2, 21.0, 2.0, f});
+        s.add(FieldSnapshot{2, 21.0, 2.0, std::make_shared<const CellFields>(sample(7.0))});
     }
     EXPECT_EQ(names(replica), (std::vector<std::string>{"row_000000.h5", "row_000002.h5"}));
     const std::string resumed = test::read_file(fields_xdmf_path(run, 1));
@@ -119,6 +120,25 @@ TEST(FieldsSeries, SidecarListsTheSnapshotsAndAResumeReplacesWhatFollows) {
     EXPECT_EQ(resumed.find("<Time Value=\"20\"/>"), std::string::npos);
     EXPECT_EQ(resumed.find("row_000004"), std::string::npos);
     EXPECT_EQ(read_fields_dataset(replica / "row_000002.h5", "n").values[0], 7.0);
+}
+
+// The files are written behind the run: a failure to write reaches the run at the next snapshot
+// or at flush, and flush returns only once the files are on disk.
+TEST(FieldsSeries, WritesBehindTheRunAndReportsItsErrors) {
+    const test::ScratchDir dir;
+    DomainSpec d;
+    d.size = {6.0, 4.0, 12.0};
+    d.cells = {3, 2, 4};
+    FieldsSeries s(dir / "run", 0, d, false);
+    s.add(FieldSnapshot{0, 0.0, 0.0, std::make_shared<const CellFields>(sample(1.0))});
+    s.flush();
+    const fs::path replica = fields_replica_dir(dir / "run", 0);
+    EXPECT_EQ(read_fields_dataset(replica / "row_000000.h5", "n").values[0], 1.0);
+    fs::remove_all(replica); // the next file cannot be created
+    s.add(FieldSnapshot{1, 1.0, 1.0, std::make_shared<const CellFields>(sample(2.0))});
+    EXPECT_THROW(s.flush(), std::runtime_error);
+    s.flush(); // reported once
+    EXPECT_THROW(s.add(FieldSnapshot{2, 2.0, 2.0, nullptr}), std::invalid_argument);
 }
 
 } // namespace

@@ -7,7 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <string>
 
@@ -130,6 +132,86 @@ TEST(CellFields, CellsOfASlabAddUpToItsProfile) {
         for (const auto& [sum, name] : {std::pair{heat.x, "q_x"}, {heat.y, "q_y"}, {heat.z, "q_z"}})
             EXPECT_NEAR(F_V * sum, field(name), tol * std::abs(field("P_xx"))) << name;
     }
+}
+
+// A row that writes fields takes its profiles from the cells' sums: the same profiles to round-off,
+// the same cell fields exactly, along a walled and a periodic axis, with and without spins in the
+// heat flux, with empty cells in between; refused where the profile bins are not layers of cells
+// or walls stand across another axis.
+TEST(CellFields, ProfilesFromTheCellsAgreeWithTheirOwnPass) {
+    const std::array<int, 3> cells{5, 3, 4};
+    const std::array<double, 3> box{10.0, 6.0, 4.0};
+    const std::size_t n = 400; // about 7 grains per cell: some cells are empty
+    const std::vector<SpeciesBlock> species = one_species(n, 1.3);
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::normal_distribution<double> normal(0, 1);
+    std::vector<Vec3> x, v, w;
+    for (std::size_t i = 0; i < n; ++i) {
+        x.push_back({u(rng) * box[0], u(rng) * box[1], u(rng) * box[2]});
+        // A flow ten times the thermal speed across the box: the identities must not lose it.
+        v.push_back({normal(rng) + 10 * std::sin(x.back().y), normal(rng) - 3 * x.back().x, normal(rng)});
+        w.push_back({normal(rng), normal(rng) + 0.3, normal(rng)});
+    }
+    for (const int axis : {0, 1})
+        for (const bool rotation : {true, false}) {
+            ProfileGeometry p;
+            p.axis = axis;
+            p.bins = cells[static_cast<std::size_t>(axis)];
+            p.length = box[static_cast<std::size_t>(axis)];
+            p.box = box;
+            p.periodic = axis == 0;
+            p.rotation = rotation;
+            p.weight = 2.0;
+            p.bin_volume = box[0] * box[1] * box[2] / p.bins;
+            p.half_flight = 0.2;
+            p.gravity = {0.0, -0.4, 0.1};
+            const std::array<bool, 3> walled{false, axis == 1, false};
+            std::vector<Virial> virial(static_cast<std::size_t>(p.bins));
+            for (std::size_t b = 0; b < virial.size(); ++b)
+                virial[b][0] = static_cast<double>(b) + 1;
+            const std::vector<double> own = compute_profiles(p, x, v, w, species, virial, 0.5);
+            CellFields fused;
+            const std::vector<double> from_cells =
+                compute_cell_fields_and_profiles(p, cells, walled, all, x, v, w, species, virial, 0.5, fused);
+            const CellFields alone = compute_cell_fields(p, cells, walled, all, x, v, w, species);
+            ASSERT_EQ(fused.values.size(), alone.values.size());
+            for (std::size_t k = 0; k < alone.values.size(); ++k) { // bit for bit, NaN included
+                ASSERT_EQ(fused.values[k].size(), alone.values[k].size());
+                EXPECT_EQ(std::memcmp(fused.values[k].data(), alone.values[k].data(),
+                                      alone.values[k].size() * sizeof(double)),
+                          0);
+            }
+            ASSERT_EQ(from_cells.size(), own.size());
+            for (std::size_t b = 0; b < static_cast<std::size_t>(p.bins); ++b) {
+                const double* o = own.data() + b * profile_field_count;
+                const double* c = from_cells.data() + b * profile_field_count;
+                // The shifts between cell and layer flows reach ten thermal speeds: round-off grows with
+                // their square, 1e-13 relative; a wrong identity errs by order one.
+                const double pressure = o[7] + o[8] + o[9]; // P_xx + P_yy + P_zz
+                for (std::size_t k = 0; k < profile_field_count; ++k) {
+                    const std::string name = profile_fields[k];
+                    const double tol = name.starts_with("P_")   ? 1e-11 * pressure
+                                       : name.starts_with("q_") ? 1e-10 * pressure
+                                                                : 1e-12 * std::max(1.0, std::abs(o[k]));
+                    EXPECT_NEAR(c[k], o[k], tol) << "axis " << axis << " rotation " << rotation << " bin " << b << " "
+                                                 << name;
+                }
+            }
+        }
+    ProfileGeometry p;
+    p.axis = 2;
+    p.bins = 3; // not a layer of cells
+    p.length = box[2];
+    p.box = box;
+    CellFields out;
+    EXPECT_THROW(compute_cell_fields_and_profiles(p, cells, {false, false, false}, all, x, v, w, species,
+                                                  std::vector<Virial>(3), 0.5, out),
+                 std::invalid_argument);
+    p.bins = cells[2];
+    EXPECT_THROW(compute_cell_fields_and_profiles(p, cells, {false, true, false}, all, x, v, w, species, // walls
+                                                  std::vector<Virial>(4), 0.5, out),                     // along y
+                 std::invalid_argument);
 }
 
 TEST(CellFields, CellsRunXFastestAndEmptyCellsHaveNoFields) {

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -28,10 +29,11 @@ using HistogramSink = std::function<void(const HistogramSet&)>;
 
 // The cell fields of one replica at output row `row` (0: t = 0), every spec.domain->fields->every
 // rows, for the replicas below spec.domain->fields->replicas.
+// Shared, not copied: a sink may write it on another thread while the run goes on.
 struct FieldSnapshot {
     std::size_t row = 0;
     double t = 0, coll_per_particle = 0;
-    const CellFields& fields;
+    std::shared_ptr<const CellFields> fields;
 };
 using FieldSink = std::function<void(const FieldSnapshot&)>;
 

@@ -11,6 +11,10 @@ namespace roughgas {
 // file is removed and std::system_error is thrown; `path` is then untouched.
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents);
 
+// For a file another library writes (HDF5): `tmp`, complete and closed, is fsynced, renamed over
+// `path` and the directory fsynced. On failure `tmp` is removed and std::system_error is thrown.
+void publish_file_atomically(const std::filesystem::path& tmp, const std::filesystem::path& path);
+
 // The temporary name used for `path` by this process.
 std::filesystem::path temporary_path(const std::filesystem::path& path);
 

@@ -1,6 +1,6 @@
 #pragma once
-// One snapshot of a box's cell fields as an HDF5 file (docs/reference.md, "Fields"): written in
-// memory, then to disk atomically (io/atomic_file.hpp), so a kill leaves the file whole or absent.
+// One snapshot of a box's cell fields as an HDF5 file (docs/reference.md, "Fields"): written under
+// a temporary name, synced and renamed (io/atomic_file.hpp), so a kill leaves the file whole or absent.
 //
 // Layout: root attributes t, coll_per_particle, row (of moments.csv), replica, box (L_x, L_y, L_z),
 // cells (G_x, G_y, G_z); one 64-bit float dataset per quantity (observables/cell_fields.hpp), of

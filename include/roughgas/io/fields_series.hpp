@@ -6,10 +6,15 @@
 // in z, y, x order, the fields cell-centred). The sidecar names the HDF5 files by absolute path,
 // as ParaView's reader resolves them; it is rewritten, atomically, after every snapshot, so that
 // it lists every file written so far (a run stopped at any point opens as far as it went).
+// The files are written on a thread of the series' own, one snapshot behind the run: building the
+// HDF5 image, writing it and syncing it to disk overlap the steps that follow, and a run that
+// writes every quantity of every cell at every row waits for the disk only when the disk is slower
+// than the run.
 #include "roughgas/dsmc/run.hpp"
 
 #include <array>
 #include <filesystem>
+#include <future>
 #include <string>
 #include <vector>
 
@@ -36,15 +41,27 @@ class FieldsSeries {
     // directory stay listed until the run writes their rows again. Otherwise the directory must
     // not hold snapshots (the run's start removes an earlier run's with --force).
     FieldsSeries(const std::filesystem::path& run_dir, int replica, const DomainSpec& domain, bool resuming);
-    // Writes the snapshot's file and the sidecar. A row at or before the last one listed (a resumed
-    // run going over rows again) replaces it and drops those after it.
-    void add(const FieldSnapshot& s);
+    FieldsSeries(const FieldsSeries&) = delete;
+    FieldsSeries& operator=(const FieldsSeries&) = delete;
+    // Waits for the snapshot being written; an error of its writing is lost here (flush reports it).
+    ~FieldsSeries();
+    // Starts writing the snapshot's file and then the sidecar, once the snapshot before it is
+    // written (rethrowing that one's error). A row at or before the last one listed (a resumed run
+    // going over rows again) replaces it and drops those after it.
+    void add(FieldSnapshot s);
+    // Waits until every snapshot added is on disk with the sidecar listing it; rethrows an error of
+    // the writing. A checkpoint waits for it, so that a run resumed from it finds every snapshot
+    // before it, and so does the end of the run.
+    void flush();
 
   private:
+    void write(const FieldSnapshot& s);
+
     std::filesystem::path dir_, xdmf_;
     int replica_;
     std::array<double, 3> box_;
-    std::vector<FieldsEntry> entries_;
+    std::vector<FieldsEntry> entries_; // written only by the snapshot being written
+    std::future<void> writing_;
 };
 
 } // namespace roughgas

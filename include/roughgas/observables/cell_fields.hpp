@@ -41,5 +41,22 @@ CellFields compute_cell_fields(const FlightSampling& s, const std::array<int, 3>
                                const std::array<bool, 3>& walled, const std::vector<FieldQuantity>& quantities,
                                const std::vector<Vec3>& x, const std::vector<Vec3>& v, const std::vector<Vec3>& w,
                                const std::vector<SpeciesBlock>& species);
+// The same into `out`, reusing its arrays' memory (a snapshot every row need not fault in fresh pages).
+void compute_cell_fields(const FlightSampling& s, const std::array<int, 3>& cells, const std::array<bool, 3>& walled,
+                         const std::vector<FieldQuantity>& quantities, const std::vector<Vec3>& x,
+                         const std::vector<Vec3>& v, const std::vector<Vec3>& w,
+                         const std::vector<SpeciesBlock>& species, CellFields& out);
+
+// At a row that writes fields: the cell fields into `out` and, from the same pass over the grains,
+// the profiles of `g` (compute_profiles' result to round-off: each profile bin is a layer of cells,
+// g.bins = cells[g.axis], summed with the identities of moments about two means; walls only across
+// that axis, the only ones the profiles' own pass reflects grains at). `virial` and `dt` as for
+// compute_profiles.
+std::vector<double> compute_cell_fields_and_profiles(const ProfileGeometry& g, const std::array<int, 3>& cells,
+                                                     const std::array<bool, 3>& walled,
+                                                     const std::vector<FieldQuantity>& quantities,
+                                                     const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+                                                     const std::vector<Vec3>& w, const std::vector<SpeciesBlock>& species,
+                                                     const std::vector<Virial>& virial, double dt, CellFields& out);
 
 } // namespace roughgas
