@@ -29,11 +29,11 @@ std::optional<std::string> linear_stability_note(const RunSpec& spec) {
                            "free paths) is linearly stable",
                            t.alpha, t.beta, L);
     const double rate = shear_mode_rate(t, 2 * std::numbers::pi / L);
-    // Smooth grains: also the longitudinal (clustering) instability, whose critical length is the
-    // longer one for alpha > 0.37 (observables/longitudinal_modes.hpp).
+    // Also the longitudinal (clustering) instability, whose critical length is the longer one for
+    // smooth grains with alpha > 0.37 and for rough grains (observables/longitudinal_modes.hpp).
     std::string heat;
-    if (smooth) {
-        const LongitudinalModeTheory lt = smooth_longitudinal_modes(t.alpha);
+    if (const std::optional<LongitudinalModeTheory> l = longitudinal_mode_theory(spec)) {
+        const LongitudinalModeTheory& lt = *l;
         const double heat_rate = longitudinal_max_rate(lt, 2 * std::numbers::pi / L);
         heat = fmt::format("; heat mode (density clusters): critical length {:.4g} mean free paths, the box is {}: "
                            "the heat mode of its longest wave {} by {:.3g} per collision per particle",

@@ -48,13 +48,11 @@ MomentsTable::MomentsTable(const RunSpec& spec)
                     table->push_back({f.name + "_err", f.unit});
             }
         // The Navier-Stokes rates of each mode where the theory applies: the transverse wave's
-        // (observables/shear_mode.hpp), and for smooth grains the heat and sound modes'
-        // (observables/longitudinal_modes.hpp); per wave number, the same in every block.
+        // (observables/shear_mode.hpp), the heat and sound modes' (observables/longitudinal_modes.hpp);
+        // per wave number, the same in every block.
         if (const std::optional<ShearModeTheory> t = shear_mode_theory(spec); t && !modes_.empty()) {
             const double lambda = mean_free_path(spec.density, 2 * spec.species[0].radius);
-            const bool smooth = t->beta == -1;
-            const std::optional<LongitudinalModeTheory> lt =
-                smooth ? std::optional{smooth_longitudinal_modes(t->alpha)} : std::nullopt;
+            const std::optional<LongitudinalModeTheory> lt = longitudinal_mode_theory(spec);
             for (const ModeIndex& m : modes_) {
                 std::vector<double>& v = mode_theory_.emplace_back();
                 v.push_back(shear_mode_rate(*t, m.k * lambda));

@@ -17,6 +17,13 @@ Eigen::Matrix3d real_form(const LongitudinalModeTheory& t, double k_lambda) {
     const double x2 = k_lambda * k_lambda, c = std::sqrt(pi / 8) * k_lambda, z = 0.4 * t.shear.zeta_star;
     constexpr double P = 25 * pi / 64, E = 5 * pi / 24;
     Eigen::Matrix3d r;
+    if (t.shear.beta > -1) { // rough grains: energy density 3 n T, p = 2 n T/(1 + theta), a2 = 0
+        const double work = 2 / (3 * (1 + t.shear.theta)) + t.zeta_u;
+        r << 0, 0, c,                                                                      // d rho/ds
+            -2 * z - P / 2 * t.mu_star * x2, -z - P / 2 * t.kappa_star * x2, work * c,     // d theta/ds
+            -c, -c, z - (E * t.shear.eta_star + 5 * pi / 32 * t.bulk_viscosity_star) * x2; // d w/ds
+        return r;
+    }
     r << 0, 0, c,                                                           // d rho/ds = -i c w
         -2 * z - P * t.mu_star * x2, -z - P * t.kappa_star * x2, 2 * c / 3, // d theta/ds
         -c, -c, z - E * t.shear.eta_star * x2;                              // d w/ds
@@ -41,6 +48,55 @@ LongitudinalModeTheory smooth_longitudinal_modes(double alpha) {
     else
         t.critical_length = 2 * pi / std::sqrt(128 / (125 * pi) * zeta / (t.kappa_star - t.mu_star));
     return t;
+}
+
+LongitudinalModeTheory rough_longitudinal_modes(double alpha, double beta, double q) {
+    if (beta == -1)
+        return smooth_longitudinal_modes(alpha);
+    if (!(alpha >= 0 && alpha <= 1 && beta > -1 && beta <= 1 && q > 0))
+        throw std::invalid_argument(
+            "rough_longitudinal_modes: needs 0 <= alpha <= 1, -1 <= beta <= 1, q > 0");
+    LongitudinalModeTheory t;
+    t.shear = rough_shear_mode(alpha, beta, q);
+    const double theta = t.shear.theta, zeta = t.shear.zeta_star;
+    const double at = (1 + alpha) / 2, bt = q * (1 + beta) / (2 * (1 + q));
+    const double A = (1 - alpha * alpha) / 4 + bt * (1 - bt), B = bt * bt / q, C = bt / q * (1 - bt / q);
+
+    // The scalar part: the lag of T_tr/T_rot under compression.
+    const double d_t = 5.0 / 6.0 * (B * (theta - 2) - 3 * A), d_r = 5.0 / 6.0 * (3 * B + C * (2 - theta));
+    t.bulk_viscosity_star = 2.0 / 3.0 * theta / (d_r - theta * d_t - (1 + theta) * zeta / 2);
+    t.zeta_u = (d_t + d_r) * t.bulk_viscosity_star / (1 + theta);
+
+    // The heat flux: the translational and rotational fluxes' relaxation matrix N over nu_0.
+    const double n_tt =
+        (41 * (at + bt) - 33 * (at * at + bt * bt) - 16 * at * bt - 7 * bt * bt * theta / q) / 12;
+    const double n_tr = -25.0 / 18.0 * bt * bt / q;
+    const double n_rt = -5.0 / 12.0 * bt / q * (bt * theta / q + 3 * bt - theta);
+    const double n_rr = 5.0 / 18.0 * (3 * (at + bt) - bt / q * (4 * at + 6 * bt - 7) - 3 * bt * bt / (q * q));
+    // (N - s I)^-1 y by Cramer's rule.
+    const auto solve = [&](double s, double y0, double y1) -> std::array<double, 2> {
+        const double a = n_tt - s, d = n_rr - s, det = a * d - n_tr * n_rt;
+        return {(d * y0 - n_tr * y1) / det, (a * y1 - n_rt * y0) / det};
+    };
+    const double norm = 8 / (15 * (1 + theta));
+    const std::array<double, 2> k = solve(2 * zeta, norm * 2.5, norm * 1.5 * theta);
+    const std::array<double, 2> m = solve(1.5 * zeta, k[0], k[1]);
+    t.kappa_star = k[0] + k[1];
+    t.mu_star = zeta * (m[0] + m[1]);
+    if (zeta == 0)
+        t.critical_length = std::numeric_limits<double>::infinity();
+    else if (t.kappa_star <= t.mu_star)
+        t.critical_length = 0;
+    else
+        t.critical_length = 2 * pi / std::sqrt(256 / (125 * pi) * zeta / (t.kappa_star - t.mu_star));
+    return t;
+}
+
+std::optional<LongitudinalModeTheory> longitudinal_mode_theory(const RunSpec& spec) {
+    const std::optional<ShearModeTheory> t = shear_mode_theory(spec);
+    if (!t)
+        return std::nullopt;
+    return rough_longitudinal_modes(t->alpha, t->beta, spec.species[0].inertia);
 }
 
 Eigen::Matrix3cd longitudinal_mode_matrix(const LongitudinalModeTheory& t, double k_lambda) {

@@ -171,7 +171,14 @@ TEST(BoxCli, SpectraAndModesOfATransverseWave) {
     }
     EXPECT_EQ(seen, 1);
     EXPECT_GT(s.at("t")[block], 0.0);
-    EXPECT_EQ(m.count("gamma_heat_theory"), 0u) << "rough grains have no longitudinal theory columns";
+    // Rough grains: the longitudinal modes of their theory (rough_longitudinal_modes) too.
+    const LongitudinalModeTheory rough = rough_longitudinal_modes(0.9, 0.4, 0.4);
+    for (std::size_t i = 0; i < m.at("t").size(); ++i) {
+        const LongitudinalModeRates r = longitudinal_mode_rates(rough, m.at("k")[i] * lambda);
+        EXPECT_EQ(m.at("gamma_heat_theory")[i], r.heat.real()) << i;
+        EXPECT_EQ(m.at("gamma_sound_theory")[i], r.sound[0].real()) << i;
+        EXPECT_EQ(m.at("omega_sound_theory")[i], std::abs(r.sound[0].imag())) << i;
+    }
     // Smooth grains: the longitudinal modes' eigenvalues at each row's k beside the transverse one.
     const fs::path smooth = dir.write("smooth.toml", replaced(c, "beta = 0.4", "beta = -1.0"));
     ASSERT_EQ(test::run_roughgas("run " + q(smooth) + " --quiet --set run.end=0.5 --out " + q(dir / "smooth"), dir).status,
@@ -262,7 +269,8 @@ TEST(BoxCli, FieldsOfTheCellsInHdf5WithAnXdmfSidecar) {
 // roughgas check of a cooling box states the shear mode's linear stability (observables/shear_mode.hpp):
 // for the case's rough grains (alpha = 0.8, beta = 0.4) and for smooth ones (beta = -1) the
 // Navier-Stokes critical length, 14.83 and 18.8 mean free paths, against the box's longest side,
-// longer (60 of them) or shorter (17.8); for a mixture, that there is no such statement.
+// longer (60 of them) or shorter (17.8), and the heat mode's (observables/longitudinal_modes.hpp);
+// for a mixture, that there is no such statement.
 TEST(BoxCli, CheckStatesTheShearModesStability) {
     const test::ScratchDir dir;
     const std::string c = std::string(ROUGHGAS_SOURCE_DIR) + "/cases/box_shear_mode.toml";
@@ -292,7 +300,12 @@ TEST(BoxCli, CheckStatesTheShearModesStability) {
                                             heat.critical_length)),
               std::string::npos)
         << unstable.out;
-    EXPECT_EQ(rough.out.find("heat mode"), std::string::npos) << rough.out;
+    const LongitudinalModeTheory rough_heat = rough_longitudinal_modes(0.8, 0.4, 0.4);
+    EXPECT_NE(rough.out.find(fmt::format("heat mode (density clusters): critical length {:.4g} mean free paths, "
+                                         "the box is longer: the heat mode of its longest wave grows",
+                                         rough_heat.critical_length)),
+              std::string::npos)
+        << rough.out;
     const test::CommandResult stable = test::run_roughgas(
         "check '" + c + "' --set collision.beta=-1 --set 'domain.size=[200.0,11.25,11.25]' --set 'domain.cells=[60,3,3]'",
         dir);
