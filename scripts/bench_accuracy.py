@@ -54,6 +54,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from bench_common import loadavg, machine, run_roughgas  # noqa: E402
 from make_reference import HCS_CASE, HCS_REFERENCE, ROOT, USF_CASE, read_usf_reference, steady  # noqa: E402
 from roughgas_csv import read_csv  # noqa: E402
+from atomic_output import save_figure  # noqa: E402
 
 MAXWELL_CASE = """[run]
 particles = 1000
@@ -301,9 +302,7 @@ def plot(rows, out, hcs_own, shear_model, title):
         ax.axis("off")
     fig.suptitle(title, fontsize=8)
     fig.tight_layout()
-    tmp = os.path.join(out, ".accuracy.png.tmp")
-    fig.savefig(tmp, dpi=110, format="png")
-    os.replace(tmp, os.path.join(out, "accuracy.png"))
+    save_figure(fig, os.path.join(out, "accuracy.png"))
 
 
 def main():

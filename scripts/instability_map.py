@@ -43,6 +43,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from roughgas_csv import read_csv  # noqa: E402
+from atomic_output import save_figure, write_text  # noqa: E402
 
 DENSITY = 0.02
 LAMBDA = 1.0 / (math.sqrt(2.0) * math.pi * DENSITY)
@@ -240,12 +241,8 @@ def main():
 
 
 def write_csv(path, names, rows):
-    tmp = path + ".tmp"
-    with open(tmp, "w") as f:
-        f.write(",".join(names) + "\n")
-        for r in rows:
-            f.write(",".join(repr(float(v)) for v in r) + "\n")
-    os.replace(tmp, path)
+    lines = [",".join(names)] + [",".join(repr(float(v)) for v in r) for r in rows]
+    write_text(path, "\n".join(lines) + "\n")
 
 
 def draw(roughgas, out, boxes, summary, path):
@@ -293,9 +290,7 @@ def draw(roughgas, out, boxes, summary, path):
     right.legend(fontsize=7)
     fig.suptitle("Instability of the homogeneous cooling state: DSMC against Navier–Stokes")
     fig.tight_layout()
-    tmp = path + ".tmp"
-    fig.savefig(tmp, dpi=100, format="png")
-    os.replace(tmp, path)
+    save_figure(fig, path, dpi=100)
 
 
 if __name__ == "__main__":

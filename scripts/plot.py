@@ -24,6 +24,7 @@ import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from roughgas_csv import read_csv, species_names  # noqa: E402
+from atomic_output import save_figure  # noqa: E402
 
 CUMULANTS = ["a20", "a02", "a11", "A_cw"]
 
@@ -117,9 +118,7 @@ def plot(csv_path, out_path, x_col="coll", logx=None):
         ax.grid(True, which="both", alpha=0.3)
     fig.suptitle(os.path.basename(os.path.dirname(os.path.abspath(csv_path))) + "/" + os.path.basename(csv_path))
     fig.tight_layout()
-    tmp = out_path + ".tmp"
-    fig.savefig(tmp, dpi=110, format="png")
-    os.replace(tmp, out_path)  # never leave a half-written picture
+    save_figure(fig, out_path)
     plt.close(fig)
     return d, drawn
 

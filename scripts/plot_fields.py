@@ -48,6 +48,7 @@ import matplotlib.colors as mcolors  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker as mticker  # noqa: E402
 import numpy as np  # noqa: E402
+from atomic_output import save_figure  # noqa: E402
 
 AXES = "xyz"
 GRAINS_PER_BLOCK = 100  # the default block holds at least this many grains on average
@@ -340,9 +341,7 @@ def main(argv):
                  f"and vorticity, cells {args.axis} = {args.index if args.index is not None else 'middle'}", fontsize=9)
     out = args.out or os.path.join(args.run_dir, f"fields_replica_{args.replica}.png")
     fig.tight_layout()
-    tmp = out + ".tmp"
-    fig.savefig(tmp, dpi=110, format="png")
-    os.replace(tmp, out)  # never leave a half-written picture
+    save_figure(fig, out)
     plt.close(fig)
     print(f"plot_fields: wrote {out}")
     if args.check and drawn == 0:

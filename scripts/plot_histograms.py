@@ -20,6 +20,7 @@ import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from roughgas_csv import read_csv  # noqa: E402
+from atomic_output import save_figure  # noqa: E402
 
 PANELS = [("c_star", "f_c", r"$|c^*|$"), ("w_star", "f_w", r"$|w^*|$"), ("cw_star", "f_cw", r"$c^*\cdot w^*$")]
 STYLES = ["-", "--", ":", "-."]
@@ -77,9 +78,7 @@ def main(argv):
     axes[0].legend(fontsize=7)
     fig.suptitle(os.path.relpath(path))
     fig.tight_layout()
-    tmp = out + ".tmp.png"
-    fig.savefig(tmp, dpi=100)
-    os.replace(tmp, out)
+    save_figure(fig, out, dpi=100)
     print(f"plot_histograms.py: wrote {out}")
     if check and (not os.path.exists(out) or drawn == 0):
         sys.exit("plot_histograms.py --check: nothing drawn")

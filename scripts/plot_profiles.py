@@ -26,6 +26,7 @@ import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from roughgas_csv import read_csv  # noqa: E402
+from atomic_output import save_figure  # noqa: E402
 
 
 def header_notes(path):
@@ -141,9 +142,7 @@ def main(argv):
     fig.suptitle(f"{os.path.basename(os.path.abspath(args.run_dir))}: {what}\n{note[:110]}", fontsize=8)
     out = args.out or os.path.join(args.run_dir, "profiles.png")
     fig.tight_layout()
-    tmp = out + ".tmp"
-    fig.savefig(tmp, dpi=110, format="png")
-    os.replace(tmp, out)  # never leave a half-written picture
+    save_figure(fig, out)
     plt.close(fig)
     print(f"plot_profiles: wrote {out}")
     if args.check and len(drawn) < 4:

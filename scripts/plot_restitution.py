@@ -17,6 +17,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from roughgas_csv import read_csv  # noqa: E402
+from atomic_output import save_figure  # noqa: E402
 
 
 
@@ -41,8 +42,7 @@ def plot_normal(out_dir, with_bridges):
     ax.set_title("Normal restitution (Brilliantov et al. 1996, Fig. 1)")
     fig.tight_layout()
     path = os.path.join(out_dir, "normal.png")
-    fig.savefig(path + ".tmp.png", dpi=120)
-    os.replace(path + ".tmp.png", path)  # never leave a half-written picture
+    save_figure(fig, path, dpi=120)
     plt.close(fig)
     return path
 
@@ -66,8 +66,7 @@ def plot_tangential(out_dir):
     ax.set_title(r"Tangential restitution (Brilliantov et al. 1996, Fig. 2); black: $\epsilon^T = 0$")
     fig.tight_layout()
     path = os.path.join(out_dir, "tangential.png")
-    fig.savefig(path + ".tmp.png", dpi=120)
-    os.replace(path + ".tmp.png", path)
+    save_figure(fig, path, dpi=120)
     plt.close(fig)
     return path
 

@@ -26,6 +26,7 @@ import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from roughgas_csv import read_csv, species_names  # noqa: E402
+from atomic_output import save_figure  # noqa: E402
 
 STRESS = ["P_xx_star", "P_yy_star", "P_zz_star", "P_xy_star"]
 
@@ -46,9 +47,7 @@ def curve(ax, x, d, name, drawn, logy=False, label=None, **style):
 
 def save(fig, out):
     fig.tight_layout()
-    tmp = out + ".tmp"
-    fig.savefig(tmp, dpi=110, format="png")
-    os.replace(tmp, out)  # never leave a half-written picture
+    save_figure(fig, out)
     plt.close(fig)
 
 

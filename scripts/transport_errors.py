@@ -34,6 +34,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from roughgas_csv import read_csv  # noqa: E402
+from atomic_output import save_figure  # noqa: E402
 
 DENSITY = 0.02
 LAMBDA = 1.0 / (math.sqrt(2.0) * math.pi * DENSITY)
@@ -174,9 +175,7 @@ def draw(results, path):
     right.legend()
     fig.suptitle("Couette flow of elastic hard spheres, walls 20 λ apart: the DSMC's viscosity")
     fig.tight_layout()
-    tmp = path + ".tmp"
-    fig.savefig(tmp, dpi=110, format="png")
-    os.replace(tmp, path)
+    save_figure(fig, path)
 
 
 if __name__ == "__main__":

@@ -20,8 +20,11 @@ std::vector<BinSums> bin_sums(const FlightSampling& s, const BinGrid& g, const s
     // The axes a grain's bin or mid-flight velocity depends on: binned ones, walled ones (a
     // reflection reverses the velocity) and, for the Lees-Edwards image, y.
     std::array<bool, 3> track{};
-    for (std::size_t a = 0; a < 3; ++a)
+    std::array<double, 3> per_length{}; // B/L: bins per unit length (no division per grain)
+    for (std::size_t a = 0; a < 3; ++a) {
         track[a] = g.bins[a] > 1 || g.walled[a];
+        per_length[a] = g.bins[a] / g.length[a];
+    }
     // A grain's bin and velocity in the middle of the flight (profiles.hpp). Along a walled axis a
     // grain that would pass a wall in that half flight is reflected specularly (position mirrored,
     // normal velocity reversed): without it, the grains flying into a wall would pile up in the
@@ -31,7 +34,7 @@ std::vector<BinSums> bin_sums(const FlightSampling& s, const BinGrid& g, const s
         Vec3 q = x[i] + tau * v[i] + (0.5 * tau) * dv;
         if (s.shear_rate != 0) { // Lees-Edwards: the image's grain after a crossing of y
             const double Lx = s.box[0], Ly = s.box[1];
-            const double k = std::floor(q.y / Ly);
+            const double k = q.y >= 0 && q.y < Ly ? 0.0 : std::floor(q.y / Ly);
             if (k != 0) {
                 u.x -= k * s.shear_rate * Ly;
                 q.x -= k * std::fmod(s.shear_rate * Ly * (s.time + tau), Lx);
@@ -45,13 +48,14 @@ std::vector<BinSums> bin_sums(const FlightSampling& s, const BinGrid& g, const s
             const double L = g.length[a];
             double c = component(q, a);
             if (!g.walled[a]) {
-                c -= L * std::floor(c / L);
+                if (c < 0 || c >= L) // most grains stay in the box: no division for them
+                    c -= L * std::floor(c / L);
             } else if (c < 0 || c > L) {
                 c = c < 0 ? -c : 2 * L - c;
                 component(u, a) = -component(u, a);
             }
             const int B = g.bins[a];
-            const int k = std::clamp(static_cast<int>(std::clamp(c, 0.0, L) * (B / L)), 0, B - 1);
+            const int k = std::clamp(static_cast<int>(std::clamp(c, 0.0, L) * per_length[a]), 0, B - 1);
             bin = bin * static_cast<std::size_t>(B) + static_cast<std::size_t>(k);
         }
         return {bin, u};
