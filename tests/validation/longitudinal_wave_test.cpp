@@ -136,8 +136,7 @@ Rates fitted_rates(const RunSpec& spec, const Eigen::Matrix3cd& M, const Longitu
 // = 0.98 %, and the thermal conductivity's cell-size law 32/(225 pi) (1/4)^2 = 0.28 % (Alexander,
 // Garcia & Alder 1998) with a step term of the same form, 0.14 % (its own coefficient is not used
 // here; either is far below the tests' allowances).
-LongitudinalModeTheory dsmc_theory(double alpha, double eta_factor, double kappa_factor) {
-    LongitudinalModeTheory t = smooth_longitudinal_modes(alpha);
+LongitudinalModeTheory dsmc_theory(LongitudinalModeTheory t, double eta_factor, double kappa_factor) {
     const double step = std::pow(0.2 * std::sqrt(std::numbers::pi) / 2, 2);
     t.shear.eta_star *= eta_factor * (1 + 16 / (45 * std::numbers::pi) / 16 + 16 / (75 * std::numbers::pi) * step);
     t.kappa_star *= kappa_factor * (1 + 32 / (225 * std::numbers::pi) / 16 + 32 / (225 * std::numbers::pi) * step);
@@ -155,7 +154,7 @@ LongitudinalModeTheory dsmc_theory(double alpha, double eta_factor, double kappa
 // (measured once, docs/validation.md); at k lambda = 0.157 each agrees within 2.4 %.
 TEST(LongitudinalWave, ElasticDensityWaveSplitsIntoTheHeatAndSoundModes) {
     const double L = 40 * lambda, k_lambda = 2 * std::numbers::pi * lambda / L;
-    const LongitudinalModeTheory t = dsmc_theory(1.0, 1.016034, 1.025218);
+    const LongitudinalModeTheory t = dsmc_theory(smooth_longitudinal_modes(1.0), 1.016034, 1.025218);
     const Eigen::Matrix3cd M = longitudinal_mode_matrix(t, k_lambda);
     const LongitudinalModeRates th = longitudinal_mode_rates(t, k_lambda);
     const Rates r = fitted_rates(wave_run(1.0, L, 60), M, th, {1, 50}, {1, 60}, 8);
@@ -178,7 +177,7 @@ TEST(LongitudinalWave, ElasticDensityWaveSplitsIntoTheHeatAndSoundModes) {
 TEST(LongitudinalWave, CoolingGasDensityWaveGrowsAsTheHeatMode) {
     const LongitudinalModeTheory gas = smooth_longitudinal_modes(0.9);
     const double L = 1.6 * gas.critical_length * lambda, k_lambda = 2 * std::numbers::pi * lambda / L;
-    const LongitudinalModeTheory t = dsmc_theory(0.9, 1, 1);
+    const LongitudinalModeTheory t = dsmc_theory(gas, 1, 1);
     const Eigen::Matrix3cd M = longitudinal_mode_matrix(t, k_lambda);
     const LongitudinalModeRates th = longitudinal_mode_rates(t, k_lambda);
     const Rates r = fitted_rates(wave_run(0.9, L, 60), M, th, {5, 60}, {5, 60}, 8);
@@ -205,10 +204,7 @@ TEST(LongitudinalWave, CoolingGasDensityWaveGrowsAsTheHeatMode) {
 TEST(LongitudinalWave, RoughGasDensityWaveGrowsAsTheHeatMode) {
     const LongitudinalModeTheory gas = rough_longitudinal_modes(0.9, 0.0, 0.4);
     const double L = 1.6 * gas.critical_length * lambda, k_lambda = 2 * std::numbers::pi * lambda / L;
-    LongitudinalModeTheory t = gas;
-    const double step = std::pow(0.2 * std::sqrt(std::numbers::pi) / 2, 2);
-    t.shear.eta_star *= 1 + 16 / (45 * std::numbers::pi) / 16 + 16 / (75 * std::numbers::pi) * step;
-    t.kappa_star *= 1 + 32 / (225 * std::numbers::pi) / 16 + 32 / (225 * std::numbers::pi) * step;
+    const LongitudinalModeTheory t = dsmc_theory(gas, 1, 1);
     const Eigen::Matrix3cd M = longitudinal_mode_matrix(t, k_lambda);
     const LongitudinalModeRates th = longitudinal_mode_rates(t, k_lambda);
     const Rates r = fitted_rates(wave_run(0.9, L, 40, 0.0), M, th, {5, 40}, {5, 40}, 8);
