@@ -93,6 +93,14 @@ MomentsTable::MomentsTable(const RunSpec& spec)
         if (replicas_ > 1)
             columns_.push_back({c.name + "_err", c.unit});
     }
+    zeta_ = !spec.shear;
+    if (zeta_) {
+        columns_.push_back({"zeta_star", "-"});
+        if (replicas_ > 1)
+            columns_.push_back({"zeta_star_err", "-"});
+        prev_T_tr_.assign(static_cast<std::size_t>(replicas_), std::numeric_limits<double>::quiet_NaN());
+        prev_cpp_ = prev_T_tr_;
+    }
     // The theory columns describe free cooling: not written for shear runs.
     if (std::optional<HcsTheory> th = spec.shear ? std::nullopt : hcs_theory(spec)) {
         trajectory_.emplace(std::move(*th), initial_temperatures(spec));
@@ -114,6 +122,7 @@ MomentsTable::MomentsTable(const RunSpec& spec)
                     columns_.push_back({"T_rot." + A + "/T_rot." + B + "_theory", "-"});
                 }
         }
+        columns_.push_back({"zeta_star_theory", "-"});
     }
 }
 
@@ -274,6 +283,18 @@ std::vector<double> MomentsTable::combine(std::span<const std::span<const double
         if (replicas_ > 1)
             out.push_back(m.error);
     }
+    if (zeta_) { // solver columns 1 and 2: coll_per_particle, T_tr (dsmc_columns)
+        for (std::size_t r = 0; r < rows.size(); ++r) {
+            const double cpp = rows[r][1], T = rows[r][2];
+            x[r] = -std::log(T / prev_T_tr_[r]) / (cpp - prev_cpp_[r]); // NaN in the first row
+            prev_T_tr_[r] = T;
+            prev_cpp_[r] = cpp;
+        }
+        const ReplicaMean m = replica_mean(x);
+        out.push_back(m.mean);
+        if (replicas_ > 1)
+            out.push_back(m.error);
+    }
     if (trajectory_) {
         const double t = out[0];
         const HcsTemperatures T = trajectory_->at(t);
@@ -294,6 +315,7 @@ std::vector<double> MomentsTable::combine(std::span<const std::span<const double
                     out.push_back(T.T_rot[a] / T.T_rot[b]);
                 }
         }
+        out.push_back(reduced_cooling_rate(th, T));
     }
     return out;
 }
@@ -329,6 +351,12 @@ const std::map<std::string, std::string>& meanings() {
          "run.kernel = maxwell the exact solution of its linear ODEs"},
         {"T_rot_theory", "T_rot of the Maxwellian approximation at t (constant alpha, beta)"},
         {"theta_theory", "T_rot_theory/T_tr_theory"},
+        {"zeta_star", "reduced cooling rate -ln(T_tr/T_tr,p)/(coll_per_particle - coll_per_particle,p), p "
+                      "the previous row: the translational temperature's decay per collision per particle (cooling "
+                      "runs; NaN at t = 0; constant in the scaled homogeneous cooling state)"},
+        {"zeta_star_theory", "-(dT_tr/dt)/(T_tr nu_c) of the Maxwellian approximation at t, nu_c its collisions "
+                             "per particle and unit time (constant alpha, beta; (1 - alpha^2)/3 for smooth "
+                             "spheres)"},
         // uniform shear flow (run.kind = shear; observables/pressure.hpp)
         {"P_xx", "kinetic pressure tensor (1/V) sum m V_x V_x, V the peculiar velocity (shear runs)"},
         {"P_yy", "(1/V) sum m V_y V_y (shear runs)"},

@@ -152,7 +152,7 @@ std::vector<std::string> steady_monitored(const std::vector<std::string>& names,
         const std::string base = n.substr(0, n.find('.'));
         const bool ratio = n.find('/') != std::string::npos && (base == "T_tr" || base == "T_rot") &&
                            !n.ends_with("_theory"); // the measured ratios, not the theory's
-        const bool scale_free = n == "theta" || n == "a20" || n == "a02" || n == "a11" ||
+        const bool scale_free = n == "theta" || n == "a20" || n == "a02" || n == "a11" || n == "zeta_star" ||
                                 (base == "theta" && n != "theta" && n.find("_theory") == std::string::npos &&
                                  n.find('/') == std::string::npos) ||
                                 ratio;

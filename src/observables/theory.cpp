@@ -147,6 +147,21 @@ double HcsTheory::mixture_T_rot(const HcsTemperatures& T) const {
     return fraction_weighted(T.T_rot);
 }
 
+double reduced_cooling_rate(const HcsTheory& theory, const HcsTemperatures& T) {
+    const std::size_t S = theory.species_count();
+    std::vector<double> dT_tr(S), dT_rot(S);
+    theory.rates(T.T_tr, T.T_rot, dT_tr, dT_rot);
+    double nu = 0, x = 0; // collisions per particle and unit time: each grain's, fraction-weighted
+    for (std::size_t a = 0; a < S; ++a) {
+        const double xa = theory.species()[a].fraction;
+        for (std::size_t b = 0; b < S; ++b)
+            nu += xa * theory.exchange(a, b, T.T_tr, T.T_rot).frequency;
+        x += xa;
+    }
+    const HcsTemperatures rate{dT_tr, dT_rot};
+    return -theory.mixture_T_tr(rate) / (theory.mixture_T_tr(T) * nu / x);
+}
+
 // --- the trajectory ---
 
 HcsTrajectory::HcsTrajectory(HcsTheory theory, HcsTemperatures initial, double rel_tol, bool closed_form)

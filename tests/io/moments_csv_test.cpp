@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -30,17 +31,52 @@ std::vector<double> row(double t, double c, double T, double Tr) {
 
 TEST(MomentsTable, ColumnsWithErrorsAndTheory) {
     const MomentsTable one(one_species(1));
-    EXPECT_EQ(one.names().size(), 11u + 3u);
-    EXPECT_EQ(one.names()[11], "T_tr_theory");
-    EXPECT_EQ(one.units()[11], "energy");
+    EXPECT_EQ(one.names().size(), 11u + 1u + 4u);
+    EXPECT_EQ(one.names()[11], "zeta_star");
+    EXPECT_EQ(one.names()[12], "T_tr_theory");
+    EXPECT_EQ(one.units()[12], "energy");
+    EXPECT_EQ(one.names().back(), "zeta_star_theory");
     const MomentsTable three(one_species(3));
-    ASSERT_EQ(three.names().size(), 22u + 3u);
+    ASSERT_EQ(three.names().size(), 22u + 2u + 4u);
     EXPECT_EQ(three.names()[2], "coll_per_particle");
     EXPECT_EQ(three.names()[3], "coll_per_particle_err");
     EXPECT_EQ(three.units()[5], "energy"); // T_tr_err
+    EXPECT_EQ(three.names()[23], "zeta_star_err");
     const MomentsTable coulomb(one_species(1, CoulombRestitution{0.9, 0.5, 0.2}));
     EXPECT_FALSE(coulomb.has_theory());
-    EXPECT_EQ(coulomb.names().size(), 11u);
+    EXPECT_EQ(coulomb.names().size(), 11u + 1u);
+    RunSpec shear = one_species(1); // heated: no cooling rate, no theory
+    shear.shear = ShearSpec{};
+    const std::vector<std::string> names = MomentsTable(shear).names();
+    EXPECT_EQ(std::count(names.begin(), names.end(), "zeta_star"), 0);
+}
+
+// zeta_star: each replica's -ln(T_tr/T_tr')/(c - c') since its own previous row, then the mean and
+// error over the replicas like every other column; NaN in the first row. The theory's value is
+// (1 - alpha^2)/3 for smooth spheres.
+TEST(MomentsTable, ReducedCoolingRatePerReplicaSinceItsPreviousRow) {
+    MomentsTable table(one_species(2, ConstantRestitution{0.6, -1.0}));
+    const std::vector<std::string> names = table.names();
+    const auto at = [&](const std::string& n) {
+        return static_cast<std::size_t>(std::find(names.begin(), names.end(), n) - names.begin());
+    };
+    const std::vector<double> a0 = row(0, 0, 1.0, 1.0), b0 = row(0, 0, 2.0, 1.0);
+    std::vector<std::span<const double>> rows{a0, b0};
+    std::vector<double> out = table.combine(rows);
+    EXPECT_TRUE(std::isnan(out[at("zeta_star")]));
+    EXPECT_NEAR(out[at("zeta_star_theory")], (1 - 0.36) / 3, 1e-14);
+    // Replica a: T_tr 1 -> e^-0.5 over 2 collisions per particle (0.25); b: 2 -> 2 e^-0.3 over 1 (0.3).
+    const std::vector<double> a1 = row(1, 2, std::exp(-0.5), 1.0), b1 = row(1, 1, 2 * std::exp(-0.3), 1.0);
+    rows = {a1, b1};
+    out = table.combine(rows);
+    EXPECT_NEAR(out[at("zeta_star")], 0.275, 1e-14);
+    EXPECT_NEAR(out[at("zeta_star_err")], 0.025, 1e-14);
+    // Then a: e^-0.5 -> e^-0.9 over 1 (0.4); b: 2 e^-0.3 -> the same (0).
+    const std::vector<double> a2 = row(2, 3, std::exp(-0.9), 1.0), b2 = row(2, 4, 2 * std::exp(-0.3), 1.0);
+    rows = {a2, b2};
+    out = table.combine(rows);
+    EXPECT_NEAR(out[at("zeta_star")], 0.2, 1e-14);
+    EXPECT_NEAR(out[at("zeta_star_theory")], (1 - 0.36) / 3, 1e-14);
 }
 
 TEST(MomentsTable, MeanAndStandardErrorOverReplicas) {
@@ -50,7 +86,7 @@ TEST(MomentsTable, MeanAndStandardErrorOverReplicas) {
     std::vector<double> out = table.combine(rows);
     EXPECT_EQ(out[0], 0.0);
     EXPECT_EQ(out[1], 0.0);
-    EXPECT_EQ(out[out.size() - 3], 1.0); // theory at t = 0: the initial temperatures
+    EXPECT_EQ(out[out.size() - 4], 1.0); // theory at t = 0: the initial temperatures
     const std::vector<double> d = row(0.1, 1, 0.8, 1.0), e = row(0.2, 1, 0.9, 1.0), f = row(0.3, 1, 1.3, 1.0);
     rows = {d, e, f};
     out = table.combine(rows);
@@ -59,7 +95,7 @@ TEST(MomentsTable, MeanAndStandardErrorOverReplicas) {
     EXPECT_NEAR(out[4], 1.0, 1e-15);                                 // T_tr
     EXPECT_NEAR(out[5], std::sqrt((0.04 + 0.01 + 0.09) / 6), 1e-15); // T_tr_err
     HcsTrajectory th(HcsTheory({{1, 0.5, 0.4, 1}}, {{0.9, 0.0}}, 1.0), {{1.0}, {1.0}});
-    EXPECT_NEAR(out[out.size() - 3], th.at(0.2).T_tr[0], 1e-12); // theory at the mean t
+    EXPECT_NEAR(out[out.size() - 4], th.at(0.2).T_tr[0], 1e-12); // theory at the mean t
 }
 
 TEST(MomentsTable, NoSilentNaN) {
@@ -106,7 +142,8 @@ TEST(MomentsTable, EveryColumnHasAMeaningAndTheGeneratedTableListsIt) {
     }
     for (const char* c :
          {"| `t` | time |", "| `X_err` |", "| `T_tr.NAME` | energy |", "| `T_tr.A/T_tr.B` | - |",
-          "| `beta_clamped` |", "| `theta_theory` | - |", "| `T_tr_theory.NAME` | energy |"})
+          "| `beta_clamped` |", "| `theta_theory` | - |", "| `T_tr_theory.NAME` | energy |", "| `zeta_star` | - |",
+          "| `zeta_star_theory` | - |"})
         EXPECT_NE(md.find(c), std::string::npos) << c << "\n" << md;
     EXPECT_EQ(md.find("| `T_tr.B` |"), std::string::npos) << md; // B only in the ratios
 }

@@ -127,16 +127,18 @@ TEST(RunCli, WritesMomentsWithHeaderUnitsAndTheory) {
                                                "A_cw",
                                                "coll_rate",
                                                "E_diss_rate",
+                                               "zeta_star",
                                                "T_tr_theory",
                                                "T_rot_theory",
-                                               "theta_theory"};
+                                               "theta_theory",
+                                               "zeta_star_theory"};
     EXPECT_EQ(m.names, expected);
     EXPECT_EQ(m.rows, 5u); // t = 0 and every collision per particle up to 4
     EXPECT_EQ(m["coll_per_particle"], (std::vector<double>{0, 1, 2, 3, 4}));
     // The units line names one unit per column, right above the header.
     ASSERT_FALSE(m.comments.empty());
     EXPECT_EQ(m.comments.back(),
-              "# units: time,-,energy,energy,-,-,-,-,-,1/time,energy/(volume*time),energy,energy,-");
+              "# units: time,-,energy,energy,-,-,-,-,-,1/time,energy/(volume*time),-,energy,energy,-,-");
     const std::string text = test::read_file(out / "moments.csv");
     EXPECT_NE(text.find("# case: " + f.string() + "\n"), std::string::npos);
     EXPECT_NE(text.find("# seed: 7\n"), std::string::npos);
@@ -211,7 +213,8 @@ TEST(RunCli, ReplicasAddStandardErrorsAfterEachColumn) {
         expected.push_back(b);
         expected.push_back(b + "_err");
     }
-    for (const char* t : {"T_tr_theory", "T_rot_theory", "theta_theory"})
+    for (const char* t : {"zeta_star", "zeta_star_err", "T_tr_theory", "T_rot_theory", "theta_theory",
+                          "zeta_star_theory"})
         expected.push_back(t);
     EXPECT_EQ(m.names, expected);
     EXPECT_EQ(m["coll_per_particle_err"], (std::vector<double>{0, 0, 0})); // the same in every replica
@@ -248,7 +251,7 @@ TEST(RunCli, NoTheoryColumnsWithoutConstantRestitution) {
                                            "model = \"coulomb\"\nbeta0 = 0.5\nfriction = 0.2"));
     ASSERT_EQ(run_roughgas(run_args(f, dir / "out", "--quiet"), dir).status, 0);
     const Moments m = read_moments(dir / "out" / "moments.csv");
-    EXPECT_EQ(m.names.back(), "E_diss_rate");
+    EXPECT_EQ(m.names.back(), "zeta_star"); // measured, without a theory beside it
 }
 
 TEST(RunCli, ExistingOutputIsRefusedWithoutForce) {

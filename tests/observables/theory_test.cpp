@@ -288,6 +288,27 @@ TEST(HcsTheory, TwoEqualSpeciesAreOneSpecies) {
     }
 }
 
+// The reduced cooling rate -(dT_tr/dt)/(T_tr nu_c): (1 - alpha^2)/3 per collision for smooth
+// spheres at any temperature; (4/3)(A - B theta) for rough ones (dT/dt = G sqrt(T)(-A T + B T_rot),
+// nu_c = 4 n sigma^2 sqrt(pi T/m) = (3/4) G sqrt(T)); a mixture of two equal species as one species.
+TEST(HcsTheory, ReducedCoolingRatePerCollision) {
+    for (double alpha : {0.3, 0.9, 1.0})
+        for (double T : {1e-30, 1.0, 7.5}) {
+            const HcsTheory th = one_species(alpha, -1.0, 0.4, 2.0, 0.3, 0.8);
+            EXPECT_NEAR(reduced_cooling_rate(th, {{T}, {0.4}}), (1 - alpha * alpha) / 3, 1e-14) << alpha << " " << T;
+        }
+    for (double beta : {-0.5, 0.0, 1.0}) {
+        const double alpha = 0.8, q = 0.4, T = 2.0, Tr = 0.7;
+        const EqualSphereCoefficients c = equal_sphere_coefficients(alpha, beta, q, 1.5, 0.8, 2.0);
+        const HcsTheory th = one_species(alpha, beta, q, 1.5, 0.4, 2.0);
+        EXPECT_NEAR(reduced_cooling_rate(th, {{T}, {Tr}}), 4.0 / 3.0 * (c.A - c.B * Tr / T), 1e-13) << beta;
+        const HcsTheory two({{1.5, 0.4, q, 0.25}, {1.5, 0.4, q, 0.75}}, {{alpha, beta}, {alpha, beta}, {alpha, beta}},
+                            2.0);
+        EXPECT_NEAR(reduced_cooling_rate(two, {{T, T}, {Tr, Tr}}), reduced_cooling_rate(th, {{T}, {Tr}}), 1e-13)
+            << beta;
+    }
+}
+
 TEST(HcsTheory, LongTimeThetaIsTheClosedFormFixedPoint) {
     for (double alpha : {0.5, 0.9, 1.0})
         for (double beta : {-0.8, -0.3, 0.0, 0.5, 1.0})

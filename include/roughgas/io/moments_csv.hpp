@@ -1,9 +1,17 @@
 #pragma once
 // The rows of moments.csv (docs/reference.md "Output"): the solver's columns (dsmc_columns), with
-// replicas > 1 each followed by its standard error X_err, then, for constant-restitution runs, the
+// replicas > 1 each followed by its standard error X_err; for cooling runs the reduced cooling rate
+//   zeta_star = -ln(T_tr/T_tr,prev)/(coll_per_particle - coll_per_particle,prev),
+// the translational temperature's decay per collision per particle since the replica's previous row
+// (NaN in the first), taken per replica and then averaged like the solver's columns (the scaled
+// homogeneous cooling state has T_tr ~ exp(-zeta_star coll_per_particle): the interval's value is
+// exact there however far apart the rows are); then, for constant-restitution runs, the
 // Maxwellian-approximation theory (observables/theory.hpp) at the row's t:
 //   T_tr_theory, T_rot_theory, theta_theory          (over all grains)
 //   T_tr_theory.NAME, T_rot_theory.NAME, theta_theory.NAME   (mixtures: per species, in order)
+//   T_tr.A/T_tr.B_theory, T_rot.A/T_rot.B_theory     (mixtures: every pair A before B)
+//   zeta_star_theory = -(dT_tr/dt)/(T_tr nu_c)       (cooling runs; nu_c the collisions per particle
+//                                                      and unit time of the same Maxwellian state)
 // and the rule that no value is NaN or infinite unless it is undefined by definition.
 #include "roughgas/dsmc/output_columns.hpp"
 #include "roughgas/dsmc/run_spec.hpp"
@@ -72,8 +80,9 @@ class MomentsTable {
 
     // The CSV row from the replicas' solver rows of the same output time (one per replica, in
     // replica order): the mean, with replicas > 1 the standard error of the mean
-    // sqrt(sum (x - mean)^2/(K (K - 1))), then the theory at the mean t. Call once per output
-    // time, in order (the theory is integrated on from the previous row).
+    // sqrt(sum (x - mean)^2/(K (K - 1))), zeta_star, then the theory at the mean t. Call once per
+    // output time, in order (zeta_star takes each replica's previous row, the theory is integrated
+    // on from the previous row).
     std::vector<double> combine(std::span<const std::span<const double>> replica_rows);
     // The walls.csv row from the same replica rows.
     std::vector<double> combine_walls(std::span<const std::span<const double>> replica_rows) const;
@@ -103,6 +112,8 @@ class MomentsTable {
     std::vector<std::string> species_names_;
     int replicas_ = 1;
     std::optional<HcsTrajectory> trajectory_;
+    bool zeta_ = false;                          // cooling runs: the zeta_star column
+    std::vector<double> prev_T_tr_, prev_cpp_;  // per replica, its previous row's (NaN: none yet)
 };
 
 // The docs/reference.md table of moments.csv columns (`roughgas keys --output`): every column the solver and

@@ -63,8 +63,8 @@ SteadyResult find_steady_state(const std::vector<std::string>& names,
 
 // The monitored quantities above for a run of the given kind, among `names`. Shear: T_tr, T_rot
 // and the reduced stresses. Cooling (the scaled homogeneous cooling state, whose temperatures keep
-// falling): the scale-free ratios theta, a20, a02, a11, each species' theta and the species'
-// temperature ratios. With `rows`, rotational columns (theta, a02, a11, T_rot ratios) are left out
+// falling): the scale-free ratios theta, a20, a02, a11, the reduced cooling rate zeta_star, each
+// species' theta and the species' temperature ratios. With `rows`, rotational columns (theta, a02, a11, T_rot ratios) are left out
 // of a cooling run whose T_rot never changes: smooth grains keep their spins bit for bit, so theta
 // grows as T_tr falls and has no scaled value.
 std::vector<std::string> steady_monitored(const std::vector<std::string>& names, bool shear,

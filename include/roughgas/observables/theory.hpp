@@ -126,6 +126,13 @@ class HcsTheory {
     std::vector<double> maxwell_T0_; // Maxwell kernel: initial T_tr per species (empty: hard spheres)
 };
 
+// The reduced cooling rate zeta* = -(dT_tr/dt)/(T_tr nu_c) at the temperatures T, with T_tr and its
+// rate the fraction-weighted sums over the species and nu_c = sum_a x_a sum_b nu_ab the collisions per
+// particle and unit time (each collision counted for both grains): the translational temperature's
+// decay per collision per particle. Equal smooth spheres: G A sqrt(T)/(4 n sigma^2 sqrt(pi T/m)) =
+// (1 - alpha^2)/3, for any T.
+double reduced_cooling_rate(const HcsTheory& theory, const HcsTemperatures& T);
+
 // The solution from `initial` at t = 0, evaluated at non-decreasing times: each call integrates on
 // from the previous one (Dormand-Prince 5(4), adaptive, relative tolerance `rel_tol`). The state is
 // integrated as (ln E, T_k/E) with E the sum of all temperatures, so it is scale-free: a gas that
