@@ -326,6 +326,7 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         "t in the case's time unit; coll_per_particle = 2 x collisions / N; T in energy units (k_B = 1)",
         fmt::format("replicas: {}{}", K,
                     K > 1 ? " (X = mean over replicas, X_err = its standard error)" : ""),
+        unit_system_note(cfg),
     };
     if (spec.shear)
         prov.notes.push_back(fmt::format(
@@ -403,7 +404,7 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         std::optional<CsvWriter> w;
         if (!columns.empty()) {
             CsvProvenance p = prov;
-            p.notes = {what, prov.notes[1], box_note};
+            p.notes = {what, prov.notes[1], prov.notes[2], box_note};
             p.units = column_units(columns);
             w.emplace(column_names(columns), p);
         }
@@ -455,7 +456,7 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         hprov.notes = {
             "one row per bin at every run.histogram_every time; reduced variables per species: c* = "
             "c sqrt(m/(2 T_tr)), w* = omega sqrt(J/(2 T_rot)) (observables/histograms.hpp)",
-            prov.notes[1]};
+            prov.notes[1], prov.notes[2]};
         hprov.units = htable->units();
         hcsv.emplace(htable->names(), hprov);
     }
@@ -803,7 +804,7 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         const SteadyResult st = steady_summary(names, table_rows, shear);
         const char* file = shear ? steady_file : scaled_file;
         CsvProvenance sp = prov;
-        sp.units.clear();
+        sp.units = steady_csv_units(st, names, table.units());
         sp.notes.push_back(std::string(shear ? "steady-state" : "scaled-state (late-time)") +
                            " summary of moments.csv: drift criterion on " + fmt::format("{}", fmt::join(st.monitored, ", ")) +
                            "; batch means (observables/steady_state.hpp); X_err = batch-means standard error");
@@ -827,7 +828,7 @@ int run_run(const RunOptions& o, const Communicator& comm) {
                                      "coll_per_particle = {:.6g}{}); X_err = batch-means standard error",
                                      st.rows, table_rows[st.first_row][1],
                                      st.reached ? "" : "; NOT steady: the second half of the run"),
-                         prov.notes[1], box_note};
+                         prov.notes[1], prov.notes[2], box_note};
             spp.units = units_p;
             CsvWriter sp_csv(names_p, spp);
             for (std::size_t b = 0; b < profile_blocks[0].size(); ++b) {

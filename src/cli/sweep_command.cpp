@@ -26,6 +26,7 @@
 
 #include "roughgas/dsmc/run.hpp"
 #include "roughgas/io/case_file.hpp"
+#include "roughgas/io/case_schema.hpp"
 #include "roughgas/io/csv_writer.hpp"
 #include "roughgas/io/moments_csv.hpp"
 #include "roughgas/io/run_spec_from_case.hpp"
@@ -227,7 +228,8 @@ int run_sweep(const SweepOptions& o, const Communicator& comm) {
             prov.seed = cases[static_cast<std::size_t>(k)].run.seed;
             prov.resolved_case = emit_case(cases[static_cast<std::size_t>(k)]);
             prov.notes = {fmt::format("sweep point {} of {}: {} = {}", k, s.count, s.key,
-                                      values[static_cast<std::size_t>(k)])};
+                                      values[static_cast<std::size_t>(k)]),
+                          unit_system_note(cases[static_cast<std::size_t>(k)])};
             prov.units = p.units;
             CsvWriter csv(p.names, prov);
             for (const auto& row : p.rows)
@@ -235,6 +237,16 @@ int run_sweep(const SweepOptions& o, const Communicator& comm) {
             const fs::path pd = dir / fmt::format("point_{}", k);
             fs::create_directories(pd);
             csv.write(pd / "moments.csv");
+            // Its summary beside it, as `roughgas run` writes it: steady.csv (shear) or scaled.csv.
+            const bool shear = cases[static_cast<std::size_t>(k)].run.kind == RunKind::shear;
+            prov.notes.push_back(fmt::format("{} summary of moments.csv: drift criterion on {}; batch means "
+                                             "(observables/steady_state.hpp); X_err = batch-means standard error",
+                                             shear ? "steady-state" : "scaled-state (late-time)",
+                                             fmt::join(p.steady.monitored, ", ")));
+            prov.units = steady_csv_units(p.steady, p.names, p.units);
+            CsvWriter summary(steady_csv_columns(p.steady), prov);
+            summary.add_row(steady_csv_row(p.steady, p.names, p.rows));
+            summary.write(pd / (shear ? "steady.csv" : "scaled.csv"));
     };
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (std::size_t i = 0; i < mine.size(); ++i) {
@@ -326,10 +338,26 @@ int run_sweep(const SweepOptions& o, const Communicator& comm) {
     prov.seed = cases[0].run.seed;
     prov.resolved_case = emit_case(cases[0]);
     prov.notes = {
-        fmt::format("sweep of {} from {} to {} ({} points); one row per point: the steady state "
-                    "(shear: of T and P*_ij; cooling: the scaled state, drift criterion on {}), batch means "
-                    "(io/steady_csv.hpp); each point's rows in point_K/moments.csv",
-                    s.key, s.from, s.to, s.count, fmt::join(results[0].steady.monitored, ", "))};
+        fmt::format("sweep of {} from {} to {} ({} points); one row per point: the {} state, drift criterion "
+                    "on {}, batch means (io/steady_csv.hpp); each point's rows in point_K/moments.csv, its "
+                    "summary in point_K/{}",
+                    s.key, s.from, s.to, s.count, cases[0].run.kind == RunKind::shear ? "steady" : "scaled",
+                    fmt::join(results[0].steady.monitored, ", "),
+                    cases[0].run.kind == RunKind::shear ? "steady.csv" : "scaled.csv"),
+        unit_system_note(cases[0])};
+    // The swept key's unit (its schema entry: array indices left out), then the summary's.
+    std::string key_path;
+    for (std::size_t a = 0; a <= s.key.size();) {
+        const std::size_t b = std::min(s.key.find('.', a), s.key.size());
+        const std::string part = s.key.substr(a, b - a);
+        if (!part.empty() && !std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; }))
+            key_path += (key_path.empty() ? "" : ".") + part;
+        a = b + 1;
+    }
+    const KeySpec* key_spec = find_key(key_path);
+    prov.units = {key_spec && !key_spec->unit.empty() ? key_spec->unit : "-"};
+    for (const std::string& u : steady_csv_units(results[0].steady, results[0].names, results[0].units))
+        prov.units.push_back(u);
     CsvWriter csv(columns, prov);
     for (std::size_t k = 0; k < results.size(); ++k) {
         if (steady_csv_columns(results[k].steady) != steady_cols)

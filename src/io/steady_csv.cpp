@@ -13,6 +13,21 @@ std::vector<std::string> steady_csv_columns(const SteadyResult& r) {
     return c;
 }
 
+std::vector<std::string> steady_csv_units(const SteadyResult& r, const std::vector<std::string>& names,
+                                          const std::vector<std::string>& units) {
+    std::vector<std::string> u = {"-", "-", "-"};
+    for (const SteadyValue& v : r.values) {
+        const auto it = std::find(names.begin(), names.end(), v.name);
+        const std::string unit =
+            it != names.end() && static_cast<std::size_t>(it - names.begin()) < units.size()
+                ? units[static_cast<std::size_t>(it - names.begin())]
+                : "-";
+        u.push_back(unit);
+        u.push_back(unit);
+    }
+    return u;
+}
+
 std::vector<double> steady_csv_row(const SteadyResult& r, const std::vector<std::string>& names,
                                    const std::vector<std::vector<double>>& rows) {
     const std::size_t cpp =
@@ -30,15 +45,20 @@ SteadyResult steady_summary(const std::vector<std::string>& names,
                             const std::vector<std::vector<double>>& rows, bool shear) {
     SteadyOptions o;
     o.monitored = steady_monitored(names, shear, &rows);
+    // A transient at the window's start is what a steady average must not contain: the window's
+    // first three rows are tested against its second half too.
+    o.head_rows = 3;
+    // Each of those rows within its own replicas' error: for the scaled state, whose log-spaced
+    // rows are few; a steady state's window has rows enough for the means to show a transient
+    // (and its 8 monitored columns x 3 rows against errors from as few as 2 replicas would refuse
+    // steady windows by chance).
+    o.head_each_row = !shear;
     if (!shear) {
         // The scaled cooling state: often from log-spaced rows (ten per decade of collisions per
         // particle), whose late-time window is a minority of the rows but whose rows, far apart
         // in collisions, are nearly independent samples: a window of 10 rows anywhere.
-        // A transient at the window's start is what a late-time average must not contain: the
-        // window's first three rows are tested against its second half too.
         o.min_rows = 10;
         o.max_start = 1.0;
-        o.head_rows = 3;
     }
     SteadyResult r = find_steady_state(names, rows, o);
     r.monitored = o.monitored;

@@ -91,7 +91,7 @@ SteadyResult find_steady_state(const std::vector<std::string>& names,
                     break;
                 }
                 // With replicas, each of those rows against the late mean within its own error.
-                if (const std::size_t e = index_of(names, names[j] + "_err"); e < names.size()) {
+                if (const std::size_t e = index_of(names, names[j] + "_err"); o.head_each_row && e < names.size()) {
                     for (std::size_t k = k0; k < std::min(k0 + o.head_rows, mid) && steady; ++k) {
                         const double x = rows[k][j], ex = rows[k][e];
                         if (std::isfinite(x) && std::isfinite(ex) &&
@@ -127,9 +127,19 @@ std::vector<std::string> steady_monitored(const std::vector<std::string>& names,
     const auto has = [&](const std::string& n) { return std::find(names.begin(), names.end(), n) != names.end(); };
     std::vector<std::string> out;
     if (shear) {
-        for (const std::string w : {"T_tr", "T_rot", "P_xx_star", "P_yy_star", "P_zz_star", "P_xy_star"})
+        // The temperatures and stresses, and theta and a20: the spins and the velocity distribution's
+        // shape relax more slowly than T_tr (at alpha = 0.7, theta keeps falling for ~20 collisions
+        // per particle after T_tr has nearly settled), and so do a mixture's species.
+        for (const std::string w : {"T_tr", "T_rot", "P_xx_star", "P_yy_star", "P_zz_star", "P_xy_star", "theta", "a20"})
             if (has(w))
                 out.push_back(w);
+        for (const std::string& n : names) {
+            const std::string base = n.substr(0, n.find('.'));
+            const bool species = n.find('.') != std::string::npos && !n.ends_with("_err") &&
+                                 !n.ends_with("_theory") && (base == "theta" || n.find('/') != std::string::npos);
+            if (species)
+                out.push_back(n);
+        }
         return out;
     }
     // Smooth grains: T_rot the same in every row (no collision changes a spin), to round-off (a box

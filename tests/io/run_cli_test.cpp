@@ -144,6 +144,11 @@ TEST(RunCli, WritesMomentsWithHeaderUnitsAndTheory) {
     EXPECT_NE(text.find("# seed: 7\n"), std::string::npos);
     EXPECT_NE(text.find("# build: "), std::string::npos);
     EXPECT_NE(text.find("# alpha = 0.9\n"), std::string::npos); // the resolved case
+    EXPECT_NE(text.find("# unit system: the case's own ("), std::string::npos); // reduced units, no material
+    // The summary too names a unit per column: steady, steady_from, steady_rows, t's neighbour
+    // coll_per_particle and its error, then T_tr and its error.
+    const std::string scaled = test::read_file(out / "scaled.csv");
+    EXPECT_NE(scaled.find("\n# units: -,-,-,-,-,energy,energy,"), std::string::npos) << scaled;
     EXPECT_TRUE(std::isnan(m["coll_rate"][0]));                 // no interval before t = 0
     for (std::size_t k = 1; k < m.rows; ++k) {
         EXPECT_GT(m["coll_rate"][k], 0);
@@ -242,6 +247,18 @@ TEST(RunCli, MixtureHasSpeciesColumnsAndTheory) {
         EXPECT_NEAR(m["T_tr_theory"][k], 0.4 * m["T_tr_theory.a"][k] + 0.6 * m["T_tr_theory.b"][k], 1e-12);
         EXPECT_NEAR(m["T_tr"][k], 0.4 * m["T_tr.a"][k] + 0.6 * m["T_tr.b"][k], 1e-9 * m["T_tr"][k]);
     }
+}
+
+// A case whose collisions integrate the viscoelastic contact is in SI (its [material] is): the
+// header says so, for readers that label axes in s and J.
+TEST(RunCli, MaterialCasesSayTheirNumbersAreSI) {
+    const test::ScratchDir dir;
+    const fs::path f = dir.write("ice.toml", test::small_case());
+    const test::CommandResult r = run_roughgas(run_args(f, dir / "out", "--quiet --set run.end=0.01 --set contact.cache=false"), dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(test::read_file(dir / "out" / "moments.csv")
+                  .find("\n# unit system: SI (time s, length m, mass kg, energy J, volume m^3)\n"),
+              std::string::npos);
 }
 
 TEST(RunCli, NoTheoryColumnsWithoutConstantRestitution) {

@@ -86,6 +86,21 @@ TEST(SweepCli, OneRowPerPointIdenticalWhateverTheThreads) {
     EXPECT_NE(lines[0].find(",P_xy_star,P_xy_star_err,"), std::string::npos);
     EXPECT_EQ(lines[1].rfind("0.7,", 0), 0u) << lines[1];
     EXPECT_EQ(lines[3].rfind("0.9,", 0), 0u) << lines[3];
+    // Each point's summary beside its rows: the same values as its row of sweep.csv (after the
+    // swept value), in a file with a unit per column, as the run writes steady.csv.
+    for (int k = 0; k < 3; ++k) {
+        const std::string point = test::read_file(dir / "t1" / ("point_" + std::to_string(k)) / "steady.csv");
+        const std::vector<std::string> p = data_lines(point);
+        ASSERT_EQ(p.size(), 2u) << point;
+        EXPECT_EQ(lines[0], "collision.alpha," + p[0]);
+        EXPECT_EQ(lines[static_cast<std::size_t>(k) + 1].substr(lines[static_cast<std::size_t>(k) + 1].find(',') + 1),
+                  p[1]);
+        EXPECT_NE(point.find("\n# units: -,-,-,"), std::string::npos) << point;
+        EXPECT_NE(point.find("# unit system: the case's own"), std::string::npos) << point;
+    }
+    // sweep.csv's units: the swept key's (dimensionless alpha), then the summary's (T_tr in energy).
+    EXPECT_NE(a.find("\n# units: -,-,-,-,"), std::string::npos) << a;
+    EXPECT_NE(a.find(",energy,energy,"), std::string::npos) << a;
     // an existing sweep is not overwritten without --force
     EXPECT_EQ(run_roughgas(args + "'" + (dir / "t1").string() + "'", dir).status, 2);
 }
@@ -104,6 +119,8 @@ TEST(SweepCli, CoolingCasesSweepToo) {
     ASSERT_EQ(lines.size(), 3u);
     EXPECT_NE(lines[0].find(",theta,theta_err,"), std::string::npos);
     EXPECT_EQ(lines[0].find("P_xy"), std::string::npos);
+    EXPECT_TRUE(fs::exists(dir / "o" / "point_1" / "scaled.csv")); // a cooling point's summary
+    EXPECT_FALSE(fs::exists(dir / "o" / "point_1" / "steady.csv"));
 }
 
 // A point inside the range that is invalid fails the whole sweep before any work: exit 2, the

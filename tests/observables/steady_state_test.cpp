@@ -123,3 +123,24 @@ TEST(SteadyMonitored, SmoothGrainsLeaveOutTheRotationalRatios) {
 
 } // namespace
 } // namespace roughgas
+
+namespace roughgas {
+namespace {
+
+// What the steady-state detector of a shear run watches: the temperatures, the reduced stresses,
+// theta and a20, and a mixture's species' theta and measured temperature ratios (not their errors,
+// not the theory's ratios, not the other per-species columns).
+TEST(SteadyMonitored, ShearWatchesThetaA20AndTheSpecies) {
+    const std::vector<std::string> names = {"t",          "coll_per_particle", "T_tr",           "T_tr_err",
+                                            "T_rot",      "theta",             "a20",            "a02",
+                                            "P_xx_star",  "P_yy_star",         "P_zz_star",      "P_xy_star",
+                                            "theta.a",    "theta.a_err",       "a20.a",          "T_tr.a/T_tr.b",
+                                            "T_rot.a/T_rot.b", "T_tr.a/T_tr.b_theory"};
+    const std::vector<std::string> expected = {"T_tr",      "T_rot", "P_xx_star", "P_yy_star",     "P_zz_star",
+                                               "P_xy_star", "theta", "a20",       "theta.a",       "T_tr.a/T_tr.b",
+                                               "T_rot.a/T_rot.b"};
+    EXPECT_EQ(steady_monitored(names, true), expected);
+}
+
+} // namespace
+} // namespace roughgas

@@ -260,6 +260,17 @@ inline const CollisionConfig& collision_for(const CaseConfig& cfg, std::size_t i
     return cfg.collision;
 }
 
+// The '#' line of the CSV files naming their units: SI when a pair integrates the viscoelastic
+// contact (its [material] is in SI, and so must the species' masses, radii and temperatures be);
+// otherwise the case's own units, whatever consistent ones it was written in.
+inline std::string unit_system_note(const CaseConfig& cfg) {
+    for (std::size_t i = 0; i < cfg.species.size(); ++i)
+        for (std::size_t j = i; j < cfg.species.size(); ++j)
+            if (uses_material(collision_for(cfg, i, j).model))
+                return "unit system: SI (time s, length m, mass kg, energy J, volume m^3)";
+    return "unit system: the case's own (any consistent units with k_B = 1: temperatures are energies)";
+}
+
 // Contact constants of species i with species j; requires cfg.material (validated for such uses).
 inline ContactPair contact_pair(const CaseConfig& cfg, std::size_t i, std::size_t j) {
     const SpeciesConfig& a = cfg.species[i];

@@ -12,6 +12,10 @@
 namespace roughgas {
 
 std::vector<std::string> steady_csv_columns(const SteadyResult& r);
+// The unit of every column of steady_csv_columns: "-" for steady, steady_from, steady_rows, then each
+// value's and its error's from the unit of the moments.csv column of the same name (`names`, `units`).
+std::vector<std::string> steady_csv_units(const SteadyResult& r, const std::vector<std::string>& names,
+                                          const std::vector<std::string>& units);
 std::vector<double> steady_csv_row(const SteadyResult& r, const std::vector<std::string>& names,
                                    const std::vector<std::vector<double>>& rows);
 

@@ -11,8 +11,9 @@
 // i.e. no drift of X is resolved by the data (with `head_rows` > 0, the same test for the mean of
 // the window's first `head_rows` rows against the second half's). The steady start is the first such k0 (scanned
 // upwards, over the first `max_start` of the rows, with at least `min_rows` rows in the window).
-// Monitored (steady_monitored): T_tr, T_rot and P*_xx, P*_yy, P*_zz, P*_xy for shear runs; the
-// scale-free ratios for cooling runs, whose steady state is the scaled (homogeneous cooling) state.
+// Monitored (steady_monitored): T_tr, T_rot, P*_xx, P*_yy, P*_zz, P*_xy, theta, a20 (and a
+// mixture's species' theta and temperature ratios) for shear runs; the scale-free ratios for
+// cooling runs, whose steady state is the scaled (homogeneous cooling) state.
 //
 // Averages. Every other quantity is averaged over the steady window with the batch-means error:
 // the window cut into `batches` consecutive batches of equal length, se = sd(batch means)/sqrt(B).
@@ -36,6 +37,9 @@ struct SteadyOptions {
     // > 0: also the mean of the window's first `head_rows` rows against the second half's, so that
     // a transient of a few rows at the window's start, diluted in the first half's mean, is seen.
     std::size_t head_rows = 0;
+    // With head_rows > 0 and X_err columns (replicas): also each of those rows against the second
+    // half's mean within 3 of its own X_err combined with the half's error.
+    bool head_each_row = true;
 };
 
 struct SteadyValue {
@@ -61,8 +65,8 @@ SteadyResult find_steady_state(const std::vector<std::string>& names,
                                const std::vector<std::vector<double>>& rows, const SteadyOptions& options,
                                const std::vector<std::string>& skip = {"t"});
 
-// The monitored quantities above for a run of the given kind, among `names`. Shear: T_tr, T_rot
-// and the reduced stresses. Cooling (the scaled homogeneous cooling state, whose temperatures keep
+// The monitored quantities above for a run of the given kind, among `names`. Shear: T_tr, T_rot,
+// the reduced stresses, theta, a20, each species' theta and the species' temperature ratios. Cooling (the scaled homogeneous cooling state, whose temperatures keep
 // falling): the scale-free ratios theta, a20, a02, a11, the reduced cooling rate zeta_star, each
 // species' theta and the species' temperature ratios. With `rows`, rotational columns (theta, a02, a11, T_rot ratios) are left out
 // of a cooling run whose T_rot never changes: smooth grains keep their spins bit for bit, so theta
