@@ -1,6 +1,8 @@
 // Reading, checking and writing DIR/checkpoint for `roughgas run` (see run_checkpoints.hpp).
 #include "run_checkpoints.hpp"
 
+#include "replica_files.hpp"
+
 #include "roughgas/io/atomic_file.hpp"
 #include "roughgas/io/case_file.hpp"
 #include "roughgas/io/csv_writer.hpp"
@@ -144,7 +146,7 @@ void CheckpointWriter::save_replica(std::uint64_t r, std::vector<std::vector<dou
 }
 
 void remove_stale_temporaries(const fs::path& dir) {
-    std::vector<fs::path> dirs = {dir, checkpoint_dir(dir), state_dir(dir), fields_dir(dir)};
+    std::vector<fs::path> dirs = {dir, checkpoint_dir(dir), state_dir(dir), fields_dir(dir), replicas_dir(dir)};
     std::error_code error;
     for (const auto& e : fs::directory_iterator(fields_dir(dir), error))
         if (e.is_directory())
@@ -154,6 +156,7 @@ void remove_stale_temporaries(const fs::path& dir) {
         for (const auto& e : fs::directory_iterator(d, ec)) {
             const std::string name = e.path().filename().string();
             bool ours = d != dir && (name.find(".bin.tmp.") != std::string::npos ||
+                                     (d == replicas_dir(dir) && name.find(".csv.tmp.") != std::string::npos) ||
                                      name.find(".h5.tmp.") != std::string::npos ||
                                      name.find(".xmf.tmp.") != std::string::npos);
             for (const char* csv : {"moments", "histograms", "steady", "scaled", "walls", "profiles", "steady_profiles",

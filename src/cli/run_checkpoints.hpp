@@ -58,7 +58,7 @@ class CheckpointWriter {
 };
 
 // Removes what a kill left behind: temporary files of our outputs and checkpoints
-// (NAME.tmp.PID, io/atomic_file.hpp) in DIR and DIR/checkpoint.
+// (NAME.tmp.PID, io/atomic_file.hpp) in DIR and its checkpoint, state, fields and replicas directories.
 void remove_stale_temporaries(const std::filesystem::path& dir);
 
 } // namespace roughgas::cli

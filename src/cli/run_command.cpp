@@ -24,6 +24,7 @@
 #include "commands.hpp"
 #include "memory_check.hpp"
 #include "rank_errors.hpp"
+#include "replica_files.hpp"
 
 #include "roughgas/core/available_cpus.hpp"
 
@@ -141,7 +142,7 @@ std::pair<std::uint64_t, std::uint64_t> replica_range(const std::string& text, s
 // Never overwrite earlier results by accident: that is an input error, reported before any work.
 // A checkpoint of an earlier run counts too: it is continued with --resume, or replaced with --force.
 void check_output_dir(const fs::path& dir, bool force, bool histograms, bool shear, bool walls, bool box,
-                      bool spectra, bool modes, bool fields) {
+                      bool spectra, bool modes, bool fields, bool replicas) {
     if (fs::exists(dir) && !fs::is_directory(dir))
         throw InputError(dir.string(), "--out", "--out " + dir.string() + ": exists and is not a directory");
     if (force)
@@ -160,6 +161,10 @@ void check_output_dir(const fs::path& dir, bool force, bool histograms, bool she
         throw InputError(dir.string(), "--out",
                          fmt::format("--out {}: {} exists (use --force to overwrite)", dir.string(),
                                      fields_dir(dir).string()));
+    if (replicas && fs::exists(replicas_dir(dir)))
+        throw InputError(dir.string(), "--out",
+                         fmt::format("--out {}: {} exists (use --force to overwrite)", dir.string(),
+                                     replicas_dir(dir).string()));
     for (const char* file :
          {output_file, histograms_file, steady_file, scaled_file, walls_file, profiles_file, steady_profiles_file,
           spectra_file, modes_file}) {
@@ -205,7 +210,7 @@ RunSetup new_run(const RunOptions& o, bool root) {
         check_output_dir(s.dir, o.force, s.cfg.run.histogram_every > 0, driven(s.cfg),
                          s.cfg.domain && s.cfg.domain->has_walls(), s.cfg.domain.has_value(),
                          s.cfg.domain && s.cfg.spectra, s.cfg.domain && s.cfg.spectra && s.cfg.spectra->modes > 0,
-                         s.cfg.domain && s.cfg.fields);
+                         s.cfg.domain && s.cfg.fields, s.cfg.run.replicas > 1);
     }
     s.manifest.run = {roughgas_version(),
                       o.case_file,
@@ -487,6 +492,7 @@ int run_run(const RunOptions& o, const Communicator& comm) {
             fs::remove_all(checkpoint_dir(dir), ec);
             fs::remove_all(state_dir(dir), ec);
             fs::remove_all(fields_dir(dir), ec); // an earlier run's snapshots would mix with this run's
+            fs::remove_all(replicas_dir(dir), ec);
         }
         if (checkpoint_every > 0 || partial || comm.size() > 1) // a kill before the first replica
             checkpoints.write_manifest_once();                  // checkpoint still leaves a resumable run
@@ -525,6 +531,15 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         rows[r] = std::move(setup.resumed[r]->rows);
         hsets[r] = std::move(setup.resumed[r]->histograms);
         finished[r] = setup.resumed[r]->finished;
+    }
+    // Each replica's own rows beside the ensemble's (replicas > 1), this process's replicas.
+    std::optional<ReplicaFiles> replica_files;
+    if (K > 1) {
+        replica_files.emplace(dir, spec, prov, mine_from, mine_to);
+        for (int r = mine_from; r < mine_to; ++r) // a resumed run: the rows of its checkpoints
+            for (const std::vector<double>& row : rows[static_cast<std::size_t>(r)])
+                replica_files->add(r, row, false);
+        replica_files->write_all();
     }
     std::mutex mutex;
     std::size_t combined = 0, on_disk = 0;
@@ -649,6 +664,8 @@ int run_run(const RunOptions& o, const Communicator& comm) {
                 table.check(row); // NonFiniteValue: stop, naming the column and t
                 std::lock_guard lock(mutex);
                 rows[static_cast<std::size_t>(r)].emplace_back(row.begin(), row.end());
+                if (replica_files)
+                    replica_files->add(r, row);
                 flush(false);
             };
             const ProgressSink report = [&, r](double done, double end, double coll) {
@@ -708,6 +725,8 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         }
     }
     progress.finish();
+    if (replica_files)
+        replica_files->write_all();
     if (error) { // one rank's (main ends the job) or the one process's
         std::lock_guard lock(mutex);
         flush(true);

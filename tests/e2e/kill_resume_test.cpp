@@ -100,6 +100,15 @@ void expect_same_outputs(const fs::path& reference, const fs::path& out, const s
     }
     for (const auto& e : fs::recursive_directory_iterator(out)) // no temporary left behind
         EXPECT_EQ(e.path().filename().string().find(".tmp."), std::string::npos) << e.path();
+    // Each replica's own rows (replicas > 1): the same files, the same bytes.
+    ASSERT_EQ(fs::exists(reference / "replicas"), fs::exists(out / "replicas")) << context;
+    if (fs::exists(reference / "replicas"))
+        for (const auto& e : fs::directory_iterator(reference / "replicas")) {
+            const fs::path other = out / "replicas" / e.path().filename();
+            ASSERT_TRUE(fs::exists(other)) << other << ", " << context;
+            EXPECT_TRUE(test::read_file(e.path()) == test::read_file(other))
+                << other << " differs from the uninterrupted run, " << context;
+        }
     // The cell fields: the same files, the same bytes (the sidecars name their own directory).
     if (fs::exists(reference / "fields") || fs::exists(out / "fields")) {
         const auto files = [](const fs::path& root) {
@@ -215,6 +224,15 @@ std::size_t valid_rows(const fs::path& csv) {
     return rows;
 }
 
+// A file of a stopped run holds whole lines of the uninterrupted run's file, from its start: the
+// same header and the first rows. Returns its rows (lines after the '#' lines and the header).
+std::size_t expect_prefix(const fs::path& reference, const fs::path& file) {
+    const std::string a = test::read_file(reference), b = test::read_file(file);
+    EXPECT_TRUE(!b.empty() && b.back() == '\n' && a.compare(0, b.size(), b) == 0)
+        << file << " is not a beginning of " << reference;
+    return valid_rows(file);
+}
+
 TEST(Signals, SigtermAndSigintCheckpointWriteTheCsvSoFarAndExitNonZero) {
     const test::ScratchDir dir;
     const fs::path f = dir.write("case.toml", rough_cooling(10000, 150.0));
@@ -245,6 +263,9 @@ TEST(Signals, SigtermAndSigintCheckpointWriteTheCsvSoFarAndExitNonZero) {
         EXPECT_NE(s.err.find("continue with: roughgas run --resume " + out.string()), std::string::npos)
             << s.err;
         EXPECT_EQ(valid_rows(out / "moments.csv"), 0u); // no row is complete without replica 2
+        // ... but the running replicas' own files show their rows so far.
+        for (const char* file : {"moments_0.csv", "moments_1.csv"})
+            EXPECT_GE(expect_prefix(reference / "replicas" / file, out / "replicas" / file), 1u) << file;
         for (const char* file : {"run.bin", "replica_0.bin", "replica_1.bin"})
             EXPECT_TRUE(fs::exists(out / "checkpoint" / file)) << file;
         EXPECT_FALSE(fs::exists(out / "checkpoint" / "replica_2.bin")); // never started: starts afresh
@@ -265,6 +286,18 @@ TEST(Signals, SigtermAndSigintCheckpointWriteTheCsvSoFarAndExitNonZero) {
         EXPECT_LT(rows, 151u); // not all: the run stopped
         run_to_end("run --resume '" + out.string() + "' --threads 2", dir);
         expect_same_outputs(reference, out, "SIGINT");
+    }
+    { // SIGKILL: no chance to write anything more; the replicas' files hold what they had reached
+        const fs::path out = dir / "sigkill";
+        test::ChildProcess child(run_args(out, true), dir / "child_out.txt", dir / "child_err.txt");
+        const fs::path first = out / "replicas" / "moments_0.csv";
+        ASSERT_TRUE(test::wait_until(child, [&] { return fs::exists(first) && valid_rows(first) >= 3; }))
+            << test::read_file(dir / "child_err.txt");
+        child.signal(SIGKILL);
+        child.wait();
+        EXPECT_GE(expect_prefix(reference / "replicas" / "moments_0.csv", first), 3u);
+        run_to_end("run --resume '" + out.string() + "' --threads 2", dir);
+        expect_same_outputs(reference, out, "SIGKILL");
     }
     { // SIGTERM twice: the second ends the process at once (or it had already stopped): resumable
         const fs::path out = dir / "twice";

@@ -230,6 +230,19 @@ TEST(RunCli, ReplicasAddStandardErrorsAfterEachColumn) {
         EXPECT_GT(m["t_err"][k], 0) << k;
     }
     EXPECT_NE(test::read_file(dir / "out" / "moments.csv").find("# replicas: 3"), std::string::npos);
+    // Each replica's own rows beside them: the columns of one replica, whose mean is the ensemble's.
+    std::vector<Moments> own;
+    for (int r = 0; r < 3; ++r)
+        own.push_back(read_moments(dir / "out" / "replicas" / ("moments_" + std::to_string(r) + ".csv")));
+    for (const Moments& o : own) {
+        ASSERT_EQ(o.rows, m.rows);
+        EXPECT_EQ(o.col.count("T_tr_err"), 0u);
+        EXPECT_EQ(o.col.count("zeta_star"), 1u);
+    }
+    for (const char* c : {"T_tr", "theta", "a20", "zeta_star"})
+        for (std::size_t k = 1; k < m.rows; ++k)
+            EXPECT_NEAR((own[0][c][k] + own[1][c][k] + own[2][c][k]) / 3, m[c][k], 1e-14 * std::abs(m[c][k]))
+                << c << " row " << k;
 }
 
 TEST(RunCli, MixtureHasSpeciesColumnsAndTheory) {

@@ -1,0 +1,60 @@
+#include "replica_files.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+namespace roughgas::cli {
+
+namespace fs = std::filesystem;
+
+fs::path replicas_dir(const fs::path& run_dir) {
+    return run_dir / "replicas";
+}
+
+fs::path replica_moments_path(const fs::path& run_dir, int replica) {
+    return replicas_dir(run_dir) / fmt::format("moments_{}.csv", replica);
+}
+
+ReplicaFiles::ReplicaFiles(fs::path run_dir, const RunSpec& spec, const CsvProvenance& provenance, int from, int to)
+    : dir_(std::move(run_dir)), from_(from) {
+    if (provenance.notes.size() < 2)
+        throw std::invalid_argument("ReplicaFiles: the ensemble's notes name the replicas second");
+    RunSpec one = spec;
+    one.replicas = 1;
+    for (int r = from; r < to; ++r) {
+        MomentsTable table(one);
+        CsvProvenance p = provenance;
+        p.notes[1] = fmt::format("replica {} of {}: its own rows (DIR/moments.csv holds the mean over the replicas)",
+                                 r, spec.replicas);
+        p.units = table.units();
+        CsvWriter csv(table.names(), p);
+        files_.emplace_back(File{std::move(table), std::move(csv), 0,
+                                 std::chrono::steady_clock::now() - std::chrono::hours(1), {}});
+    }
+}
+
+void ReplicaFiles::add(int r, std::span<const double> row, bool write_now) {
+    std::optional<File>& f = files_.at(static_cast<std::size_t>(r - from_));
+    const std::span<const double> rows[] = {row};
+    f->csv.add_row(f->table.combine(rows));
+    if (write_now && std::chrono::steady_clock::now() - f->last_write >= 10 * f->cost)
+        write(r, *f);
+}
+
+void ReplicaFiles::write_all() {
+    for (std::size_t k = 0; k < files_.size(); ++k)
+        if (files_[k]->csv.rows() > files_[k]->on_disk)
+            write(from_ + static_cast<int>(k), *files_[k]);
+}
+
+void ReplicaFiles::write(int r, File& f) {
+    const auto t = std::chrono::steady_clock::now();
+    fs::create_directories(replicas_dir(dir_));
+    f.csv.write(replica_moments_path(dir_, r));
+    f.on_disk = f.csv.rows();
+    f.last_write = std::chrono::steady_clock::now();
+    f.cost = f.last_write - t;
+}
+
+} // namespace roughgas::cli
