@@ -2,6 +2,9 @@
 
 #include "roughgas/core/text_file.hpp"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <fstream>
 #include <sstream>
 
@@ -47,6 +50,16 @@ std::optional<AvailableMemory> available_memory() {
     limit("/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory.current", "cgroup memory.max");
     limit("/sys/fs/cgroup/memory/memory.limit_in_bytes", "/sys/fs/cgroup/memory/memory.usage_in_bytes",
           "cgroup memory.limit_in_bytes");
+    // An address-space limit counts mapped, not resident, memory: the grains' arrays are mapped in
+    // full at once, so it refuses them however little of the machine's memory is in use.
+    struct rlimit rl {};
+    const auto mapped_pages = number(read_text_file("/proc/self/statm")); // its first field: pages mapped
+    if (::getrlimit(RLIMIT_AS, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY && mapped_pages) {
+        const std::uint64_t mapped = *mapped_pages * static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE));
+        const std::uint64_t left = rl.rlim_cur > mapped ? rl.rlim_cur - mapped : 0;
+        if (!a || left < a->bytes)
+            a = AvailableMemory{left, "address-space limit (ulimit -v)"};
+    }
     return a;
 }
 

@@ -525,6 +525,31 @@ TEST(RunCli, RefusesARunLargerThanTheMemory) {
     EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
+// An address-space limit (ulimit -v: 1 GB here) is memory the process may not exceed, whatever the
+// machine has free: 2e7 grains (about 1.9 GB) are refused before any work, with the estimate and
+// the limit named (they would otherwise end in std::bad_alloc), and 2e5 grains under the same limit run.
+TEST(RunCli, RefusesARunLargerThanItsAddressSpaceLimit) {
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "AddressSanitizer maps terabytes of shadow memory: no address-space limit fits it";
+#endif
+    const test::ScratchDir dir;
+    const std::string rough = std::string(ROUGHGAS_SOURCE_DIR) + "/cases/hcs_rough.toml";
+    const auto under_limit = [&](const std::string& particles, const fs::path& out) {
+        const std::string cmd = "sh -c \"ulimit -v 1000000 && exec '" + std::string(ROUGHGAS_BINARY) + "' run '" + rough +
+                                "' --quiet --threads 1 --set run.replicas=1 --set run.end=0.1 --set run.particles=" +
+                                particles + " --out '" + out.string() + "'\" >/dev/null 2>'" + (dir / "err.txt").string() + "'";
+        const int raw = std::system(cmd.c_str());
+        return std::pair{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, test::read_file(dir / "err.txt")};
+    };
+    const auto [status, err] = under_limit("20000000", dir / "big");
+    EXPECT_EQ(status, 2) << err;
+    EXPECT_NE(err.find("run.particles = 20000000: needs about 1.88 GB"), std::string::npos) << err;
+    EXPECT_NE(err.find("(address-space limit (ulimit -v))"), std::string::npos) << err;
+    EXPECT_FALSE(fs::exists(dir / "big"));
+    const auto [small_status, small_err] = under_limit("200000", dir / "small");
+    EXPECT_EQ(small_status, 0) << small_err;
+}
+
 TEST(RunCli, FewGrainsWithDenseRowsRun) {
     const test::ScratchDir dir;
     for (int n : {2, 3, 5, 20, 50}) {

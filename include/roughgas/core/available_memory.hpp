@@ -1,7 +1,8 @@
 #pragma once
-// The memory this process may still use: the smaller of the machine's MemAvailable
-// (/proc/meminfo) and what its cgroup allows beyond its current use (v2 memory.max - memory.current,
-// v1 memory.limit_in_bytes - memory.usage_in_bytes). Commands compare a run's estimate against it
+// The memory this process may still use: the smallest of the machine's MemAvailable
+// (/proc/meminfo), what its cgroup allows beyond its current use (v2 memory.max - memory.current,
+// v1 memory.limit_in_bytes - memory.usage_in_bytes) and what its address-space limit (RLIMIT_AS,
+// `ulimit -v`) leaves beyond the address space it maps already (/proc/self/statm). Commands compare a run's estimate against it
 // before any work, so that a run too large for the machine is refused with its numbers instead of
 // failing in an allocation, or being killed, after minutes of table building.
 #include <cstdint>
@@ -12,7 +13,7 @@ namespace roughgas {
 
 struct AvailableMemory {
     std::uint64_t bytes = 0;
-    std::string source; // what limited it: "MemAvailable" or "cgroup memory.max"
+    std::string source; // what limited it: "MemAvailable", "cgroup memory.max", "address-space limit (ulimit -v)"
 };
 
 // None when neither /proc/meminfo nor a cgroup limit can be read.
