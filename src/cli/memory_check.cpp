@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace roughgas::cli {
 
 void refuse_if_too_large(const RunSpec& spec, int at_once, const std::string& case_file) {
@@ -14,7 +16,11 @@ void refuse_if_too_large(const RunSpec& spec, int at_once, const std::string& ca
         return;
     const double per_grain = static_cast<double>(memory_per_particle_bound(spec));
     const double cells = static_cast<double>(memory_per_replica_fixed_bound(spec));
-    const double need = (static_cast<double>(spec.particles) * per_grain + cells) * at_once;
+    double need = (static_cast<double>(spec.particles) * per_grain + cells) * at_once;
+    // An address-space limit also counts what the threads map once they start: a stack (8 MiB by
+    // default) and a malloc arena (64 MiB of address space in glibc) each.
+    if (free->source.starts_with("address-space"))
+        need += std::max(1, spec.threads) * 72.0 * (1 << 20);
     if (need <= static_cast<double>(free->bytes))
         return;
     throw InputError(case_file, "run.particles",

@@ -9,6 +9,7 @@
 // `roughgas run --resume OUT` writes them for a run whose replicas have all finished (the rows of
 // each replica, combined in replica order: the same bytes as the run in one process).
 #include "commands.hpp"
+#include "replica_files.hpp"
 
 #include "output_dir_lock.hpp"
 
@@ -114,6 +115,7 @@ int run_merge(const MergeOptions& o) {
         lock.lock(out);
         for (const auto& e : fs::directory_iterator(checkpoint_dir(out))) // --force: no stale replica files
             fs::remove(e.path());
+        fs::remove_all(replicas_dir(out)); // nor another run's replicas' rows
         RunCheckpoint whole = runs[0];
         whole.replica_from = 0;
         whole.replica_to = K;

@@ -20,6 +20,7 @@ ReplicaFiles::ReplicaFiles(fs::path run_dir, const RunSpec& spec, const CsvProve
     : dir_(std::move(run_dir)), from_(from) {
     if (provenance.notes.size() < 2)
         throw std::invalid_argument("ReplicaFiles: the ensemble's notes name the replicas second");
+    fs::create_directories(replicas_dir(dir_)); // here, not beside each replica's thread
     RunSpec one = spec;
     one.replicas = 1;
     for (int r = from; r < to; ++r) {
@@ -50,7 +51,6 @@ void ReplicaFiles::write_all() {
 
 void ReplicaFiles::write(int r, File& f) {
     const auto t = std::chrono::steady_clock::now();
-    fs::create_directories(replicas_dir(dir_));
     f.csv.write(replica_moments_path(dir_, r));
     f.on_disk = f.csv.rows();
     f.last_write = std::chrono::steady_clock::now();

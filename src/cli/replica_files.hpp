@@ -3,9 +3,10 @@
 // row once every replica has reached it, so an ensemble stopped or killed while some replicas wait
 // for a thread shows nothing of the finished ones there; these files show how far each replica got.
 // Each is the moments.csv of that replica alone (the columns of a run with replicas = 1), rewritten
-// atomically as its rows come (batched when a rewrite would cost more than a tenth of the run, as
-// moments.csv), kept when the run ends, and the same bytes after --resume: the rows come from the
-// checkpoints.
+// atomically as its rows come (batched as moments.csv is: the next rewrite waits 10x the last one's
+// duration), kept when the run ends, and the same bytes after --resume: the rows come from the
+// checkpoints. Replica r's file is touched by one thread at a time (add for r from r's thread only;
+// write_all outside the replicas' threads), so it needs no lock.
 #include "roughgas/dsmc/run_spec.hpp"
 #include "roughgas/io/csv_writer.hpp"
 #include "roughgas/io/moments_csv.hpp"

@@ -142,7 +142,7 @@ std::pair<std::uint64_t, std::uint64_t> replica_range(const std::string& text, s
 // Never overwrite earlier results by accident: that is an input error, reported before any work.
 // A checkpoint of an earlier run counts too: it is continued with --resume, or replaced with --force.
 void check_output_dir(const fs::path& dir, bool force, bool histograms, bool shear, bool walls, bool box,
-                      bool spectra, bool modes, bool fields, bool replicas) {
+                      bool spectra, bool modes, bool fields) {
     if (fs::exists(dir) && !fs::is_directory(dir))
         throw InputError(dir.string(), "--out", "--out " + dir.string() + ": exists and is not a directory");
     if (force)
@@ -161,7 +161,7 @@ void check_output_dir(const fs::path& dir, bool force, bool histograms, bool she
         throw InputError(dir.string(), "--out",
                          fmt::format("--out {}: {} exists (use --force to overwrite)", dir.string(),
                                      fields_dir(dir).string()));
-    if (replicas && fs::exists(replicas_dir(dir)))
+    if (fs::exists(replicas_dir(dir)))
         throw InputError(dir.string(), "--out",
                          fmt::format("--out {}: {} exists (use --force to overwrite)", dir.string(),
                                      replicas_dir(dir).string()));
@@ -210,7 +210,7 @@ RunSetup new_run(const RunOptions& o, bool root) {
         check_output_dir(s.dir, o.force, s.cfg.run.histogram_every > 0, driven(s.cfg),
                          s.cfg.domain && s.cfg.domain->has_walls(), s.cfg.domain.has_value(),
                          s.cfg.domain && s.cfg.spectra, s.cfg.domain && s.cfg.spectra && s.cfg.spectra->modes > 0,
-                         s.cfg.domain && s.cfg.fields, s.cfg.run.replicas > 1);
+                         s.cfg.domain && s.cfg.fields);
     }
     s.manifest.run = {roughgas_version(),
                       o.case_file,
@@ -532,9 +532,11 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         hsets[r] = std::move(setup.resumed[r]->histograms);
         finished[r] = setup.resumed[r]->finished;
     }
-    // Each replica's own rows beside the ensemble's (replicas > 1), this process's replicas.
+    // Each replica's own rows beside the ensemble's (replicas > 1), written as they come by the one
+    // process of a whole run; under MPI rank 0 writes them all once it has every rank's rows (the
+    // directory need not be shared), and a range of --replicas leaves them to `roughgas merge`.
     std::optional<ReplicaFiles> replica_files;
-    if (K > 1) {
+    if (K > 1 && !partial && comm.size() == 1) {
         replica_files.emplace(dir, spec, prov, mine_from, mine_to);
         for (int r = mine_from; r < mine_to; ++r) // a resumed run: the rows of its checkpoints
             for (const std::vector<double>& row : rows[static_cast<std::size_t>(r)])
@@ -662,10 +664,10 @@ int run_run(const RunOptions& o, const Communicator& comm) {
                 if (cancel)
                     throw Cancelled{};
                 table.check(row); // NonFiniteValue: stop, naming the column and t
+                if (replica_files) // replica r's own file: its thread's alone, no lock
+                    replica_files->add(r, row);
                 std::lock_guard lock(mutex);
                 rows[static_cast<std::size_t>(r)].emplace_back(row.begin(), row.end());
-                if (replica_files)
-                    replica_files->add(r, row);
                 flush(false);
             };
             const ProgressSink report = [&, r](double done, double end, double coll) {
@@ -725,8 +727,14 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         }
     }
     progress.finish();
-    if (replica_files)
-        replica_files->write_all();
+    if (replica_files) {
+        try {
+            replica_files->write_all();
+        } catch (...) { // the first error is the one to report
+            if (!error)
+                error = std::current_exception();
+        }
+    }
     if (error) { // one rank's (main ends the job) or the one process's
         std::lock_guard lock(mutex);
         flush(true);
@@ -777,6 +785,13 @@ int run_run(const RunOptions& o, const Communicator& comm) {
                 rows[k] = std::move(c.rows);
                 hsets[k] = std::move(c.histograms);
             }
+        }
+        if (K > 1 && !partial) { // every replica's own rows, as one process writes them
+            ReplicaFiles all(dir, spec, prov, from, to);
+            for (int r = from; r < to; ++r)
+                for (const std::vector<double>& row : rows[static_cast<std::size_t>(r)])
+                    all.add(r, row, false);
+            all.write_all();
         }
     }
     {

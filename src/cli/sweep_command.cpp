@@ -237,7 +237,7 @@ int run_sweep(const SweepOptions& o, const Communicator& comm) {
             const fs::path pd = dir / fmt::format("point_{}", k);
             fs::create_directories(pd);
             csv.write(pd / "moments.csv");
-            // Its summary beside it, as `roughgas run` writes it: steady.csv (shear) or scaled.csv.
+            // Its summary beside it: steady.csv for shear, scaled.csv for cooling.
             const bool shear = cases[static_cast<std::size_t>(k)].run.kind == RunKind::shear;
             prov.notes.push_back(fmt::format("{} summary of moments.csv: drift criterion on {}; batch means "
                                              "(observables/steady_state.hpp); X_err = batch-means standard error",

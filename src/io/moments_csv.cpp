@@ -286,7 +286,11 @@ std::vector<double> MomentsTable::combine(std::span<const std::span<const double
     if (zeta_) { // solver columns 1 and 2: coll_per_particle, T_tr (dsmc_columns)
         for (std::size_t r = 0; r < rows.size(); ++r) {
             const double cpp = rows[r][1], T = rows[r][2];
-            x[r] = -std::log(T / prev_T_tr_[r]) / (cpp - prev_cpp_[r]); // NaN in the first row
+            // Undefined (NaN) in the first row, and where either temperature is 0 or no collision
+            // separates the rows.
+            x[r] = T > 0 && prev_T_tr_[r] > 0 && cpp > prev_cpp_[r]
+                       ? -std::log(T / prev_T_tr_[r]) / (cpp - prev_cpp_[r])
+                       : std::numeric_limits<double>::quiet_NaN();
             prev_T_tr_[r] = T;
             prev_cpp_[r] = cpp;
         }
@@ -353,7 +357,7 @@ const std::map<std::string, std::string>& meanings() {
         {"theta_theory", "T_rot_theory/T_tr_theory"},
         {"zeta_star", "reduced cooling rate -ln(T_tr/T_tr,p)/(coll_per_particle - coll_per_particle,p), p "
                       "the previous row: the translational temperature's decay per collision per particle (cooling "
-                      "runs; NaN at t = 0; constant in the scaled homogeneous cooling state)"},
+                      "runs; NaN at t = 0 and where either T_tr is 0; constant in the scaled homogeneous cooling state)"},
         {"zeta_star_theory", "-(dT_tr/dt)/(T_tr nu_c) of the Maxwellian approximation at t, nu_c its collisions "
                              "per particle and unit time (constant alpha, beta; (1 - alpha^2)/3 for smooth "
                              "spheres)"},

@@ -103,6 +103,11 @@ TEST_F(Mpi, RanksWriteTheBytesOfOneProcess) {
         ASSERT_EQ(exit_status(r.status), 0) << r.err;
         for (const char* file : {"moments.csv", "histograms.csv", "scaled.csv"})
             EXPECT_EQ(test::read_file(out / file), test::read_file(dir / "one" / file)) << ranks << " " << file;
+        for (int r = 0; r < 5; ++r) { // each replica's own rows, written by rank 0 for every rank
+            const std::string file = "replicas/moments_" + std::to_string(r) + ".csv";
+            ASSERT_TRUE(fs::exists(dir / "one" / file)) << file;
+            EXPECT_EQ(test::read_file(out / file), test::read_file(dir / "one" / file)) << ranks << " " << file;
+        }
         EXPECT_FALSE(fs::exists(out / "checkpoint")) << "no checkpoint asked for, none left";
     }
 }

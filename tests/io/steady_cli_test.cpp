@@ -19,8 +19,8 @@ namespace fs = std::filesystem;
 // theta over the window's first 5 rows must agree with the late value (rows from 100 collisions per
 // particle on, batch means over 5 batches) within 4 combined errors, the head's error taken as the
 // mean of its rows' X_err (rows a collision apart are correlated: the bound for full correlation).
-// Watching T_tr, T_rot and the stresses only, the window started at 35 here, theta 7.9 errors
-// above its late value.
+// A detector watching T_tr, T_rot and the stresses only would start the window at 35 here, theta
+// 7.9 errors above its late value.
 TEST(SteadyCli, ShearWindowStartsAfterThetaHasRelaxed) {
     const test::ScratchDir dir;
     const std::string usf = std::string(ROUGHGAS_SOURCE_DIR) + "/cases/usf_rough.toml";

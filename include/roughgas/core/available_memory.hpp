@@ -16,7 +16,7 @@ struct AvailableMemory {
     std::string source; // what limited it: "MemAvailable", "cgroup memory.max", "address-space limit (ulimit -v)"
 };
 
-// None when neither /proc/meminfo nor a cgroup limit can be read.
+// None when neither /proc/meminfo, a cgroup limit nor an address-space limit can be read.
 std::optional<AvailableMemory> available_memory();
 
 // MemAvailable in bytes from the text of /proc/meminfo ("MemAvailable:   123456 kB"); none without it.
