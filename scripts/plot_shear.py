@@ -209,7 +209,7 @@ def plot_sweep(csv_path, out):
         if pkey == "ratios":
             ax.axhline(1.0, color="k", lw=0.6, ls=":", label="equipartition")
         ax.set_ylabel(ylabel)
-    axes[-1].set_xlabel(key)
+    axes[-1].set_xlabel(label_with_unit(key, column_unit(h, key)))  # the swept key's unit, from sweep.csv
     finish(fig, axes, title, notes, foot, height, out)
     return check(d, why, True, drawn)
 
