@@ -101,7 +101,7 @@ CsvProvenance provenance(const RestitutionOptions& o, const CaseConfig& cfg, con
                     name(pc.model.form), name(pc.model.end), pc.rho, pc.A, pc.mu, pc.zeta0),
         fmt::format("direct integration, tolerance rel = {:.3g}, abs = {:.3g}", cfg.contact.tolerance.rel,
                     cfg.contact.tolerance.abs),
-        "unit system: SI (time s, length m, mass kg, energy J, volume m^3)", // the contact model's [material]
+        si_unit_system_note, // the contact model's [material] is in SI
     };
     return p;
 }

@@ -26,7 +26,6 @@
 
 #include "roughgas/dsmc/run.hpp"
 #include "roughgas/io/case_file.hpp"
-#include "roughgas/io/case_schema.hpp"
 #include "roughgas/io/csv_writer.hpp"
 #include "roughgas/io/moments_csv.hpp"
 #include "roughgas/io/run_spec_from_case.hpp"
@@ -345,16 +344,8 @@ int run_sweep(const SweepOptions& o, const Communicator& comm) {
                     fmt::join(results[0].steady.monitored, ", "),
                     cases[0].run.kind == RunKind::shear ? "steady.csv" : "scaled.csv"),
         unit_system_note(cases[0])};
-    // The swept key's unit (its schema entry: array indices left out), then the summary's.
-    std::string key_path;
-    for (std::size_t a = 0; a <= s.key.size();) {
-        const std::size_t b = std::min(s.key.find('.', a), s.key.size());
-        const std::string part = s.key.substr(a, b - a);
-        if (!part.empty() && !std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; }))
-            key_path += (key_path.empty() ? "" : ".") + part;
-        a = b + 1;
-    }
-    const KeySpec* key_spec = find_key(key_path);
+    // The swept key's unit (its schema entry), then the summary's.
+    const KeySpec* key_spec = find_key_of(s.key);
     prov.units = {key_spec && !key_spec->unit.empty() ? key_spec->unit : "-"};
     for (const std::string& u : steady_csv_units(results[0].steady, results[0].names, results[0].units))
         prov.units.push_back(u);

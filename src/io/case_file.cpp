@@ -829,7 +829,7 @@ class Builder {
     // "x: required for <why> but missing (must be <expectation>)"
     void require(bool present, const std::string& key, const std::string& why, std::string_view at) {
         if (!present) {
-            const KeySpec* s = find_key(schema_path(split_path(key)));
+            const KeySpec* s = find_key_of(key);
             add(key, fmt::format("{}: required for {} but missing (must be {})", key, why, expectation(*s)),
                 at);
         }
@@ -1267,6 +1267,10 @@ CaseConfig load_case(const std::string& file, const std::vector<std::string>& ov
     std::ostringstream text;
     text << in.rdbuf();
     return parse_case(text.str(), file, overrides, use);
+}
+
+const KeySpec* find_key_of(const std::string& key) {
+    return find_key(schema_path(split_path(key)));
 }
 
 std::string emit_case(const CaseConfig& c) {

@@ -263,11 +263,12 @@ inline const CollisionConfig& collision_for(const CaseConfig& cfg, std::size_t i
 // The '#' line of the CSV files naming their units: SI when a pair integrates the viscoelastic
 // contact (its [material] is in SI, and so must the species' masses, radii and temperatures be);
 // otherwise the case's own units, whatever consistent ones it was written in.
+inline constexpr const char* si_unit_system_note = "unit system: SI (time s, length m, mass kg, energy J, volume m^3)";
 inline std::string unit_system_note(const CaseConfig& cfg) {
     for (std::size_t i = 0; i < cfg.species.size(); ++i)
         for (std::size_t j = i; j < cfg.species.size(); ++j)
             if (uses_material(collision_for(cfg, i, j).model))
-                return "unit system: SI (time s, length m, mass kg, energy J, volume m^3)";
+                return si_unit_system_note;
     return "unit system: the case's own (any consistent units with k_B = 1: temperatures are energies)";
 }
 

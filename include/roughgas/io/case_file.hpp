@@ -5,6 +5,7 @@
 // io/case_schema.hpp and the cross-key rules, and only then return; any problem throws
 // InputError listing every issue found (file:line:column: key = value: what is allowed).
 #include "roughgas/io/case_config.hpp"
+#include "roughgas/io/case_schema.hpp"
 #include "roughgas/io/input_error.hpp"
 
 #include <string>
@@ -33,5 +34,9 @@ CaseConfig load_case(const std::string& file, const std::vector<std::string>& ov
 
 // The resolved case (every default filled in) as TOML: parse_case(emit_case(c), ...) == c.
 std::string emit_case(const CaseConfig& cfg);
+
+// The schema entry (io/case_schema.hpp) of a key as --set names it ("species.1.mass": array indices
+// left out); nullptr for a key the schema does not have.
+const KeySpec* find_key_of(const std::string& key);
 
 } // namespace roughgas
