@@ -49,6 +49,15 @@ void ReplicaFiles::write_all() {
             write(from_ + static_cast<int>(k), *files_[k]);
 }
 
+void ReplicaFiles::add_rows(const std::vector<std::vector<std::vector<double>>>& rows) {
+    for (std::size_t k = 0; k < files_.size(); ++k) {
+        const int r = from_ + static_cast<int>(k);
+        for (const std::vector<double>& row : rows.at(static_cast<std::size_t>(r)))
+            add(r, row, false);
+    }
+    write_all();
+}
+
 void ReplicaFiles::write(int r, File& f) {
     const auto t = std::chrono::steady_clock::now();
     f.csv.write(replica_moments_path(dir_, r));

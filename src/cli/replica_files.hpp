@@ -33,6 +33,9 @@ class ReplicaFiles {
     void add(int r, std::span<const double> row, bool write = true);
     // Every file with rows not yet on disk.
     void write_all();
+    // Each of its replicas' rows so far (rows[r][k]: replica r's row k, as the run holds them), then
+    // write_all.
+    void add_rows(const std::vector<std::vector<std::vector<double>>>& rows);
 
   private:
     struct File {

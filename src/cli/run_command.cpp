@@ -538,10 +538,7 @@ int run_run(const RunOptions& o, const Communicator& comm) {
     std::optional<ReplicaFiles> replica_files;
     if (K > 1 && !partial && comm.size() == 1) {
         replica_files.emplace(dir, spec, prov, mine_from, mine_to);
-        for (int r = mine_from; r < mine_to; ++r) // a resumed run: the rows of its checkpoints
-            for (const std::vector<double>& row : rows[static_cast<std::size_t>(r)])
-                replica_files->add(r, row, false);
-        replica_files->write_all();
+        replica_files->add_rows(rows); // a resumed run: the rows of its checkpoints
     }
     std::mutex mutex;
     std::size_t combined = 0, on_disk = 0;
@@ -787,11 +784,7 @@ int run_run(const RunOptions& o, const Communicator& comm) {
             }
         }
         if (K > 1 && !partial) { // every replica's own rows, as one process writes them
-            ReplicaFiles all(dir, spec, prov, from, to);
-            for (int r = from; r < to; ++r)
-                for (const std::vector<double>& row : rows[static_cast<std::size_t>(r)])
-                    all.add(r, row, false);
-            all.write_all();
+            ReplicaFiles(dir, spec, prov, from, to).add_rows(rows);
         }
     }
     {
