@@ -161,6 +161,7 @@ template <class Policy, bool General = false> class SpatialEngine {
         if (domain_.profile_axis < 0 || domain_.profile_axis > 2)
             throw std::invalid_argument("SpatialEngine: the profile axis must be 0, 1 or 2");
         cell_virial_.assign(cells_, Virial{});
+        cell_tally_.assign(cells_ * blocks_.size() * cell_tally_fields, 0.0);
         bin_virial_.assign(static_cast<std::size_t>(domain_.cells[domain_.profile_axis]), Virial{});
         const InitialSpec& wave = domain_.initial;
         for (int a = 0; a < 3; ++a)
@@ -237,11 +238,13 @@ template <class Policy, bool General = false> class SpatialEngine {
     // One step of length dt: flight, sort, collisions. `obs(record, pair_type)` sees every collision
     // (ForkableObserver of dsmc/engine.hpp: a copy per work unit, merged in unit order).
     template <class Observer> void step(double dt, Observer& obs) {
-        if constexpr (General)
+        if constexpr (General) {
             stream_general(dt);
-        else
+            sort_into_cells();
+        } else {
             stream(dt);
-        sort_into_cells();
+            sort_into_cells();
+        }
         const std::size_t units = (cells_ + cells_per_unit - 1) / cells_per_unit;
         const bool nearest = domain_.partners == PartnerSelection::nearest;
         std::vector<Observer> local(units, obs.fork());
@@ -249,9 +252,11 @@ template <class Policy, bool General = false> class SpatialEngine {
         team_->for_each(units, [&](std::size_t u) {
             CollisionRng rng = make_collision_stream(StreamKey{seed_, Stream::cell_collisions, replica_, static_cast<std::uint64_t>(steps_), u});
             const std::size_t end = std::min(cells_, (u + 1) * cells_per_unit);
-            for (std::size_t c = u * cells_per_unit; c < end; ++c)
+            for (std::size_t c = u * cells_per_unit; c < end; ++c) {
                 counts[u] += nearest ? collide_cell<true>(c, dt, rng, local[u])
                                      : collide_cell<false>(c, dt, rng, local[u]);
+                tally_cell(c);
+            }
         });
         for (std::size_t u = 0; u < units; ++u) {
             obs.merge(local[u]);
@@ -260,6 +265,7 @@ template <class Policy, bool General = false> class SpatialEngine {
         add_cell_virials();
         t_ += dt;
         ++steps_;
+        tallies_valid_ = true;
     }
 
     // The largest local collision frequency per grain: over the profile bins (the slabs of
@@ -272,39 +278,31 @@ template <class Policy, bool General = false> class SpatialEngine {
     double collision_frequency() {
         const std::size_t S = blocks_.size(), B = bin_virial_.size();
         const int a = domain_.profile_axis;
-        const double per_length = static_cast<double>(B) / domain_.size[static_cast<std::size_t>(a)];
-        // Per (bin, species): count, sum of v, sum of |v|^2; over fixed chunks of each species'
-        // grains (never the threads), merged in chunk order.
-        constexpr std::size_t fields = 5;
-        struct Chunk {
-            std::size_t species, first, last;
-        };
-        std::vector<Chunk> chunks;
-        for (std::size_t s = 0; s < S; ++s) {
-            const std::size_t P = std::clamp<std::size_t>(blocks_[s].count / 65536, 1, 64);
-            for (std::size_t p = 0; p < P; ++p)
-                chunks.push_back({s, blocks_[s].offset + blocks_[s].count * p / P,
-                                  blocks_[s].offset + blocks_[s].count * (p + 1) / P});
+        constexpr std::size_t fields = cell_tally_fields;
+        // The cells' sums of the grains as they are now: those the last step's collisions left
+        // (tally_cell, while each cell was in the cache), else one pass over the cells. Either way
+        // the same sums in the same order, so a resumed run takes the same steps.
+        if (!tallies_valid_) {
+            const std::size_t units = (cells_ + cells_per_unit - 1) / cells_per_unit;
+            team_->for_each(units, [&](std::size_t u) {
+                const std::size_t end = std::min(cells_, (u + 1) * cells_per_unit);
+                for (std::size_t c = u * cells_per_unit; c < end; ++c)
+                    tally_cell(c);
+            });
+            tallies_valid_ = true;
         }
-        frequency_sums_.assign(chunks.size() * B * fields, 0.0);
-        team_->for_each(chunks.size(), [&](std::size_t u) {
-            double* sums = frequency_sums_.data() + u * B * fields;
-            for (std::size_t i = chunks[u].first; i < chunks[u].last; ++i) {
-                const double q = component(x_[i], a) * per_length;
-                const auto b = static_cast<std::size_t>(std::clamp(static_cast<int>(q), 0, static_cast<int>(B) - 1));
-                double* f = sums + b * fields;
-                f[0] += 1;
-                f[1] += v_[i].x;
-                f[2] += v_[i].y;
-                f[3] += v_[i].z;
-                f[4] += norm2(v_[i]);
-            }
-        });
-        std::vector<double> total(B * S * fields, 0.0); // (bin, species, field)
-        for (std::size_t u = 0; u < chunks.size(); ++u)
-            for (std::size_t b = 0; b < B; ++b)
-                for (std::size_t k = 0; k < fields; ++k)
-                    total[(b * S + chunks[u].species) * fields + k] += frequency_sums_[(u * B + b) * fields + k];
+        // Per (bin, species): the cells' sums in cell order (never the threads').
+        const std::size_t nx = static_cast<std::size_t>(domain_.cells[0]), ny = static_cast<std::size_t>(domain_.cells[1]),
+                          nz = static_cast<std::size_t>(domain_.cells[2]), row = S * fields;
+        std::vector<double> total(B * row, 0.0); // (bin, species, field)
+        const double* from = cell_tally_.data();
+        for (std::size_t z = 0; z < nz; ++z)
+            for (std::size_t y = 0; y < ny; ++y)
+                for (std::size_t x = 0; x < nx; ++x, from += row) {
+                    double* to = total.data() + (a == 0 ? x : a == 1 ? y : z) * row;
+                    for (std::size_t k = 0; k < row; ++k)
+                        to[k] += from[k];
+                }
         double nu_max = 0;
         std::vector<double> T_over_m(S);
         std::vector<PairType> types = types_;
@@ -509,7 +507,8 @@ template <class Policy, bool General = false> class SpatialEngine {
         return k;
     }
 
-    // Free flight, wrapped into the box.
+    // Free flight, wrapped into the box. A pass of its own: done in the sort's first pass, which
+    // reads every position too, the step was measured no faster (N = 1e6, one thread).
     void stream(double dt) {
         const std::size_t chunk = 65536, units = (particles_ + chunk - 1) / chunk;
         team_->for_each(units, [&](std::size_t u) {
@@ -690,12 +689,36 @@ template <class Policy, bool General = false> class SpatialEngine {
         }
     }
 
+    // Per species of cell c: its grains' count, sum of v and sum of |v|^2 (collision_frequency's
+    // slab statistics), in store order.
+    void tally_cell(std::size_t c) {
+        const std::size_t S = blocks_.size();
+        for (std::size_t s = 0; s < S; ++s) {
+            const auto [first, last] = cell_range(s, c);
+            double n = 0, vx = 0, vy = 0, vz = 0, v2 = 0;
+            for (std::size_t i = first; i < last; ++i) {
+                n += 1;
+                vx += v_[i].x;
+                vy += v_[i].y;
+                vz += v_[i].z;
+                v2 += norm2(v_[i]);
+            }
+            double* t = cell_tally_.data() + (c * S + s) * cell_tally_fields;
+            t[0] = n;
+            t[1] = vx;
+            t[2] = vy;
+            t[3] = vz;
+            t[4] = v2;
+        }
+    }
+
     // A stable counting sort of each species' grains by cell (the grains themselves move, so a
     // cell's grains are adjacent in memory while they collide), in parallel over P chunks of the
     // species' range (P fixed by the grain and cell counts, never by the threads): each chunk counts
     // its grains per cell, the offsets follow in (cell, chunk) order, and each chunk scatters its
     // grains into the second set of arrays, which become the first (no copy back).
     void sort_into_cells() {
+        tallies_valid_ = false;
         const std::size_t S = blocks_.size();
         key_.resize(particles_);
         cell_start_.resize(S * (cells_ + 1));
@@ -891,7 +914,10 @@ template <class Policy, bool General = false> class SpatialEngine {
     std::vector<PairConstants> wall_pc_; // per species: the grain with an infinitely massive wall
     WallFluxes wall_flux_{};
     std::vector<Virial> cell_virial_, bin_virial_; // this step's per cell; since the last row per bin
-    std::vector<double> frequency_sums_;           // collision_frequency's scratch
+    // Per (cell, species): cell_tally_fields sums of tally_cell; valid since the last step's collisions.
+    static constexpr std::size_t cell_tally_fields = 5;
+    std::vector<double> cell_tally_;
+    bool tallies_valid_ = false;
     std::vector<Vec3> x_, v_, w_, x2_, v2_, w2_;
     std::vector<std::uint32_t> key_, cell_start_, counts_;
     // Nearest partners only (else empty): each grain's identity and its most recent partner's.
