@@ -30,7 +30,8 @@ ReplicaFiles::ReplicaFiles(fs::path run_dir, const RunSpec& spec, const CsvProve
                                  r, spec.replicas);
         p.units = table.units();
         CsvWriter csv(table.names(), p);
-        files_.emplace_back(File{std::move(table), std::move(csv), 0,
+        ResolutionWatch resolution(table.names());
+        files_.emplace_back(File{std::move(table), std::move(csv), std::move(resolution), 0,
                                  std::chrono::steady_clock::now() - std::chrono::hours(1), {}});
     }
 }
@@ -38,7 +39,10 @@ ReplicaFiles::ReplicaFiles(fs::path run_dir, const RunSpec& spec, const CsvProve
 void ReplicaFiles::add(int r, std::span<const double> row, bool write_now) {
     std::optional<File>& f = files_.at(static_cast<std::size_t>(r - from_));
     const std::span<const double> rows[] = {row};
-    f->csv.add_row(f->table.combine(rows));
+    const std::vector<double> own = f->table.combine(rows);
+    f->csv.add_row(own);
+    for (const std::string& note : f->resolution.notes(own))
+        f->csv.add_note(note);
     if (write_now && std::chrono::steady_clock::now() - f->last_write >= 10 * f->cost)
         write(r, *f);
 }

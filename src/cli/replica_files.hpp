@@ -4,9 +4,10 @@
 // for a thread shows nothing of the finished ones there; these files show how far each replica got.
 // Each is the moments.csv of that replica alone (the columns of a run with replicas = 1), rewritten
 // atomically as its rows come (batched as moments.csv is: the next rewrite waits 10x the last one's
-// duration), kept when the run ends, and the same bytes after --resume: the rows come from the
-// checkpoints. Replica r's file is touched by one thread at a time (add for r from r's thread only;
+// duration), with the warnings of its own cells' resolution (resolution_watch.hpp), kept when the
+// run ends, and the same bytes after --resume: the rows come from the checkpoints. Replica r's file is touched by one thread at a time (add for r from r's thread only;
 // write_all outside the replicas' threads), so it needs no lock.
+#include "resolution_watch.hpp"
 #include "roughgas/dsmc/run_spec.hpp"
 #include "roughgas/io/csv_writer.hpp"
 #include "roughgas/io/moments_csv.hpp"
@@ -41,6 +42,7 @@ class ReplicaFiles {
     struct File {
         MomentsTable table;
         CsvWriter csv;
+        ResolutionWatch resolution;
         std::size_t on_disk = 0;
         std::chrono::steady_clock::time_point last_write;
         std::chrono::steady_clock::duration cost{};

@@ -25,6 +25,7 @@
 #include "memory_check.hpp"
 #include "rank_errors.hpp"
 #include "replica_files.hpp"
+#include "resolution_watch.hpp"
 
 #include "roughgas/core/available_cpus.hpp"
 
@@ -79,20 +80,6 @@ constexpr const char* profiles_file = "profiles.csv";
 constexpr const char* steady_profiles_file = "steady_profiles.csv";
 constexpr const char* spectra_file = "spectra.csv";
 constexpr const char* modes_file = "modes.csv";
-
-// Runs that reach a steady state (steady.csv) rather than a scaled cooling state (scaled.csv):
-// uniform shear flow, and boxes whose walls drive the gas (a diffuse wall holds its temperature, a
-// moving wall shears).
-bool driven(const CaseConfig& c) {
-    if (c.run.kind == RunKind::shear)
-        return true;
-    if (!c.domain || !c.domain->has_walls())
-        return false;
-    for (const std::optional<WallConfig>* w : {&c.wall_lower, &c.wall_upper})
-        if (*w && ((*w)->kind == WallKind::diffuse || (*w)->velocity != std::array<double, 3>{}))
-            return true;
-    return false;
-}
 
 struct RunOptions {
     std::string case_file;
@@ -544,36 +531,16 @@ int run_run(const RunOptions& o, const Communicator& comm) {
     std::size_t combined = 0, on_disk = 0;
     std::vector<std::vector<double>> table_rows; // the combined rows, for the steady-state summary
     std::vector<std::vector<std::vector<double>>> profile_blocks; // profiles.csv's rows per output time
-    // Box runs: the cells' resolution of the densest slab, watched as the rows come (a cooling gas's
-    // clusters, a heated floor): a warning in the CSV headers and on stderr once it passes 0.5, and
-    // again at 1 local mean free path.
-    const std::vector<std::string> moment_names = table.names();
-    const auto resolution_at = std::find(moment_names.begin(), moment_names.end(), "cell_over_lambda");
-    double resolution_threshold = 0.5;
-    const auto cpp_at = static_cast<std::size_t>(
-        std::find(moment_names.begin(), moment_names.end(), "coll_per_particle") - moment_names.begin());
+    // Box runs: the cells' resolution of the densest slab, watched as the rows come
+    // (resolution_watch.hpp): its warnings in the CSV headers and on stderr.
+    ResolutionWatch resolution(table.names());
     const auto watch_resolution = [&](const std::vector<double>& row) {
-        if (resolution_at == moment_names.end()) // not a box run
-            return;
-        const double r = row[static_cast<std::size_t>(resolution_at - moment_names.begin())];
-        while (r > resolution_threshold) {
-            const std::string note =
-                resolution_threshold < 1
-                    ? fmt::format("warning: from t = {:.6g} ({:.4g} collisions per particle) the cells reach {:.3g} "
-                                  "local mean free paths in the densest slab (more than 0.5): in gradients there the "
-                                  "viscosity comes out too large by about 16/(45 pi) (edge/lambda)^2 = {:.2g} "
-                                  "(cell_over_lambda in moments.csv)",
-                                  row[0], row[cpp_at], r, 16.0 / (45.0 * std::numbers::pi) * r * r)
-                    : fmt::format("warning: from t = {:.6g} ({:.4g} collisions per particle) the cells reach {:.3g} "
-                                  "local mean free paths in the densest slab (more than 1): the cells no longer "
-                                  "resolve the gas there (refine domain.cells)",
-                                  row[0], row[cpp_at], r);
+        for (const std::string& note : resolution.notes(row)) {
             csv.add_note(note);
             if (pcsv)
                 pcsv->add_note(note);
             if (!quiet)
                 std::cerr << "roughgas run: " << note << '\n';
-            resolution_threshold = resolution_threshold < 1 ? 1.0 : HUGE_VAL;
         }
     };
     // The file is rewritten (atomically: temporary, fsync, rename) at every output time whose row

@@ -6,7 +6,8 @@
 // run in parallel over --threads (OpenMP, dynamic schedule); each point runs its replicas in turn
 // and is deterministic from the case's seed, so the files do not depend on the thread count.
 // The summary is the steady state of the point (observables/steady_state.hpp, io/steady_csv.hpp):
-// for shear runs the steady window of T and P*_ij; for cooling runs the scaled homogeneous cooling
+// for driven runs (uniform shear, boxes whose walls heat or shear the gas: driven() in
+// io/case_config.hpp) the steady window of T and P*_ij; for cooling runs the scaled homogeneous cooling
 // state (theta, a20, a02 stop drifting while T falls), averaged with batch-means errors.
 //
 // SIGINT/SIGTERM (stop_signals.hpp): the running points stop at their next step boundary and are
@@ -115,7 +116,7 @@ PointResult point_result(const CaseConfig& cfg, const std::vector<std::vector<st
             spans.emplace_back(r[k]);
         p.rows.push_back(table.combine(spans));
     }
-    p.steady = steady_summary(p.names, p.rows, spec.shear.has_value());
+    p.steady = steady_summary(p.names, p.rows, driven(cfg));
     return p;
 }
 
@@ -237,7 +238,7 @@ int run_sweep(const SweepOptions& o, const Communicator& comm) {
             fs::create_directories(pd);
             csv.write(pd / "moments.csv");
             // Its summary beside it: steady.csv for shear, scaled.csv for cooling.
-            const bool shear = cases[static_cast<std::size_t>(k)].run.kind == RunKind::shear;
+            const bool shear = driven(cases[static_cast<std::size_t>(k)]);
             prov.notes.push_back(fmt::format("{} summary of moments.csv: drift criterion on {}; batch means "
                                              "(observables/steady_state.hpp); X_err = batch-means standard error",
                                              shear ? "steady-state" : "scaled-state (late-time)",
@@ -340,9 +341,9 @@ int run_sweep(const SweepOptions& o, const Communicator& comm) {
         fmt::format("sweep of {} from {} to {} ({} points); one row per point: the {} state, drift criterion "
                     "on {}, batch means (io/steady_csv.hpp); each point's rows in point_K/moments.csv, its "
                     "summary in point_K/{}",
-                    s.key, s.from, s.to, s.count, cases[0].run.kind == RunKind::shear ? "steady" : "scaled",
+                    s.key, s.from, s.to, s.count, driven(cases[0]) ? "steady" : "scaled",
                     fmt::join(results[0].steady.monitored, ", "),
-                    cases[0].run.kind == RunKind::shear ? "steady.csv" : "scaled.csv"),
+                    driven(cases[0]) ? "steady.csv" : "scaled.csv"),
         unit_system_note(cases[0])};
     // The swept key's unit (its schema entry), then the summary's.
     const KeySpec* key_spec = find_key_of(s.key);
@@ -362,7 +363,7 @@ int run_sweep(const SweepOptions& o, const Communicator& comm) {
     csv.write(dir / "sweep.csv");
     if (!o.quiet) { // the headline quantities of every point, compact, on stderr
         std::vector<std::string> headline;
-        const bool shear = cases[0].run.kind == RunKind::shear;
+        const bool shear = driven(cases[0]);
         std::vector<std::string> wanted = {"a_star", "eta_star", "theta", "N1_star"};
         if (!shear) { // the species' temperature ratios first, then theta and the cumulants
             wanted = results[0].steady.monitored;

@@ -60,6 +60,16 @@ TEST(BoxCli, ThreadsAndReplicaRangesGiveTheSameBytes) {
     // The header gives the box and its cells in mean free paths.
     EXPECT_NE(one.find("periodic box 50 x 50 x 50 = 4.443 x 4.443 x 4.443 mean free paths"), std::string::npos);
     EXPECT_NE(one.find("5 x 5 x 5 collision cells (edge up to 0.889 lambda)"), std::string::npos);
+    // Cells of 0.89 mean free paths: the warning of the densest slab's resolution in moments.csv and
+    // in each replica's own file (from its own rows), the same bytes however the run was split.
+    const std::string warning = "the cells reach";
+    EXPECT_NE(one.find(warning), std::string::npos);
+    for (const char* replica : {"moments_0.csv", "moments_1.csv"}) {
+        const std::string own = test::read_file(dir / "t1" / "replicas" / replica);
+        EXPECT_NE(own.find(warning), std::string::npos) << replica;
+        EXPECT_EQ(test::read_file(dir / "t2" / "replicas" / replica), own) << replica;
+        EXPECT_EQ(test::read_file(dir / "m" / "replicas" / replica), own) << replica;
+    }
 }
 
 TEST(BoxCli, RefusesWhatTheBoxCannotRunBeforeAnyWork) {

@@ -123,6 +123,51 @@ TEST(SweepCli, CoolingCasesSweepToo) {
     EXPECT_FALSE(fs::exists(dir / "o" / "point_1" / "steady.csv"));
 }
 
+// A box whose walls heat the gas reaches a steady state, as a sheared gas does: its points'
+// summaries are steady.csv (the steady window), as `roughgas run` writes for the same case.
+TEST(SweepCli, WallHeatedBoxesSweepToTheirSteadyStates) {
+    const test::ScratchDir dir;
+    const fs::path f = dir.write("walls.toml", R"([run]
+particles = 2000
+end = 40.0
+output_every = 2.0
+density = 0.02
+seed = 2
+
+[[species]]
+mass = 1.0
+radius = 0.5
+
+[collision]
+model = "constant"
+alpha = 0.9
+beta = 0.4
+
+[domain]
+size = [11.25, 112.5, 11.25]
+cells = [1, 20, 1]
+boundary = ["periodic", "walls", "periodic"]
+
+[wall_lower]
+kind = "diffuse"
+temperature = 1.0
+
+[wall_upper]
+kind = "diffuse"
+temperature = 1.0
+)");
+    const test::CommandResult r =
+        run_roughgas("sweep '" + f.string() + "' --param wall_upper.temperature=1:2:2 --quiet --out '" +
+                         (dir / "o").string() + "'",
+                     dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    for (const char* point : {"point_0", "point_1"}) {
+        EXPECT_TRUE(fs::exists(dir / "o" / point / "steady.csv")) << point;
+        EXPECT_FALSE(fs::exists(dir / "o" / point / "scaled.csv")) << point;
+    }
+    EXPECT_NE(test::read_file(dir / "o" / "sweep.csv").find("the steady state"), std::string::npos);
+}
+
 // A point inside the range that is invalid fails the whole sweep before any work: exit 2, the
 // message names the file, the key and its range, nothing is written.
 TEST(SweepCli, InvalidPointFailsBeforeAnyWork) {

@@ -272,6 +272,20 @@ inline std::string unit_system_note(const CaseConfig& cfg) {
     return "unit system: the case's own (any consistent units with k_B = 1: temperatures are energies)";
 }
 
+// Runs that reach a steady state (steady.csv) rather than a scaled cooling state (scaled.csv):
+// uniform shear flow, and boxes whose walls drive the gas (a diffuse wall holds its temperature, a
+// moving wall shears).
+inline bool driven(const CaseConfig& c) {
+    if (c.run.kind == RunKind::shear)
+        return true;
+    if (!c.domain || !c.domain->has_walls())
+        return false;
+    for (const std::optional<WallConfig>* w : {&c.wall_lower, &c.wall_upper})
+        if (*w && ((*w)->kind == WallKind::diffuse || (*w)->velocity != std::array<double, 3>{}))
+            return true;
+    return false;
+}
+
 // Contact constants of species i with species j; requires cfg.material (validated for such uses).
 inline ContactPair contact_pair(const CaseConfig& cfg, std::size_t i, std::size_t j) {
     const SpeciesConfig& a = cfg.species[i];
