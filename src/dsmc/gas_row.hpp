@@ -26,8 +26,11 @@ struct Tally {
         clamped += r.beta_clamped;
     }
     // One per group (or work unit) of an engine (ForkableObserver, dsmc/engine.hpp), merged in order.
+    // Its per_type array ends a cache line before its allocation does, so that no other fork's
+    // counters, which another thread writes at every collision, share a line with it.
     Tally fork() const {
         Tally t;
+        t.per_type.reserve(per_type.size() + 64 / sizeof(std::int64_t));
         t.per_type.assign(per_type.size(), 0);
         return t;
     }

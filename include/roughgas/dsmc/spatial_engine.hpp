@@ -247,20 +247,28 @@ template <class Policy, bool General = false> class SpatialEngine {
         }
         const std::size_t units = (cells_ + cells_per_unit - 1) / cells_per_unit;
         const bool nearest = domain_.partners == PartnerSelection::nearest;
-        std::vector<Observer> local(units, obs.fork());
-        std::vector<std::int64_t> counts(units, 0);
+        // Each unit's observer and count in cache lines of their own (OwnLines, dsmc/engine.hpp).
+        struct alignas(64) Unit {
+            Observer observer;
+            std::int64_t collisions = 0;
+        };
+        std::vector<Unit> local;
+        local.reserve(units);
+        for (std::size_t u = 0; u < units; ++u)
+            local.push_back(Unit{obs.fork(), 0}); // fork()'s own, not copies of one (Tally::fork's spacing)
         team_->for_each(units, [&](std::size_t u) {
             CollisionRng rng = make_collision_stream(StreamKey{seed_, Stream::cell_collisions, replica_, static_cast<std::uint64_t>(steps_), u});
             const std::size_t end = std::min(cells_, (u + 1) * cells_per_unit);
+            Unit& unit = local[u];
             for (std::size_t c = u * cells_per_unit; c < end; ++c) {
-                counts[u] += nearest ? collide_cell<true>(c, dt, rng, local[u])
-                                     : collide_cell<false>(c, dt, rng, local[u]);
+                unit.collisions += nearest ? collide_cell<true>(c, dt, rng, unit.observer)
+                                           : collide_cell<false>(c, dt, rng, unit.observer);
                 tally_cell(c);
             }
         });
-        for (std::size_t u = 0; u < units; ++u) {
-            obs.merge(local[u]);
-            collisions_ += counts[u];
+        for (const Unit& unit : local) {
+            obs.merge(unit.observer);
+            collisions_ += unit.collisions;
         }
         add_cell_virials();
         t_ += dt;
