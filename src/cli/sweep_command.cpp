@@ -237,7 +237,7 @@ int run_sweep(const SweepOptions& o, const Communicator& comm) {
             const fs::path pd = dir / fmt::format("point_{}", k);
             fs::create_directories(pd);
             csv.write(pd / "moments.csv");
-            // Its summary beside it: steady.csv for shear, scaled.csv for cooling.
+            // Its summary beside it: steady.csv for a driven gas (shear, heating walls), scaled.csv for cooling.
             const bool shear = driven(cases[static_cast<std::size_t>(k)]);
             prov.notes.push_back(fmt::format("{} summary of moments.csv: drift criterion on {}; batch means "
                                              "(observables/steady_state.hpp); X_err = batch-means standard error",
@@ -363,7 +363,8 @@ int run_sweep(const SweepOptions& o, const Communicator& comm) {
     csv.write(dir / "sweep.csv");
     if (!o.quiet) { // the headline quantities of every point, compact, on stderr
         std::vector<std::string> headline;
-        const bool shear = driven(cases[0]);
+        // Uniform shear: its rheology; otherwise (cooling, wall-driven boxes) the monitored columns.
+        const bool shear = cases[0].run.kind == RunKind::shear;
         std::vector<std::string> wanted = {"a_star", "eta_star", "theta", "N1_star"};
         if (!shear) { // the species' temperature ratios first, then theta and the cumulants
             wanted = results[0].steady.monitored;

@@ -130,20 +130,22 @@ std::size_t memory_per_replica_fixed_bound(const RunSpec& spec) {
     const DomainSpec& d = *spec.domain;
     const double cells = static_cast<double>(d.cells[0]) * d.cells[1] * d.cells[2];
     const std::size_t S = spec.species.size();
-    // Per cell: each species' start, the sort's counts of up to 64 chunks, a share of the per-unit
-    // tallies (one per 64 cells: a pair count each, and the unit's bookkeeping).
+    // Per cell: each species' start, the sort's counts of up to 64 chunks, the collisional virial,
+    // each species' 5 sums for the local collision frequencies, and a share of the per-unit tallies
+    // (one per 64 cells: a cache line for the unit, and a pair count each with a line of slack,
+    // plus the allocator's header).
     // With spectra: five fields on the grid of the cells, their half-spectrum transforms and each
     // stored wave vector's shell (observables/spectra.hpp): (G_z/2 + 1)/G_z of a cell's each.
     const double half = (std::floor(d.cells[2] / 2.0) + 1) / d.cells[2];
-    const double per_cell = 4.0 * static_cast<double>(S + 1) + 4.0 * 64 + (8.0 * spec.pairs.size() + 64) / 64 +
-                            6 * sizeof(double) + (d.spectra ? 5 * sizeof(double) + (5 * 2 * sizeof(double) + sizeof(int)) * half : 0);
-    // The step's local collision frequencies: per chunk of grains (up to 64 per species), bin and species, 5 sums.
-    const double bins = d.cells[static_cast<std::size_t>(d.profile_axis)];
+    const double per_cell = 4.0 * static_cast<double>(S + 1) + 4.0 * 64 + 6 * sizeof(double) +
+                            5.0 * sizeof(double) * static_cast<double>(S) +
+                            (64.0 + 8.0 * static_cast<double>(spec.pairs.size() + 8) + 16) / 64 +
+                            (d.spectra ? 5 * sizeof(double) + (5 * 2 * sizeof(double) + sizeof(int)) * half : 0);
     // The rows the replica keeps until the run ends (the sink's copy and the ensemble's): with the
     // profiles, every bin's fields in every row.
     const double rows = (static_cast<double>(spec.output_times.size()) + 1) *
                         static_cast<double>(replica_row_columns(spec).size()) * sizeof(double) * 2;
-    return static_cast<std::size_t>(cells * per_cell + 64.0 * static_cast<double>(S) * bins * 5 * 8 + rows);
+    return static_cast<std::size_t>(cells * per_cell + rows);
 }
 
 std::vector<Column> wall_columns(const RunSpec& spec) {

@@ -86,6 +86,7 @@
 #include "roughgas/collision/sampling.hpp"
 #include "roughgas/core/bytes.hpp"
 #include "roughgas/core/huge_page_buffer.hpp"
+#include "roughgas/core/own_lines.hpp"
 #include "roughgas/core/prefetch.hpp"
 #include "roughgas/core/rng.hpp"
 #include "roughgas/core/worker_team.hpp"
@@ -149,15 +150,6 @@ template <class O>
 concept ForkableObserver = requires(const O& c, O& o) {
     { c.fork() } -> std::convertible_to<O>;
     o.merge(c);
-};
-
-// One group's (or work unit's) copy of a forkable observer, alone in its cache lines. The copies sit
-// side by side in a vector and are written at every collision; packed, neighbouring groups' copies
-// shared lines, which two threads running neighbouring groups passed back and forth at every
-// collision (measured: N = 1e5, two threads, a row per collision per particle: 1.4 CPU seconds
-// against 0.78 on one thread, 1.05 with the copies apart; docs/performance.md).
-template <class O> struct alignas(64) OwnLines {
-    O observer;
 };
 
 // Allocates whole cache lines, aligned: the small arrays of one group (blocks, rings, rates), which
@@ -289,14 +281,14 @@ class Engine {
             return run_one(collision_target, t_stop, obs);
         using O = std::remove_cvref_t<Observer>;
         if constexpr (ForkableObserver<O>) {
-            std::vector<OwnLines<O>> local;
+            std::vector<OwnLines<O>> local; // each group's copy in its own cache lines (core/own_lines.hpp)
             local.reserve(G_);
             for (std::size_t g = 0; g < G_; ++g)
                 local.push_back({obs.fork()});
             const StopReason r = run_groups(collision_target, t_stop, opt_.threads,
-                                            [&](std::size_t g) -> O& { return local[g].observer; });
+                                            [&](std::size_t g) -> O& { return local[g].value; });
             for (const OwnLines<O>& o : local)
-                obs.merge(o.observer);
+                obs.merge(o.value);
             return r;
         } else {
             const int threads = std::is_empty_v<O> ? opt_.threads : 1;

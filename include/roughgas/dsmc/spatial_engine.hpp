@@ -53,6 +53,7 @@
 #include "roughgas/collision/sampling.hpp"
 #include "roughgas/collision/wall_rule.hpp"
 #include "roughgas/core/bytes.hpp"
+#include "roughgas/core/own_lines.hpp"
 #include "roughgas/core/rng.hpp"
 #include "roughgas/core/vec.hpp"
 #include "roughgas/core/worker_team.hpp"
@@ -231,7 +232,8 @@ template <class Policy, bool General = false> class SpatialEngine {
         return {f * u, f * n, E > 0 ? 2.0 * en / E : 0.0};
     }
 
-    // The store interface of dsmc/init.hpp.
+    // The store interface of dsmc/init.hpp, for the initial state only: a velocity changed between
+    // steps would not reach the cells' sums of collision_frequency(), taken in the last step.
     Vec3& v(std::size_t i) { return v_[i]; }
     Vec3& w(std::size_t i) { return w_[i]; }
 
@@ -247,7 +249,7 @@ template <class Policy, bool General = false> class SpatialEngine {
         }
         const std::size_t units = (cells_ + cells_per_unit - 1) / cells_per_unit;
         const bool nearest = domain_.partners == PartnerSelection::nearest;
-        // Each unit's observer and count in cache lines of their own (OwnLines, dsmc/engine.hpp).
+        // Each unit's observer and count in cache lines of their own (core/own_lines.hpp says why).
         struct alignas(64) Unit {
             Observer observer;
             std::int64_t collisions = 0;
@@ -583,15 +585,16 @@ template <class Policy, bool General = false> class SpatialEngine {
         for (std::size_t s = 0; s < blocks_.size(); ++s)
             for (std::size_t f = blocks_[s].offset; f < blocks_[s].offset + blocks_[s].count; f += chunk)
                 chunks.push_back({s, f, std::min(f + chunk, blocks_[s].offset + blocks_[s].count)});
-        std::vector<WallFluxes> flux(chunks.size());
+        // Each chunk's tallies in cache lines of their own (written at every wall hit; core/own_lines.hpp).
+        std::vector<OwnLines<WallFluxes>> flux(chunks.size());
         team_->for_each(chunks.size(), [&](std::size_t u) {
             CollisionRng rng = make_collision_stream(StreamKey{seed_, Stream::wall_emission, replica_, static_cast<std::uint64_t>(steps_), u});
             for (std::size_t i = chunks[u].first; i < chunks[u].last; ++i)
-                fly(i, chunks[u].species, dt, rng, flux[u]);
+                fly(i, chunks[u].species, dt, rng, flux[u].value);
         });
-        for (const WallFluxes& f : flux)
+        for (const OwnLines<WallFluxes>& f : flux)
             for (std::size_t k = 0; k < 6; ++k)
-                wall_flux_[k] += f[k];
+                wall_flux_[k] += f.value[k];
     }
 
     // Lees-Edwards (Lees & Edwards 1972): the periodic images above y = L_y move at +a L_y along x,
