@@ -240,13 +240,11 @@ template <class Policy, bool General = false> class SpatialEngine {
     // One step of length dt: flight, sort, collisions. `obs(record, pair_type)` sees every collision
     // (ForkableObserver of dsmc/engine.hpp: a copy per work unit, merged in unit order).
     template <class Observer> void step(double dt, Observer& obs) {
-        if constexpr (General) {
+        if constexpr (General)
             stream_general(dt);
-            sort_into_cells();
-        } else {
+        else
             stream(dt);
-            sort_into_cells();
-        }
+        sort_into_cells();
         const std::size_t units = (cells_ + cells_per_unit - 1) / cells_per_unit;
         const bool nearest = domain_.partners == PartnerSelection::nearest;
         // Each unit's observer and count in cache lines of their own (core/own_lines.hpp says why).
@@ -517,8 +515,8 @@ template <class Policy, bool General = false> class SpatialEngine {
         return k;
     }
 
-    // Free flight, wrapped into the box. A pass of its own: done in the sort's first pass, which
-    // reads every position too, the step was measured no faster (N = 1e6, one thread).
+    // Free flight, wrapped into the box. A pass of its own: folded into the sort's first pass, which
+    // reads every position too, the step is no faster (N = 1e6, one thread).
     void stream(double dt) {
         const std::size_t chunk = 65536, units = (particles_ + chunk - 1) / chunk;
         team_->for_each(units, [&](std::size_t u) {
