@@ -224,8 +224,9 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
             walls_prev = engine.wall_fluxes();
             row.insert(row.end(), profiles.begin(), profiles.end());
             if (spectra) {
-                const std::vector<double> s =
-                    spectra->compute(engine.positions(), engine.velocities(), blocks, engine.team());
+                // The engine's cells are the spectra's grid: its sums per cell, with no pass over positions.
+                const std::vector<double> s = spectra->compute_from_cell_sums(
+                    engine.cell_sums(), engine.cell_sum_fields, engine.velocities(), blocks, engine.team());
                 row.insert(row.end(), s.begin(), s.end());
             }
             if (row.size() != columns)

@@ -61,34 +61,70 @@ std::vector<BinSums> bin_sums(const FlightSampling& s, const BinGrid& g, const s
         return {bin, u};
     };
 
-    std::vector<BinSums> sums(g.size());
-    for (const SpeciesBlock& sp : species)
-        for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i) {
-            const auto [bin, u] = locate(i);
-            BinSums& b = sums[bin];
-            b.count += 1;
-            b.mass += sp.grain.mass;
-            b.momentum += sp.grain.mass * u;
-            b.spin += w[i];
-            b.rot += sp.moment_of_inertia() * norm2(w[i]);
-        }
-    std::vector<Vec3> flow(sums.size());
-    for (std::size_t k = 0; k < sums.size(); ++k)
-        flow[k] = sums[k].flow();
+    // One pass: each bin's moments about a velocity r_b of its own, its first grain's (d = u - r_b),
+    // then about its flow U_b (D = U_b - r_b = sum m d / M, c = d - D):
+    //   sum m c_a c_b = A_ab - M D_a D_b                     (A = sum m d_a d_b),
+    //   sum (m c^2/2) c = Q - (tr A/2) D - A D + M D^2 D      (Q = sum (m d^2/2) d),
+    //   sum (J w^2/2) c = R - (rot/2) D                       (R = sum (J w^2/2) d).
+    // A reference inside the bin's velocity spread keeps the cancellation of A - M D D to the order
+    // of the spread itself, as in the two-pass sums about U_b (a bin of one grain: exactly zero).
+    struct Moments {
+        double count = 0, mass = 0, rot = 0;
+        Vec3 momentum{}, spin{}, ref{}, md{}, q{}, r{};
+        double a[6] = {};
+    };
+    std::vector<Moments> acc(g.size());
     for (const SpeciesBlock& sp : species) {
         const double m = sp.grain.mass, J = sp.moment_of_inertia();
         for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i) {
             const auto [bin, u] = locate(i);
-            BinSums& b = sums[bin];
-            const Vec3 c = u - flow[bin];
-            b.cc[0] += m * c.x * c.x;
-            b.cc[1] += m * c.y * c.y;
-            b.cc[2] += m * c.z * c.z;
-            b.cc[3] += m * c.x * c.y;
-            b.cc[4] += m * c.x * c.z;
-            b.cc[5] += m * c.y * c.z;
-            b.heat += (0.5 * m * norm2(c) + (s.rotation ? 0.5 * J * norm2(w[i]) : 0.0)) * c;
+            Moments& b = acc[bin];
+            if (b.count == 0)
+                b.ref = u;
+            const double e_rot = J * norm2(w[i]);
+            b.count += 1;
+            b.mass += m;
+            b.momentum += m * u;
+            b.spin += w[i];
+            b.rot += e_rot;
+            const Vec3 d = u - b.ref, md = m * d;
+            b.md += md;
+            b.a[0] += md.x * d.x;
+            b.a[1] += md.y * d.y;
+            b.a[2] += md.z * d.z;
+            b.a[3] += md.x * d.y;
+            b.a[4] += md.x * d.z;
+            b.a[5] += md.y * d.z;
+            b.q += (0.5 * dot(md, d)) * d;
+            if (s.rotation)
+                b.r += (0.5 * e_rot) * d;
         }
+    }
+    std::vector<BinSums> sums(g.size());
+    for (std::size_t k = 0; k < sums.size(); ++k) {
+        const Moments& b = acc[k];
+        BinSums& o = sums[k];
+        o.count = b.count;
+        o.mass = b.mass;
+        o.rot = b.rot;
+        o.momentum = b.momentum;
+        o.spin = b.spin;
+        if (b.count == 0)
+            continue;
+        const Vec3 D = (1.0 / b.mass) * b.md;
+        // The diagonal is a sum of squares: a bin whose grains share one velocity gives zero, not
+        // a negative round-off.
+        o.cc[0] = std::max(0.0, b.a[0] - b.md.x * D.x);
+        o.cc[1] = std::max(0.0, b.a[1] - b.md.y * D.y);
+        o.cc[2] = std::max(0.0, b.a[2] - b.md.z * D.z);
+        o.cc[3] = b.a[3] - b.md.x * D.y;
+        o.cc[4] = b.a[4] - b.md.x * D.z;
+        o.cc[5] = b.a[5] - b.md.y * D.z;
+        const Vec3 AD{b.a[0] * D.x + b.a[3] * D.y + b.a[4] * D.z, b.a[3] * D.x + b.a[1] * D.y + b.a[5] * D.z,
+                      b.a[4] * D.x + b.a[5] * D.y + b.a[2] * D.z};
+        o.heat = b.q - AD + (b.mass * norm2(D) - 0.5 * (b.a[0] + b.a[1] + b.a[2])) * D;
+        if (s.rotation)
+            o.heat += b.r - (0.5 * b.rot) * D;
     }
     return sums;
 }

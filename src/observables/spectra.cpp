@@ -227,6 +227,87 @@ std::vector<double> Spectra::compute(const std::vector<Vec3>& x, const std::vect
             fields_[4][c] += 0.5 * m * norm2(cv) - e_species[s];
         }
     }
+    return finish(N, M, e_mean, squares, team);
+}
+
+std::vector<double> Spectra::compute_from_cell_sums(const std::vector<double>& cell_sums, std::size_t fields,
+                                                    const std::vector<Vec3>& v,
+                                                    const std::vector<SpeciesBlock>& species, WorkerTeam& team) {
+    const std::array<int, 3>& G = g_.grid;
+    const std::size_t S = species.size(), nx = static_cast<std::size_t>(G[0]), ny = static_cast<std::size_t>(G[1]),
+                      nz = static_cast<std::size_t>(G[2]), cells = nx * ny * nz;
+    if (fields < 5 || cell_sums.size() != cells * S * fields)
+        throw std::logic_error("Spectra: the cell sums do not fit the grid and species");
+    const auto at = [&](std::size_t c, std::size_t s) { return cell_sums.data() + (c * S + s) * fields; };
+    // U from the cells' momenta; each species' mean kinetic energy about it,
+    // sum_j m |v_j - U|^2 / 2 = (m/2) (sum |v|^2 - 2 U.sum v + n |U|^2), from the cells' sums too.
+    double N = 0, M = 0;
+    Vec3 P{};
+    std::vector<double> n_species(S, 0.0);
+    std::vector<Vec3> v_species(S, Vec3{});
+    std::vector<double> v2_species(S, 0.0);
+    for (std::size_t c = 0; c < cells; ++c)
+        for (std::size_t s = 0; s < S; ++s) {
+            const double* t = at(c, s);
+            n_species[s] += t[0];
+            v_species[s] += Vec3{t[1], t[2], t[3]};
+            v2_species[s] += t[4];
+        }
+    for (std::size_t s = 0; s < S; ++s) {
+        N += n_species[s];
+        M += species[s].grain.mass * n_species[s];
+        P += species[s].grain.mass * v_species[s];
+    }
+    const Vec3 U = M > 0 ? (1.0 / M) * P : Vec3{};
+    std::vector<double> e_species(S, 0.0);
+    double E = 0;
+    for (std::size_t s = 0; s < S; ++s) {
+        const double sum =
+            0.5 * species[s].grain.mass * (v2_species[s] - 2 * dot(U, v_species[s]) + n_species[s] * norm2(U));
+        e_species[s] = n_species[s] > 0 ? sum / n_species[s] : 0.0;
+        E += sum;
+    }
+    const double e_mean = N > 0 ? E / N : 0.0;
+    // sum_j (e_j - e_s(j))^2 needs the grains themselves: one pass over the velocities.
+    double squares = 0;
+    for (std::size_t s = 0; s < S; ++s) {
+        const SpeciesBlock& b = species[s];
+        double sum2 = 0;
+        for (std::size_t i = b.offset; i < b.offset + b.count; ++i) {
+            const double d = 0.5 * b.grain.mass * norm2(v[i] - U) - e_species[s];
+            sum2 += d * d;
+        }
+        squares += sum2;
+    }
+    // The fields per cell from its sums: sum_j m c_j = m (sum v - n U), sum_j (e_j - e_s) as above
+    // less n e_s; the cells x fastest here, z fastest in the transforms' order.
+    const double U2 = norm2(U);
+    for (std::size_t z = 0; z < nz; ++z)
+        for (std::size_t y = 0; y < ny; ++y)
+            for (std::size_t x = 0; x < nx; ++x) {
+                const std::size_t c = (z * ny + y) * nx + x, to = (x * ny + y) * nz + z;
+                double n = 0, px = 0, py = 0, pz = 0, h = 0;
+                for (std::size_t s = 0; s < S; ++s) {
+                    const double* t = at(c, s);
+                    const double m = species[s].grain.mass;
+                    const Vec3 sv{t[1], t[2], t[3]};
+                    n += t[0];
+                    px += m * (sv.x - t[0] * U.x);
+                    py += m * (sv.y - t[0] * U.y);
+                    pz += m * (sv.z - t[0] * U.z);
+                    h += 0.5 * m * (t[4] - 2 * dot(U, sv) + t[0] * U2) - t[0] * e_species[s];
+                }
+                fields_[0][to] = n;
+                fields_[1][to] = px;
+                fields_[2][to] = py;
+                fields_[3][to] = pz;
+                fields_[4][to] = h;
+            }
+    return finish(N, M, e_mean, squares, team);
+}
+
+std::vector<double> Spectra::finish(double N, double M, double e_mean, double squares, WorkerTeam& team) {
+    const std::array<int, 3>& G = g_.grid;
     const fftw_plan plan = plan_->plan;
     team.for_each(5, [&](std::size_t f) {
         fftw_execute_dft_r2c(plan, fields_[f].data(), reinterpret_cast<fftw_complex*>(transforms_[f].data()));

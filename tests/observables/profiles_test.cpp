@@ -68,6 +68,56 @@ TEST(Profiles, FieldsFollowTheirDefinitions) {
     EXPECT_TRUE(std::isnan(compute_profiles(g, x, v, w, b, virial, std::nan(""))[profile_collisional_first]));
 }
 
+// A bin drifting at a hundred times its thermal speed: its temperature, shear stress and heat flux
+// (moments about the bin's own flow) against the definitions summed in long double about the
+// exact mean, to 1e-12 relative: no cancellation of the drift's square against the spread's.
+TEST(Profiles, ADriftingBinKeepsItsMomentsToRoundOff) {
+    const std::size_t n = 1000;
+    const std::vector<SpeciesBlock> b = species(static_cast<std::int64_t>(n), 1.5, 0.5, 0.4);
+    std::vector<Vec3> x(n), v(n), w(n);
+    std::uint64_t r = 12345;
+    const auto uniform = [&] { // in [-1, 1)
+        r = r * 6364136223846793005ULL + 1442695040888963407ULL;
+        return static_cast<double>(r >> 11) * 0x1p-52 - 1.0;
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        x[i] = {0.5 + 0.4 * uniform(), 0.5 + 0.4 * uniform(), 0.5 + 0.4 * uniform()};
+        v[i] = {300 + uniform(), -200 + uniform(), 100 + uniform()};
+        w[i] = {uniform(), uniform(), uniform()};
+    }
+    ProfileGeometry g; // one bin of the unit cube
+    const std::vector<double> p = compute_profiles(g, x, v, w, b, {Virial{}}, 0.5);
+    const auto f = [&](const std::string& name) {
+        for (std::size_t k = 0; k < profile_field_count; ++k)
+            if (name == profile_fields[k])
+                return p[k];
+        ADD_FAILURE() << name;
+        return 0.0;
+    };
+    const long double m = 1.5, J = 0.4 * 1.5 * 0.25;
+    long double u[3] = {0, 0, 0};
+    for (const Vec3& q : v) {
+        u[0] += q.x;
+        u[1] += q.y;
+        u[2] += q.z;
+    }
+    for (long double& c : u)
+        c /= n;
+    long double cc = 0, cxy = 0, qx = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const long double c[3] = {v[i].x - u[0], v[i].y - u[1], v[i].z - u[2]};
+        const long double c2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+        const long double w2 = static_cast<long double>(norm2(w[i]));
+        cc += m * c2;
+        cxy += m * c[0] * c[1];
+        qx += (0.5L * m * c2 + 0.5L * J * w2) * c[0];
+    }
+    const double T = static_cast<double>(cc / (3 * n)), Pxy = static_cast<double>(cxy), q = static_cast<double>(qx);
+    EXPECT_NEAR(f("T_tr"), T, 1e-12 * T);
+    EXPECT_NEAR(f("P_xy"), Pxy, 1e-12 * n * T);
+    EXPECT_NEAR(f("q_x"), q, 1e-12 * n * std::pow(T, 1.5));
+}
+
 TEST(Profiles, GrainsAreTakenInTheMiddleOfTheFlight) {
     const std::vector<SpeciesBlock> b = species(2, 1.0, 0.5, 0.4);
     const std::vector<Vec3> x = {{1.9, 0, 0}, {0.1, 0, 0}}, w(2);

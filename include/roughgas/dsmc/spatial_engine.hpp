@@ -162,7 +162,7 @@ template <class Policy, bool General = false> class SpatialEngine {
         if (domain_.profile_axis < 0 || domain_.profile_axis > 2)
             throw std::invalid_argument("SpatialEngine: the profile axis must be 0, 1 or 2");
         cell_virial_.assign(cells_, Virial{});
-        cell_tally_.assign(cells_ * blocks_.size() * cell_tally_fields, 0.0);
+        cell_tally_.assign(cells_ * blocks_.size() * cell_sum_fields, 0.0);
         bin_virial_.assign(static_cast<std::size_t>(domain_.cells[domain_.profile_axis]), Virial{});
         const InitialSpec& wave = domain_.initial;
         for (int a = 0; a < 3; ++a)
@@ -276,6 +276,25 @@ template <class Policy, bool General = false> class SpatialEngine {
         tallies_valid_ = true;
     }
 
+    // Per (cell, species), cells x fastest (i_x + n_x (i_y + n_y i_z)): the count of the grains as they
+    // are now, the sum of their velocities and the sum of |v|^2 (cell_sum_fields numbers, in store
+    // order). Those the last step's collisions left (tally_cell, while each cell was in the cache),
+    // else one pass over the cells: either way the same sums in the same order, so a resumed run
+    // takes the same steps and writes the same rows.
+    static constexpr std::size_t cell_sum_fields = 5;
+    const std::vector<double>& cell_sums() {
+        if (!tallies_valid_) {
+            const std::size_t units = (cells_ + cells_per_unit - 1) / cells_per_unit;
+            team_->for_each(units, [&](std::size_t u) {
+                const std::size_t end = std::min(cells_, (u + 1) * cells_per_unit);
+                for (std::size_t c = u * cells_per_unit; c < end; ++c)
+                    tally_cell(c);
+            });
+            tallies_valid_ = true;
+        }
+        return cell_tally_;
+    }
+
     // The largest local collision frequency per grain: over the profile bins (the slabs of
     // profiles.csv), the Maxwellian n_b pi sigma^2 <g> per pair type at the slab's densities and
     // species temperatures (m <|v - u_b|^2>/3 about the species' mean velocity in the slab). The
@@ -286,19 +305,8 @@ template <class Policy, bool General = false> class SpatialEngine {
     double collision_frequency() {
         const std::size_t S = blocks_.size(), B = bin_virial_.size();
         const int a = domain_.profile_axis;
-        constexpr std::size_t fields = cell_tally_fields;
-        // The cells' sums of the grains as they are now: those the last step's collisions left
-        // (tally_cell, while each cell was in the cache), else one pass over the cells. Either way
-        // the same sums in the same order, so a resumed run takes the same steps.
-        if (!tallies_valid_) {
-            const std::size_t units = (cells_ + cells_per_unit - 1) / cells_per_unit;
-            team_->for_each(units, [&](std::size_t u) {
-                const std::size_t end = std::min(cells_, (u + 1) * cells_per_unit);
-                for (std::size_t c = u * cells_per_unit; c < end; ++c)
-                    tally_cell(c);
-            });
-            tallies_valid_ = true;
-        }
+        constexpr std::size_t fields = cell_sum_fields;
+        cell_sums();
         // Per (bin, species): the cells' sums in cell order (never the threads').
         const std::size_t nx = static_cast<std::size_t>(domain_.cells[0]), ny = static_cast<std::size_t>(domain_.cells[1]),
                           nz = static_cast<std::size_t>(domain_.cells[2]), row = S * fields;
@@ -712,7 +720,7 @@ template <class Policy, bool General = false> class SpatialEngine {
                 vz += v_[i].z;
                 v2 += norm2(v_[i]);
             }
-            double* t = cell_tally_.data() + (c * S + s) * cell_tally_fields;
+            double* t = cell_tally_.data() + (c * S + s) * cell_sum_fields;
             t[0] = n;
             t[1] = vx;
             t[2] = vy;
@@ -923,8 +931,7 @@ template <class Policy, bool General = false> class SpatialEngine {
     std::vector<PairConstants> wall_pc_; // per species: the grain with an infinitely massive wall
     WallFluxes wall_flux_{};
     std::vector<Virial> cell_virial_, bin_virial_; // this step's per cell; since the last row per bin
-    // Per (cell, species): cell_tally_fields sums of tally_cell; valid since the last step's collisions.
-    static constexpr std::size_t cell_tally_fields = 5;
+    // Per (cell, species): cell_sum_fields sums of tally_cell; valid since the last step's collisions.
     std::vector<double> cell_tally_;
     bool tallies_valid_ = false;
     std::vector<Vec3> x_, v_, w_, x2_, v2_, w2_;

@@ -102,6 +102,15 @@ class Spectra {
     std::vector<double> compute(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
                                 const std::vector<SpeciesBlock>& species, WorkerTeam& team);
 
+    // The same from the box engine's sums per cell (SpatialEngine::cell_sums: per cell of the grid,
+    // x fastest, and species, `fields` numbers of which the first five are the count of its
+    // grains, the sum of their velocities and the sum of |v|^2) and the velocities (for the
+    // variance of the energies): the grains counted in the cells the engine put them in, with no
+    // pass over their positions. Equal to compute's results to round-off.
+    std::vector<double> compute_from_cell_sums(const std::vector<double>& cell_sums, std::size_t fields,
+                                               const std::vector<Vec3>& v, const std::vector<SpeciesBlock>& species,
+                                               WorkerTeam& team);
+
     // The five fields' transforms from the last compute (rho, p_x, p_y, p_z, h), each
     // G_x x G_y x (G_z/2 + 1) complex values (re, im), z fastest: for tests (Parseval).
     const std::vector<double>& transform(int field) const;
@@ -109,6 +118,8 @@ class Spectra {
     const std::vector<double>& field(int field) const;
 
   private:
+    // The transforms of fields_ and the rows from them.
+    std::vector<double> finish(double N, double M, double e_mean, double squares, WorkerTeam& team);
     struct Plan;
     SpectraGeometry g_;
     std::vector<SpectrumBin> bins_;
