@@ -33,7 +33,7 @@ std::vector<std::string> ResolutionWatch::notes(std::span<const double> row) {
                 ? fmt::format("warning: from t = {:.6g} ({:.4g} collisions per particle) the cells reach {:.3g} "
                               "local mean free paths in the densest slab (more than 0.5): in gradients there the "
                               "viscosity comes out too large by about 16/(45 pi) (edge/lambda)^2 = {:.2g} "
-                              "(cell_over_lambda in moments.csv)",
+                              "(column cell_over_lambda of the moments)",
                               t, c, r, 16.0 / (45.0 * std::numbers::pi) * r * r)
                 : fmt::format("warning: from t = {:.6g} ({:.4g} collisions per particle) the cells reach {:.3g} "
                               "local mean free paths in the densest slab (more than 1): the cells no longer "
