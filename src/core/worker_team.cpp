@@ -1,5 +1,6 @@
 #include "roughgas/core/worker_team.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <utility>
 
@@ -37,9 +38,9 @@ template <class T> void wait_while_equal(const std::atomic<T>& a, T old) {
 
 } // namespace
 
-WorkerTeam::WorkerTeam(int threads) {
+WorkerTeam::WorkerTeam(int threads) : blocks_(std::make_unique<Block[]>(static_cast<std::size_t>(std::max(threads, 1)))) {
     for (int t = 1; t < threads; ++t)
-        workers_.emplace_back([this] { worker_loop(); });
+        workers_.emplace_back([this, t] { worker_loop(static_cast<std::size_t>(t)); });
 }
 
 WorkerTeam::~WorkerTeam() {
@@ -50,49 +51,67 @@ WorkerTeam::~WorkerTeam() {
         w.join();
 }
 
-// The claim word: generation (24 bits) | units (20 bits) | next unit (20 bits). A claim is valid
-// only for the job it names, and a job's call and context are read after a successful claim, when
-// the job cannot have ended (its claimed unit is not done), so they are that job's.
+// A block's claim word: generation (24 bits) | first unclaimed unit (20 bits) | end of the
+// unclaimed units (20 bits). A claim is valid only for the job it names, and a job's call and
+// context are read after a successful claim, when the job cannot have ended (its claimed unit is
+// not done), so they are that job's.
 namespace {
 constexpr std::uint64_t unit_bits = 20;
 constexpr std::uint64_t unit_mask = (std::uint64_t{1} << unit_bits) - 1;
-std::uint64_t claim_word(std::uint64_t generation, std::uint64_t units) {
-    return ((generation & 0xffffffULL) << (2 * unit_bits)) | (units << unit_bits);
+std::uint64_t claim_word(std::uint64_t generation, std::uint64_t first, std::uint64_t end) {
+    return ((generation & 0xffffffULL) << (2 * unit_bits)) | (first << unit_bits) | end;
 }
 } // namespace
 
-void WorkerTeam::work(std::uint64_t generation) {
-    std::uint64_t c = claim_.load(std::memory_order_acquire);
+// Claims one unit of `block` (its front for its owner, its back for the others) and runs it; false
+// when the block has none left or belongs to another job (this worker woke late).
+bool WorkerTeam::run_unit(std::uint64_t generation, std::size_t self, std::size_t block) {
+    std::atomic<std::uint64_t>& claim = blocks_[block].claim;
+    std::uint64_t c = claim.load(std::memory_order_acquire);
+    std::uint64_t unit = 0;
     for (;;) {
-        const std::uint64_t units = (c >> unit_bits) & unit_mask, next = c & unit_mask;
-        // A claim of another job (this worker woke late) or past the end: nothing to do here.
-        if ((c >> (2 * unit_bits)) != (generation & 0xffffffULL) || next >= units)
-            return;
-        if (!claim_.compare_exchange_weak(c, c + 1, std::memory_order_acq_rel, std::memory_order_acquire))
-            continue;
-        const Call call = call_.load(std::memory_order_acquire);
-        void* const ctx = ctx_.load(std::memory_order_acquire);
-        try {
-            call(ctx, static_cast<std::size_t>(next));
-        } catch (...) {
-            const std::lock_guard<std::mutex> lock(error_mutex_);
-            if (!error_)
-                error_ = std::current_exception();
+        const std::uint64_t first = (c >> unit_bits) & unit_mask, end = c & unit_mask;
+        if ((c >> (2 * unit_bits)) != (generation & 0xffffffULL) || first >= end)
+            return false;
+        const bool front = block == self;
+        if (claim.compare_exchange_weak(c, front ? c + (std::uint64_t{1} << unit_bits) : c - 1,
+                                        std::memory_order_acq_rel, std::memory_order_acquire)) {
+            unit = front ? first : end - 1;
+            break;
         }
-        if (done_.fetch_add(1, std::memory_order_acq_rel) + 1 == units)
-            done_.notify_one();
-        c = claim_.load(std::memory_order_acquire);
+    }
+    const Call call = call_.load(std::memory_order_acquire);
+    void* const ctx = ctx_.load(std::memory_order_acquire);
+    const std::size_t units = units_.load(std::memory_order_acquire);
+    try {
+        call(ctx, static_cast<std::size_t>(unit));
+    } catch (...) {
+        const std::lock_guard<std::mutex> lock(error_mutex_);
+        if (!error_)
+            error_ = std::current_exception();
+    }
+    if (done_.fetch_add(1, std::memory_order_acq_rel) + 1 == units)
+        done_.notify_one();
+    return true;
+}
+
+void WorkerTeam::work(std::uint64_t generation, std::size_t self) {
+    const auto T = static_cast<std::size_t>(threads());
+    for (std::size_t k = 0; k < T; ++k) {
+        const std::size_t block = (self + k) % T;
+        while (run_unit(generation, self, block)) {
+        }
     }
 }
 
-void WorkerTeam::worker_loop() {
+void WorkerTeam::worker_loop(std::size_t self) {
     std::uint64_t seen = 0;
     for (;;) {
         wait_while_equal(generation_, seen);
         seen = generation_.load(std::memory_order_acquire);
         if (stop_.load(std::memory_order_acquire))
             return;
-        work(seen);
+        work(seen, self);
     }
 }
 
@@ -102,11 +121,14 @@ void WorkerTeam::run_job(std::size_t units, Call call, void* ctx) {
     const std::uint64_t generation = generation_.load(std::memory_order_relaxed) + 1;
     call_.store(call, std::memory_order_relaxed);
     ctx_.store(ctx, std::memory_order_relaxed);
+    units_.store(units, std::memory_order_relaxed);
     done_.store(0, std::memory_order_relaxed);
-    claim_.store(claim_word(generation, units), std::memory_order_release);
+    const auto T = static_cast<std::size_t>(threads());
+    for (std::size_t t = 0; t < T; ++t)
+        blocks_[t].claim.store(claim_word(generation, units * t / T, units * (t + 1) / T), std::memory_order_release);
     generation_.store(generation, std::memory_order_release);
     generation_.notify_all();
-    work(generation);
+    work(generation, 0);
     // Every unit is claimed; wait for those still running on a worker.
     for (std::size_t d = done_.load(std::memory_order_acquire); d != units; d = done_.load(std::memory_order_acquire))
         wait_while_equal(done_, d);

@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <mutex>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -64,6 +65,36 @@ TEST(WorkerTeam, UnitsAreClaimedDynamically) {
     for (std::size_t u = 1; u < who.size(); ++u)
         with_unit_0 += who[u] == who[0];
     EXPECT_LE(with_unit_0, 5) << "the thread with the 200 ms unit also ran " << with_unit_0 << " of the 2 ms units";
+}
+
+// Each thread claims its own share first, from its front and in order (the caller's share is units
+// [0, U/2) of two threads); the others take a share's units only from its back. So the units the
+// caller ran of its own share are 0, 1, ..., k - 1 in that order, and what it took of the worker's
+// share is that share's last units, from the end down, however the two threads are scheduled.
+TEST(WorkerTeam, EachThreadClaimsItsOwnShareFromTheFrontAndTheOthersFromTheBack) {
+    WorkerTeam team(2);
+    for (int job = 0; job < 20; ++job) {
+        const std::size_t U = 40;
+        std::vector<std::thread::id> who(U);
+        std::vector<std::size_t> caller_order;
+        std::mutex m;
+        const std::thread::id caller = std::this_thread::get_id();
+        team.for_each(U, [&](std::size_t u) {
+            std::this_thread::sleep_for(std::chrono::microseconds(job % 2 == 0 ? 500 : 20));
+            who[u] = std::this_thread::get_id();
+            if (who[u] == caller) {
+                const std::lock_guard<std::mutex> lock(m);
+                caller_order.push_back(u);
+            }
+        });
+        std::size_t k = 0; // the caller's own units first: 0, 1, ..., k - 1
+        while (k < caller_order.size() && caller_order[k] == k)
+            ++k;
+        for (std::size_t u = k; u < U / 2; ++u)
+            EXPECT_NE(who[u], caller) << "job " << job << ": unit " << u << " of the caller's share out of order";
+        for (std::size_t i = k; i < caller_order.size(); ++i) // then the worker's share from its back
+            EXPECT_EQ(caller_order[i], U - 1 - (i - k)) << "job " << job;
+    }
 }
 
 TEST(WorkerTeam, RefusesMoreUnitsThanItCanCount) {
