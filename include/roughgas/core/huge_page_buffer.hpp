@@ -7,13 +7,34 @@
 #include <cstdlib>
 #include <cstring>
 #include <new>
+#include <cstdint>
 #include <utility>
+#include <vector>
 
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
 
 namespace roughgas {
+
+// A std::vector resized to n elements with the 2 MiB pages inside its new storage advised
+// MADV_HUGEPAGE before anything touches them (the capacity is reserved first, then advised, then
+// filled), so that their first touch faults in huge pages: the box solver's grain arrays, which the
+// sort rewrites at every step in cell order, then cost neither 4 KiB page faults at the start nor a
+// page walk per page of a scattered write. A hint: without it the vector works on 4 KiB pages.
+template <class T> void resize_on_huge_pages(std::vector<T>& v, std::size_t n) {
+    if (v.capacity() < n) {
+        v.reserve(n);
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+        constexpr std::uintptr_t huge = std::uintptr_t{2} << 20;
+        const auto first = reinterpret_cast<std::uintptr_t>(v.data());
+        const std::uintptr_t from = (first + huge - 1) / huge * huge, to = (first + n * sizeof(T)) / huge * huge;
+        if (to > from)
+            madvise(reinterpret_cast<void*>(from), to - from, MADV_HUGEPAGE);
+#endif
+    }
+    v.resize(n);
+}
 
 // A fixed-size buffer of trivially copyable T, value-initialised, on (transparent) huge pages.
 template <class T> class HugePageBuffer {

@@ -53,6 +53,7 @@
 #include "roughgas/collision/sampling.hpp"
 #include "roughgas/collision/wall_rule.hpp"
 #include "roughgas/core/bytes.hpp"
+#include "roughgas/core/huge_page_buffer.hpp"
 #include "roughgas/core/own_lines.hpp"
 #include "roughgas/core/rng.hpp"
 #include "roughgas/core/vec.hpp"
@@ -156,9 +157,8 @@ template <class Policy, bool General = false> class SpatialEngine {
             throw std::invalid_argument("SpatialEngine: at most 2^32 - 1 grains and cells (32-bit offsets)");
         for (const PairType& t : types_)
             cs_max_ = std::max(cs_max_, t.pc.cross_section);
-        x_.resize(particles_);
-        v_.resize(particles_);
-        w_.resize(particles_);
+        for (std::vector<Vec3>* a : {&x_, &v_, &w_})
+            resize_on_huge_pages(*a, particles_);
         if (domain_.profile_axis < 0 || domain_.profile_axis > 2)
             throw std::invalid_argument("SpatialEngine: the profile axis must be 0, 1 or 2");
         cell_virial_.assign(cells_, Virial{});
@@ -737,11 +737,10 @@ template <class Policy, bool General = false> class SpatialEngine {
     void sort_into_cells() {
         tallies_valid_ = false;
         const std::size_t S = blocks_.size();
-        key_.resize(particles_);
+        resize_on_huge_pages(key_, particles_);
         cell_start_.resize(S * (cells_ + 1));
-        x2_.resize(particles_);
-        v2_.resize(particles_);
-        w2_.resize(particles_);
+        for (std::vector<Vec3>* a : {&x2_, &v2_, &w2_})
+            resize_on_huge_pages(*a, particles_);
         const bool nearest = !id_.empty();
         id2_.resize(id_.size());
         last2_.resize(last_.size());
