@@ -34,19 +34,22 @@ TEST(WorkerTeam, EveryUnitOfEveryJobRunsOnce) {
 }
 
 TEST(WorkerTeam, TheFirstExceptionReachesTheCallerAndTheTeamGoesOn) {
-    WorkerTeam team(2);
-    std::atomic<int> ran{0};
-    EXPECT_THROW(team.for_each(16,
-                               [&](std::size_t u) {
-                                   ran.fetch_add(1);
-                                   if (u == 7)
-                                       throw std::runtime_error("unit 7");
-                               }),
-                 std::runtime_error);
-    EXPECT_EQ(ran.load(), 16); // the other units still ran
-    ran = 0;
-    team.for_each(16, [&](std::size_t) { ran.fetch_add(1); });
-    EXPECT_EQ(ran.load(), 16);
+    for (const int threads : {1, 2}) {
+        SCOPED_TRACE(threads);
+        WorkerTeam team(threads);
+        std::atomic<int> ran{0};
+        EXPECT_THROW(team.for_each(16,
+                                   [&](std::size_t u) {
+                                       ran.fetch_add(1);
+                                       if (u == 7)
+                                           throw std::runtime_error("unit 7");
+                                   }),
+                     std::runtime_error);
+        EXPECT_EQ(ran.load(), 16); // the other units still ran
+        ran = 0;
+        team.for_each(16, [&](std::size_t) { ran.fetch_add(1); });
+        EXPECT_EQ(ran.load(), 16);
+    }
 }
 
 // A unit that takes long on one thread does not hold up the rest: the other threads take every
@@ -76,17 +79,23 @@ TEST(WorkerTeam, EachThreadClaimsItsOwnShareFromTheFrontAndTheOthersFromTheBack)
     for (int job = 0; job < 20; ++job) {
         const std::size_t U = 40;
         std::vector<std::thread::id> who(U);
-        std::vector<std::size_t> caller_order;
+        std::vector<std::size_t> caller_order, worker_order;
         std::mutex m;
         const std::thread::id caller = std::this_thread::get_id();
         team.for_each(U, [&](std::size_t u) {
             std::this_thread::sleep_for(std::chrono::microseconds(job % 2 == 0 ? 500 : 20));
             who[u] = std::this_thread::get_id();
-            if (who[u] == caller) {
-                const std::lock_guard<std::mutex> lock(m);
-                caller_order.push_back(u);
-            }
+            const std::lock_guard<std::mutex> lock(m);
+            (who[u] == caller ? caller_order : worker_order).push_back(u);
         });
+        // The worker likewise: its own share from U/2 up, then the caller's from its back.
+        std::size_t j = 0;
+        while (j < worker_order.size() && worker_order[j] == U / 2 + j)
+            ++j;
+        for (std::size_t i = j; i < worker_order.size(); ++i)
+            EXPECT_LT(worker_order[i], U / 2) << "job " << job << ": the worker's own units out of order";
+        for (std::size_t i = j + 1; i < worker_order.size(); ++i)
+            EXPECT_LT(worker_order[i], worker_order[i - 1]) << "job " << job << ": not taken from the back";
         std::size_t k = 0; // the caller's own units first: 0, 1, ..., k - 1
         while (k < caller_order.size() && caller_order[k] == k)
             ++k;

@@ -50,8 +50,17 @@ class WorkerTeam {
         if (units == 0)
             return;
         if (workers_.empty() || units == 1) {
-            for (std::size_t u = 0; u < units; ++u)
-                fn(u);
+            std::exception_ptr first;
+            for (std::size_t u = 0; u < units; ++u) {
+                try {
+                    fn(u);
+                } catch (...) {
+                    if (!first)
+                        first = std::current_exception();
+                }
+            }
+            if (first)
+                std::rethrow_exception(first);
             return;
         }
         using Fn = std::remove_reference_t<F>;

@@ -177,8 +177,9 @@ template <class Policy, bool General = false> class SpatialEngine {
         }
         // An earlier box of the same size gives the positions too (x is then kept as it was).
         const bool placed = !from.x.empty() && from.box == domain_.size;
+        // Copied, not moved in: the engine's own arrays are on huge pages (resize_on_huge_pages).
         if (placed)
-            x_ = std::move(from.x);
+            std::copy(from.x.begin(), from.x.end(), x_.begin());
         for (std::size_t s = 0; s < blocks_.size() && !placed; ++s) {
             Rng r = make_stream(StreamKey{seed, Stream::initial_position, replica, 0, s});
             for (std::size_t i = blocks_[s].offset; i < blocks_[s].offset + blocks_[s].count; ++i) {
@@ -192,8 +193,8 @@ template <class Policy, bool General = false> class SpatialEngine {
             }
         }
         if (domain_.initial_state) {
-            v_ = std::move(from.v);
-            w_ = std::move(from.w);
+            std::copy(from.v.begin(), from.v.end(), v_.begin());
+            std::copy(from.w.begin(), from.w.end(), w_.begin());
         } else {
             init_maxwellian(*this, blocks_, seed, replica);
         }
