@@ -1,6 +1,9 @@
 #include "roughgas/core/worker_team.hpp"
 
+#include "roughgas/core/run_delay.hpp"
+
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -38,7 +41,10 @@ template <class T> void wait_while_equal(const std::atomic<T>& a, T old) {
 
 } // namespace
 
-WorkerTeam::WorkerTeam(int threads) : blocks_(std::make_unique<Block[]>(static_cast<std::size_t>(std::max(threads, 1)))) {
+WorkerTeam::WorkerTeam(int threads, Load load)
+    : blocks_(std::make_unique<Block[]>(static_cast<std::size_t>(std::max(threads, 1)))), active_(std::max(threads, 1)),
+      follow_load_(load == Load::followed && threads > 1), active_threads_(threads),
+      worker_tids_(std::make_unique<std::atomic<int>[]>(static_cast<std::size_t>(std::max(threads, 1)))) {
     for (int t = 1; t < threads; ++t)
         workers_.emplace_back([this, t] { worker_loop(static_cast<std::size_t>(t)); });
 }
@@ -47,6 +53,8 @@ WorkerTeam::~WorkerTeam() {
     stop_.store(true, std::memory_order_release);
     generation_.fetch_add(1, std::memory_order_acq_rel);
     generation_.notify_all();
+    active_.store(std::numeric_limits<int>::max(), std::memory_order_release); // wakes the resting
+    active_.notify_all();
     for (std::thread& w : workers_)
         w.join();
 }
@@ -105,27 +113,97 @@ void WorkerTeam::work(std::uint64_t generation, std::size_t self) {
 }
 
 void WorkerTeam::worker_loop(std::size_t self) {
+    worker_tids_[self].store(this_thread_id(), std::memory_order_release);
     std::uint64_t seen = 0;
     for (;;) {
         wait_while_equal(generation_, seen);
         seen = generation_.load(std::memory_order_acquire);
         if (stop_.load(std::memory_order_acquire))
             return;
+        // Not among the active threads: rest until the team takes this thread back. A job the
+        // team publishes meanwhile has no units for it (run_job), and the others take them all.
+        for (int a = active_.load(std::memory_order_acquire); a <= static_cast<int>(self);
+             a = active_.load(std::memory_order_acquire))
+            active_.wait(a, std::memory_order_acquire);
+        if (stop_.load(std::memory_order_acquire))
+            return;
         work(seen, self);
     }
+}
+
+void WorkerTeam::run_inline(std::size_t units, Call call, void* ctx) {
+    std::exception_ptr first;
+    for (std::size_t u = 0; u < units; ++u) {
+        try {
+            call(ctx, u);
+        } catch (...) {
+            if (!first)
+                first = std::current_exception();
+        }
+    }
+    if (first)
+        std::rethrow_exception(first);
+}
+
+// Ends the current window when it has lasted ActiveThreads::window: the team's run-queue wait over
+// the window gives the threads that take the next jobs. The caller's own wait counts only when the
+// same thread began the window (a team may be driven from different threads in turn).
+void WorkerTeam::follow_load() {
+    const auto now = std::chrono::steady_clock::now();
+    if (window_caller_ != 0 && now - window_start_ < std::chrono::duration<double>(ActiveThreads::window))
+        return;
+    const int caller = this_thread_id();
+    std::optional<std::int64_t> delay = run_delay_ns(caller);
+    for (std::size_t t = 1; delay && t < static_cast<std::size_t>(threads()); ++t) {
+        const int tid = worker_tids_[t].load(std::memory_order_acquire);
+        if (tid == 0) { // not started yet: begin the window again
+            window_caller_ = 0;
+            return;
+        }
+        const std::optional<std::int64_t> d = run_delay_ns(tid);
+        delay = d ? std::optional<std::int64_t>(*delay + *d) : std::nullopt;
+    }
+    if (!delay) { // the kernel does not say: every thread takes work, as without watching
+        follow_load_ = false;
+        active_.store(threads(), std::memory_order_release);
+        active_.notify_all();
+        return;
+    }
+    if (window_caller_ == caller) {
+        const double wall = std::chrono::duration<double>(now - window_start_).count();
+        const double lost = static_cast<double>(*delay - window_delay_) * 1e-9 / wall;
+        const int active = active_threads_.after_window(lost, std::chrono::duration<double>(now.time_since_epoch()).count());
+        if (active != active_.load(std::memory_order_relaxed)) {
+            active_.store(active, std::memory_order_release);
+            active_.notify_all();
+        }
+    }
+    window_caller_ = caller;
+    window_start_ = now;
+    window_delay_ = *delay;
 }
 
 void WorkerTeam::run_job(std::size_t units, Call call, void* ctx) {
     if (units > unit_mask)
         throw std::length_error("WorkerTeam: more than 2^20 - 1 units in one job");
+    if (follow_load_)
+        follow_load();
+    const auto active = static_cast<std::size_t>(active_.load(std::memory_order_relaxed));
+    if (active == 1) {
+        run_inline(units, call, ctx);
+        return;
+    }
     const std::uint64_t generation = generation_.load(std::memory_order_relaxed) + 1;
     call_.store(call, std::memory_order_relaxed);
     ctx_.store(ctx, std::memory_order_relaxed);
     units_.store(units, std::memory_order_relaxed);
     done_.store(0, std::memory_order_relaxed);
+    // The active threads' shares; the others' are empty (they rest, or wake late and find none).
     const auto T = static_cast<std::size_t>(threads());
-    for (std::size_t t = 0; t < T; ++t)
-        blocks_[t].claim.store(claim_word(generation, units * t / T, units * (t + 1) / T), std::memory_order_release);
+    for (std::size_t t = 0; t < T; ++t) {
+        const std::size_t first = t < active ? units * t / active : 0, end = t < active ? units * (t + 1) / active : 0;
+        blocks_[t].claim.store(claim_word(generation, first, end), std::memory_order_release);
+    }
     generation_.store(generation, std::memory_order_release);
     generation_.notify_all();
     work(generation, 0);

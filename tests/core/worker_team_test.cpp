@@ -1,10 +1,15 @@
 // WorkerTeam: every unit of every job runs exactly once, whatever thread runs it and however the
 // threads are scheduled; exceptions reach the caller; a job ends when its units are done, not when
-// every thread has arrived.
+// every thread has arrived; jobs go to fewer threads while the team's threads wait for CPUs.
 #include "roughgas/core/worker_team.hpp"
+
+#include "roughgas/core/run_delay.hpp"
+
+#include "busy_machine.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <mutex>
@@ -55,7 +60,7 @@ TEST(WorkerTeam, TheFirstExceptionReachesTheCallerAndTheTeamGoesOn) {
 // A unit that takes long on one thread does not hold up the rest: the other threads take every
 // other unit meanwhile (dynamic claiming), so the job takes about the long unit's time.
 TEST(WorkerTeam, UnitsAreClaimedDynamically) {
-    WorkerTeam team(2);
+    WorkerTeam team(2, WorkerTeam::Load::ignored); // both threads work even on a busy test machine
     std::vector<std::thread::id> who(41);
     team.for_each(who.size(), [&](std::size_t u) {
         if (u == 0)
@@ -75,7 +80,7 @@ TEST(WorkerTeam, UnitsAreClaimedDynamically) {
 // caller ran of its own share are 0, 1, ..., k - 1 in that order, and what it took of the worker's
 // share is that share's last units, from the end down, however the two threads are scheduled.
 TEST(WorkerTeam, EachThreadClaimsItsOwnShareFromTheFrontAndTheOthersFromTheBack) {
-    WorkerTeam team(2);
+    WorkerTeam team(2, WorkerTeam::Load::ignored);
     for (int job = 0; job < 20; ++job) {
         const std::size_t U = 40;
         std::vector<std::thread::id> who(U);
@@ -104,6 +109,36 @@ TEST(WorkerTeam, EachThreadClaimsItsOwnShareFromTheFrontAndTheOthersFromTheBack)
         for (std::size_t i = k; i < caller_order.size(); ++i) // then the worker's share from its back
             EXPECT_EQ(caller_order[i], U - 1 - (i - k)) << "job " << job;
     }
+}
+
+// On a machine with no CPU to spare (threads spinning, twice as many as it has CPUs) the team's
+// threads wait for time slices, and the team hands its jobs to fewer of them; every unit of every
+// job still runs once, before and after. A team told to ignore the load keeps all its threads.
+TEST(WorkerTeam, HandsItsJobsToFewerThreadsWhileTheyWaitForCpus) {
+    if (!run_delay_ns(this_thread_id()))
+        GTEST_SKIP() << "this kernel does not report run-queue waits (/proc/self/task/*/schedstat)";
+    WorkerTeam team(3), all(3, WorkerTeam::Load::ignored);
+    std::vector<std::atomic<int>> runs(64);
+    int fewest = 3, fewest_all = 3;
+    const BusyMachine busy;
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int job = 0; std::chrono::steady_clock::now() - t0 < std::chrono::seconds(10) && (fewest == 3 || job < 200); ++job) {
+        for (WorkerTeam* t : {&team, &all}) {
+            for (auto& r : runs)
+                r.store(0, std::memory_order_relaxed);
+            t->for_each(runs.size(), [&](std::size_t u) {
+                runs[u].fetch_add(1, std::memory_order_relaxed);
+                for (volatile int spin = 0; spin < 2000; spin = spin + 1) {
+                }
+            });
+            for (std::size_t u = 0; u < runs.size(); ++u)
+                ASSERT_EQ(runs[u].load(), 1) << "job " << job << ", unit " << u;
+        }
+        fewest = std::min(fewest, team.active_threads());
+        fewest_all = std::min(fewest_all, all.active_threads());
+    }
+    EXPECT_LT(fewest, 3) << "the team kept all 3 threads working on a machine without a CPU to spare";
+    EXPECT_EQ(fewest_all, 3);
 }
 
 TEST(WorkerTeam, RefusesMoreUnitsThanItCanCount) {

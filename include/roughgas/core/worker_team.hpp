@@ -18,10 +18,16 @@
 //    vCPUs' caches at every phase (a cache line takes 235 ns from one vCPU to the other on the
 //    machine of docs/performance.md). On a loaded machine the stealing balances the work as before;
 //  - a thread with nothing to do spins only briefly, then yields and sleeps on a futex
-//    (std::atomic::wait), so it leaves its core to whoever needs it.
+//    (std::atomic::wait), so it leaves its core to whoever needs it;
+//  - while the machine has no CPU for every thread of the team (its threads wait on the run
+//    queue: active_threads.hpp), jobs go to fewer threads, down to the caller alone, and the
+//    others sleep; the team tries its threads again after a while.
 // Which thread runs a unit never matters for the results: callers give each unit its own outputs
 // (and random streams keyed by the unit), combined in unit order.
+#include "roughgas/core/active_threads.hpp"
+
 #include <atomic>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <exception>
@@ -35,13 +41,18 @@ namespace roughgas {
 
 class WorkerTeam {
   public:
+    // Whether the team hands work to fewer threads while they wait for CPUs (active_threads.hpp).
+    enum class Load { followed, ignored };
+
     // `threads` - 1 workers (none for threads <= 1: for_each then runs every unit in the caller).
-    explicit WorkerTeam(int threads);
+    explicit WorkerTeam(int threads, Load load = Load::followed);
     ~WorkerTeam();
     WorkerTeam(const WorkerTeam&) = delete;
     WorkerTeam& operator=(const WorkerTeam&) = delete;
 
     int threads() const { return static_cast<int>(workers_.size()) + 1; }
+    // The threads that take the next job's units (the caller and the first workers).
+    int active_threads() const { return active_.load(std::memory_order_relaxed); }
 
     // Calls fn(u) for u in [0, units), each once, on any of the team's threads; returns when all
     // are done. The first exception thrown by fn is rethrown here (the other units still run).
@@ -72,6 +83,8 @@ class WorkerTeam {
   private:
     using Call = void (*)(void*, std::size_t);
     void run_job(std::size_t units, Call call, void* ctx);
+    void run_inline(std::size_t units, Call call, void* ctx); // every unit in the caller
+    void follow_load();                                      // once a window: the active threads
     void work(std::uint64_t generation, std::size_t self); // claims and runs units of the given job
     bool run_unit(std::uint64_t generation, std::size_t self, std::size_t block); // one unit of the block
     void worker_loop(std::size_t self);
@@ -90,6 +103,16 @@ class WorkerTeam {
     std::atomic<std::uint64_t> generation_{0}; // the latest job; workers sleep on it
     std::atomic<std::size_t> done_{0};         // units of the current job completed
     std::atomic<bool> stop_{false};
+    // The threads that take work (the first active_ of the team); workers beyond sleep on it.
+    std::atomic<int> active_;
+    // Watching the load (the caller's, between jobs): the workers' kernel thread ids (0 until
+    // started), and the run-queue wait of the whole team when the current window began.
+    bool follow_load_;
+    ActiveThreads active_threads_;
+    std::unique_ptr<std::atomic<int>[]> worker_tids_;
+    std::chrono::steady_clock::time_point window_start_{};
+    std::int64_t window_delay_ = 0;
+    int window_caller_ = 0; // 0: no window begun
     std::mutex error_mutex_;
     std::exception_ptr error_;
     std::vector<std::thread> workers_;

@@ -1,0 +1,66 @@
+#pragma once
+// How many of a team's threads take work, from the time they spent waiting for a CPU.
+//
+// Why. On a machine with fewer free cores than the team has threads (two runs started together, a
+// run beside a compile), every job of the team ends only when the unit held by a thread waiting for
+// its time slice is done: the other threads of the job sleep meanwhile, and the run pays a share
+// of every time slice of the other processes. Two runs of two threads each on two cores took
+// 1.1-1.3x the time of the same runs with one thread each (docs/performance.md). The team therefore
+// watches how long its threads were runnable but not running (their run-queue wait, run_delay.hpp)
+// per window of wall time, and hands work only to as many threads as the machine runs:
+//  - a window whose threads waited more than `lost_limit` CPUs on average (0.3: an idle machine
+//    shows 0.02, a machine with one thread too many per core 0.8) takes that many threads out of
+//    the work, rounded, at least one, keeping one;
+//  - after `first_probe` seconds the team tries one thread more for a window; if that window waits
+//    too, it goes back and tries again after twice as long (at most `longest_probe` seconds), so a
+//    lasting load costs a window in every few seconds, and a load that ends is noticed within
+//    seconds.
+// Results never depend on it: which thread runs a unit does not matter (worker_team.hpp).
+#include <algorithm>
+#include <cmath>
+
+namespace roughgas {
+
+class ActiveThreads {
+  public:
+    static constexpr double window = 0.05;      // seconds of wall time per measurement
+    static constexpr double lost_limit = 0.3;   // CPUs' worth of waiting per window that is too much
+    static constexpr double first_probe = 0.5;  // seconds before one more thread is tried
+    static constexpr double longest_probe = 8.0; // the longest wait between tries
+
+    explicit ActiveThreads(int threads) : threads_(std::max(threads, 1)), active_(threads_) {}
+
+    int threads() const { return threads_; }
+    int active() const { return active_; }
+
+    // After a window that ended at `now` (seconds, any origin), whose threads together waited
+    // `lost` times its wall time for a CPU: the threads that take work in the next window.
+    int after_window(double lost, double now) {
+        if (lost > lost_limit && active_ > 1) {
+            const int surplus = std::max(1, static_cast<int>(std::lround(lost)));
+            active_ = std::max(1, active_ - surplus);
+            probe_wait_ = probing_ ? std::min(2 * probe_wait_, longest_probe) : first_probe;
+            probing_ = false;
+            next_probe_ = now + probe_wait_;
+            return active_;
+        }
+        if (probing_) { // the thread tried got its CPU: keep it, and try the next one soon
+            probing_ = false;
+            probe_wait_ = first_probe;
+        }
+        if (active_ < threads_ && now >= next_probe_) {
+            ++active_;
+            probing_ = true;
+        }
+        return active_;
+    }
+
+  private:
+    int threads_;
+    int active_;
+    bool probing_ = false; // the last window ran one thread more than the one before, as a try
+    double probe_wait_ = first_probe;
+    double next_probe_ = 0;
+};
+
+} // namespace roughgas
