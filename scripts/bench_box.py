@@ -10,8 +10,9 @@ each N: smooth grains on 1 thread, rough grains (alpha = 1, beta = 1: energy-con
 spins) on 1 thread, smooth grains on 2 threads, smooth grains with nearest partners
 (domain.partners) on 1 thread, and the ice grains of cases/hcs_brilliantov.toml (eps^N and eps^T
 from cached tables, cooling: 120 steps, the case's 60 collisions per particle) on the same deck
-on 1 thread, run alternately for --rounds rounds (the order reversed every other round, so that
-a drift of the machine's speed hits all alike).
+on 1 thread, run alternately for --rounds rounds in that order with rough grains first (so that
+smooth grains on 1 thread run right before or after each of rough grains and 2 threads), the order
+reversed every other round, so that a drift of the machine's speed hits all alike.
 Reported per variant: the median and range of the wall time per particle and step (ns), and of the
 ratios rough/smooth, 1 thread/2 threads, nearest/random partners and brilliantov/smooth. The
 machine, date, commit and load are printed with the table (docs/performance.md).
@@ -87,7 +88,9 @@ def main():
             f.write(brilliantov_deck(n, os.path.abspath(os.path.join(a.out, "ice_tables.bin"))))
         timed([roughgas, "run", ice, "--out", os.path.join(a.out, "run"), "--force", "--quiet", "--threads", "2",
                "--set", "run.particles=2000"], "bench_box")  # builds the tables' cache file: the timed runs load it
-        variants = [("smooth, 1 thread", cases[False], "1"), ("rough, 1 thread", cases[True], "1"),
+        # The two sides of each ratio follow each other (smooth on 1 and on 2 threads; smooth and
+        # rough; ...), in one order and then the reverse.
+        variants = [("rough, 1 thread", cases[True], "1"), ("smooth, 1 thread", cases[False], "1"),
                     ("smooth, 2 threads", cases[False], "2"), ("smooth, nearest, 1 thread", nearest, "1"),
                     ("brilliantov, 1 thread", ice, "1")]
         times = {v[0]: [] for v in variants}

@@ -1,6 +1,7 @@
 #include "roughgas/core/run_delay.hpp"
 
 #include <fcntl.h>
+#include <sys/syscall.h>
 #include <unistd.h>
 
 #include <charconv>
@@ -8,7 +9,8 @@
 
 namespace roughgas {
 
-int this_thread_id() { return static_cast<int>(gettid()); }
+// The system call rather than glibc's gettid(), which needs glibc 2.30 (clusters run older ones).
+int this_thread_id() { return static_cast<int>(::syscall(SYS_gettid)); }
 
 std::optional<std::int64_t> run_delay_of_schedstat(std::string_view text) {
     std::int64_t field[3] = {0, 0, 0};
@@ -22,6 +24,8 @@ std::optional<std::int64_t> run_delay_of_schedstat(std::string_view text) {
             return std::nullopt;
         p = next;
     }
+    if (field[0] == 0) // no time on a CPU: a kernel that keeps no scheduler statistics reports zeros
+        return std::nullopt;
     return field[1];
 }
 

@@ -43,7 +43,9 @@ template <class T> void wait_while_equal(const std::atomic<T>& a, T old) {
 
 WorkerTeam::WorkerTeam(int threads, Load load)
     : blocks_(std::make_unique<Block[]>(static_cast<std::size_t>(std::max(threads, 1)))), active_(std::max(threads, 1)),
-      follow_load_(load == Load::followed && threads > 1), active_threads_(threads),
+      follow_load_(load == Load::followed && threads > 1),
+      active_threads_(threads, static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()) ^
+                                   reinterpret_cast<std::uintptr_t>(this)),
       worker_tids_(std::make_unique<std::atomic<int>[]>(static_cast<std::size_t>(std::max(threads, 1)))) {
     for (int t = 1; t < threads; ++t)
         workers_.emplace_back([this, t] { worker_loop(static_cast<std::size_t>(t)); });
@@ -131,6 +133,14 @@ void WorkerTeam::worker_loop(std::size_t self) {
     }
 }
 
+void WorkerTeam::set_active_threads(int n) {
+    n = std::clamp(n, 1, threads());
+    if (n != active_.load(std::memory_order_relaxed)) {
+        active_.store(n, std::memory_order_release);
+        active_.notify_all(); // the workers resting on it
+    }
+}
+
 void WorkerTeam::run_inline(std::size_t units, Call call, void* ctx) {
     std::exception_ptr first;
     for (std::size_t u = 0; u < units; ++u) {
@@ -154,29 +164,28 @@ void WorkerTeam::follow_load() {
         return;
     const int caller = this_thread_id();
     std::optional<std::int64_t> delay = run_delay_ns(caller);
-    for (std::size_t t = 1; delay && t < static_cast<std::size_t>(threads()); ++t) {
-        const int tid = worker_tids_[t].load(std::memory_order_acquire);
-        if (tid == 0) { // not started yet: begin the window again
-            window_caller_ = 0;
-            return;
-        }
-        const std::optional<std::int64_t> d = run_delay_ns(tid);
-        delay = d ? std::optional<std::int64_t>(*delay + *d) : std::nullopt;
-    }
-    if (!delay) { // the kernel does not say: every thread takes work, as without watching
+    if (!delay && !delays_read_) { // the kernel does not say: every thread takes work, as without watching
         follow_load_ = false;
-        active_.store(threads(), std::memory_order_release);
-        active_.notify_all();
+        set_active_threads(threads());
         return;
     }
+    for (std::size_t t = 1; delay && t < static_cast<std::size_t>(threads()); ++t) {
+        const int tid = worker_tids_[t].load(std::memory_order_acquire);
+        // A worker not started yet, or without CPU time counted yet (schedstat's zeros), begins
+        // the window again; so does a read that failed (no file descriptor left, ...).
+        const std::optional<std::int64_t> d = tid != 0 ? run_delay_ns(tid) : std::nullopt;
+        delay = d ? std::optional<std::int64_t>(*delay + *d) : std::nullopt;
+    }
+    if (!delay) { // no measurement: the next one after a window, as a new beginning
+        window_caller_ = -1;
+        window_start_ = now;
+        return;
+    }
+    delays_read_ = true;
     if (window_caller_ == caller) {
         const double wall = std::chrono::duration<double>(now - window_start_).count();
         const double lost = static_cast<double>(*delay - window_delay_) * 1e-9 / wall;
-        const int active = active_threads_.after_window(lost, std::chrono::duration<double>(now.time_since_epoch()).count());
-        if (active != active_.load(std::memory_order_relaxed)) {
-            active_.store(active, std::memory_order_release);
-            active_.notify_all();
-        }
+        set_active_threads(active_threads_.after_window(lost, std::chrono::duration<double>(now.time_since_epoch()).count()));
     }
     window_caller_ = caller;
     window_start_ = now;

@@ -18,6 +18,7 @@ TEST(RunDelay, IsTheSecondFieldOfSchedstat) {
     EXPECT_EQ(run_delay_of_schedstat("3329624 7155"), std::nullopt); // a field short
     EXPECT_EQ(run_delay_of_schedstat("3329624 x 12"), std::nullopt);
     EXPECT_EQ(run_delay_of_schedstat("3329624 -5 12"), std::nullopt);
+    EXPECT_EQ(run_delay_of_schedstat("0 0 0"), std::nullopt); // a kernel without scheduler statistics
 }
 
 // Threads that spin, twice as many as the machine has CPUs, each wait about half of their time on
@@ -30,8 +31,11 @@ TEST(RunDelay, GrowsWhileTheThreadWaitsForACpu) {
     std::int64_t waited = 0;
     {
         const BusyMachine busy;
-        while (std::chrono::steady_clock::now() - t0 < std::chrono::seconds(5) && waited < 10'000'000) // 10 ms
-            waited = *run_delay_ns(this_thread_id()) - *before;
+        while (std::chrono::steady_clock::now() - t0 < std::chrono::seconds(5) && waited < 10'000'000) { // 10 ms
+            const std::optional<std::int64_t> now = run_delay_ns(this_thread_id());
+            ASSERT_TRUE(now.has_value());
+            waited = *now - *before;
+        }
     }
     EXPECT_GE(waited, 10'000'000) << "waited " << waited * 1e-6 << " ms for a CPU among spinning threads in 5 s";
 }

@@ -17,7 +17,8 @@ int this_thread_id();
 // not report it (another system, /proc not mounted, a kernel without scheduler statistics).
 std::optional<std::int64_t> run_delay_ns(int tid);
 
-// The second field of a schedstat line ("1234 567 89"); none when the text is not such a line.
+// The second field of a schedstat line ("1234 567 89"); none when the text is not such a line or
+// its first field (time on a CPU) is 0, as on kernels that keep no scheduler statistics.
 std::optional<std::int64_t> run_delay_of_schedstat(std::string_view text);
 
 } // namespace roughgas

@@ -53,6 +53,9 @@ class WorkerTeam {
     int threads() const { return static_cast<int>(workers_.size()) + 1; }
     // The threads that take the next job's units (the caller and the first workers).
     int active_threads() const { return active_.load(std::memory_order_relaxed); }
+    // Hands the next jobs to the first n threads (n clamped to [1, threads()]; the others rest); a
+    // team that follows the load sets it again at the end of its current window. Between jobs only.
+    void set_active_threads(int n);
 
     // Calls fn(u) for u in [0, units), each once, on any of the team's threads; returns when all
     // are done. The first exception thrown by fn is rethrown here (the other units still run).
@@ -112,7 +115,8 @@ class WorkerTeam {
     std::unique_ptr<std::atomic<int>[]> worker_tids_;
     std::chrono::steady_clock::time_point window_start_{};
     std::int64_t window_delay_ = 0;
-    int window_caller_ = 0; // 0: no window begun
+    int window_caller_ = 0;   // 0: no window begun; -1: one begun without a measurement
+    bool delays_read_ = false; // the kernel has reported the run-queue waits at least once
     std::mutex error_mutex_;
     std::exception_ptr error_;
     std::vector<std::thread> workers_;
