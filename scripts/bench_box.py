@@ -88,8 +88,8 @@ def main():
             f.write(brilliantov_deck(n, os.path.abspath(os.path.join(a.out, "ice_tables.bin"))))
         timed([roughgas, "run", ice, "--out", os.path.join(a.out, "run"), "--force", "--quiet", "--threads", "2",
                "--set", "run.particles=2000"], "bench_box")  # builds the tables' cache file: the timed runs load it
-        # The two sides of each ratio follow each other (smooth on 1 and on 2 threads; smooth and
-        # rough; ...), in one order and then the reverse.
+        # Smooth grains on 1 thread run between rough grains and 2 threads: the sides of those two
+        # ratios follow each other, in one order and then the reverse.
         variants = [("rough, 1 thread", cases[True], "1"), ("smooth, 1 thread", cases[False], "1"),
                     ("smooth, 2 threads", cases[False], "2"), ("smooth, nearest, 1 thread", nearest, "1"),
                     ("brilliantov, 1 thread", ice, "1")]
