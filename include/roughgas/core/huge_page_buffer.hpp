@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdlib>
 #include <cstring>
+#include <iterator>
 #include <new>
 #include <cstdint>
 #include <utility>
@@ -24,14 +25,19 @@ namespace roughgas {
 // page walk per page of a scattered write. A hint: without it the vector works on 4 KiB pages.
 template <class T> void resize_on_huge_pages(std::vector<T>& v, std::size_t n) {
     if (v.capacity() < n) {
-        v.reserve(n);
+        // New storage, advised before the elements already held are copied into it (a reserve on v
+        // itself would copy them first and fault their pages in small).
+        std::vector<T> fresh;
+        fresh.reserve(n);
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
         constexpr std::uintptr_t huge = std::uintptr_t{2} << 20;
-        const auto first = reinterpret_cast<std::uintptr_t>(v.data());
+        const auto first = reinterpret_cast<std::uintptr_t>(fresh.data());
         const std::uintptr_t from = (first + huge - 1) / huge * huge, to = (first + n * sizeof(T)) / huge * huge;
         if (to > from)
             madvise(reinterpret_cast<void*>(from), to - from, MADV_HUGEPAGE);
 #endif
+        fresh.insert(fresh.end(), std::make_move_iterator(v.begin()), std::make_move_iterator(v.end()));
+        v.swap(fresh);
     }
     v.resize(n);
 }
