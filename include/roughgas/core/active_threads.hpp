@@ -4,8 +4,9 @@
 // Why. On a machine with fewer free cores than the team has threads (two runs started together, a
 // run beside a compile), every job of the team ends only when the unit held by a thread waiting for
 // its time slice is done: the other threads of the job sleep meanwhile, and the run pays a share
-// of every time slice of the other processes. Two runs of two threads each on two cores took
-// 1.1-1.3x the time of the same runs with one thread each (docs/performance.md). The team therefore
+// of every time slice of the other processes. Two runs of two threads each on two cores, every
+// thread working, take 1.1-1.3x the time of the same runs with one thread each (docs/performance.md,
+// "Runs on a shared machine"). The team therefore
 // watches how long its threads were runnable but not running (their run-queue wait, run_delay.hpp)
 // per window of wall time, and hands work only to as many threads as the machine runs:
 //  - a window whose threads waited more than `lost_limit` CPUs per active thread (0.15: two idle
