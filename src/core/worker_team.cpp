@@ -141,20 +141,6 @@ void WorkerTeam::set_active_threads(int n) {
     }
 }
 
-void WorkerTeam::run_inline(std::size_t units, Call call, void* ctx) {
-    std::exception_ptr first;
-    for (std::size_t u = 0; u < units; ++u) {
-        try {
-            call(ctx, u);
-        } catch (...) {
-            if (!first)
-                first = std::current_exception();
-        }
-    }
-    if (first)
-        std::rethrow_exception(first);
-}
-
 // Ends the current window when it has lasted ActiveThreads::window: the team's run-queue wait over
 // the window gives the threads that take the next jobs. The caller's own wait counts only when the
 // same thread began the window (a team may be driven from different threads in turn).
@@ -199,7 +185,7 @@ void WorkerTeam::run_job(std::size_t units, Call call, void* ctx) {
         follow_load();
     const auto active = static_cast<std::size_t>(active_.load(std::memory_order_relaxed));
     if (active == 1) {
-        run_inline(units, call, ctx);
+        run_inline(units, [&](std::size_t u) { call(ctx, u); });
         return;
     }
     const std::uint64_t generation = generation_.load(std::memory_order_relaxed) + 1;

@@ -7,8 +7,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <iterator>
-#include <new>
 #include <cstdint>
+#include <new>
 #include <utility>
 #include <vector>
 
@@ -18,24 +18,31 @@
 
 namespace roughgas {
 
+// Advises MADV_HUGEPAGE for the whole 2 MiB pages inside [p, p + bytes), before anything touches
+// them, so that their first touch faults in huge pages. A hint: without it the memory works on
+// 4 KiB pages.
+inline void advise_huge_pages([[maybe_unused]] const void* p, [[maybe_unused]] std::size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    constexpr std::uintptr_t huge = std::uintptr_t{2} << 20;
+    const auto first = reinterpret_cast<std::uintptr_t>(p);
+    const std::uintptr_t from = (first + huge - 1) / huge * huge, to = (first + bytes) / huge * huge;
+    if (to > from)
+        madvise(reinterpret_cast<void*>(from), to - from, MADV_HUGEPAGE);
+#endif
+}
+
 // A std::vector resized to n elements with the 2 MiB pages inside its new storage advised
 // MADV_HUGEPAGE before anything touches them (the capacity is reserved first, then advised, then
 // filled), so that their first touch faults in huge pages: the box solver's grain arrays, which the
 // sort rewrites at every step in cell order, then cost neither 4 KiB page faults at the start nor a
-// page walk per page of a scattered write. A hint: without it the vector works on 4 KiB pages.
+// page walk per page of a scattered write.
 template <class T> void resize_on_huge_pages(std::vector<T>& v, std::size_t n) {
     if (v.capacity() < n) {
         // New storage, advised before the elements already held are copied into it (a reserve on v
         // itself would copy them first and fault their pages in small).
         std::vector<T> fresh;
         fresh.reserve(n);
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-        constexpr std::uintptr_t huge = std::uintptr_t{2} << 20;
-        const auto first = reinterpret_cast<std::uintptr_t>(fresh.data());
-        const std::uintptr_t from = (first + huge - 1) / huge * huge, to = (first + n * sizeof(T)) / huge * huge;
-        if (to > from)
-            madvise(reinterpret_cast<void*>(from), to - from, MADV_HUGEPAGE);
-#endif
+        advise_huge_pages(fresh.data(), n * sizeof(T));
         fresh.insert(fresh.end(), std::make_move_iterator(v.begin()), std::make_move_iterator(v.end()));
         v.swap(fresh);
     }
@@ -54,9 +61,7 @@ template <class T> class HugePageBuffer {
         void* p = std::aligned_alloc(huge, bytes);
         if (!p)
             throw std::bad_alloc();
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-        madvise(p, bytes, MADV_HUGEPAGE); // a hint: without it the store still works, on 4 KiB pages
-#endif
+        advise_huge_pages(p, bytes); // 2 MiB-aligned and whole pages: all of it
         std::memset(p, 0, bytes);
         data_ = static_cast<T*>(p);
     }

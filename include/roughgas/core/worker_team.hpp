@@ -64,17 +64,7 @@ class WorkerTeam {
         if (units == 0)
             return;
         if (workers_.empty() || units == 1) {
-            std::exception_ptr first;
-            for (std::size_t u = 0; u < units; ++u) {
-                try {
-                    fn(u);
-                } catch (...) {
-                    if (!first)
-                        first = std::current_exception();
-                }
-            }
-            if (first)
-                std::rethrow_exception(first);
+            run_inline(units, fn);
             return;
         }
         using Fn = std::remove_reference_t<F>;
@@ -86,7 +76,20 @@ class WorkerTeam {
   private:
     using Call = void (*)(void*, std::size_t);
     void run_job(std::size_t units, Call call, void* ctx);
-    void run_inline(std::size_t units, Call call, void* ctx); // every unit in the caller
+    // Every unit in the caller, in order; all run, and the first exception is rethrown after them.
+    template <class F> static void run_inline(std::size_t units, F&& fn) {
+        std::exception_ptr first;
+        for (std::size_t u = 0; u < units; ++u) {
+            try {
+                fn(u);
+            } catch (...) {
+                if (!first)
+                    first = std::current_exception();
+            }
+        }
+        if (first)
+            std::rethrow_exception(first);
+    }
     void follow_load();                                      // once a window: the active threads
     void work(std::uint64_t generation, std::size_t self); // claims and runs units of the given job
     bool run_unit(std::uint64_t generation, std::size_t self, std::size_t block); // one unit of the block
