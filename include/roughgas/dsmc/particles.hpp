@@ -60,11 +60,11 @@ template <class Grain> class RoughArray {
     Vec3& w(std::size_t i) { return g_[i].w; }
     const Vec3& v(std::size_t i) const { return g_[i].v; }
     const Vec3& w(std::size_t i) const { return g_[i].w; }
-    void prefetch(std::size_t i) const {
+    void prefetch(std::size_t i, bool for_write = false) const {
         const char* p = reinterpret_cast<const char*>(&g_[i]);
-        prefetch_line(p);
+        prefetch_line(p, for_write);
         if constexpr (alignof(Grain) < 64 || sizeof(Grain) % 64 != 0)
-            prefetch_line(p + sizeof(Grain) - 1); // an unaligned grain may straddle two lines
+            prefetch_line(p + sizeof(Grain) - 1, for_write); // an unaligned grain may straddle two lines
     }
     Vec3Column velocities() const { return column_of(g_.data(), offsetof(Grain, v)); }
     Vec3Column angular_velocities() const { return column_of(g_.data(), offsetof(Grain, w)); }
@@ -87,11 +87,11 @@ class RoughSoA {
     Vec3& w(std::size_t i) { return w_[i]; }
     const Vec3& v(std::size_t i) const { return v_[i]; }
     const Vec3& w(std::size_t i) const { return w_[i]; }
-    void prefetch(std::size_t i) const {
-        prefetch_line(&v_[i]);
-        prefetch_line(reinterpret_cast<const char*>(&v_[i]) + sizeof(Vec3) - 1);
-        prefetch_line(&w_[i]);
-        prefetch_line(reinterpret_cast<const char*>(&w_[i]) + sizeof(Vec3) - 1);
+    void prefetch(std::size_t i, bool for_write = false) const {
+        prefetch_line(&v_[i], for_write);
+        prefetch_line(reinterpret_cast<const char*>(&v_[i]) + sizeof(Vec3) - 1, for_write);
+        prefetch_line(&w_[i], for_write);
+        prefetch_line(reinterpret_cast<const char*>(&w_[i]) + sizeof(Vec3) - 1, for_write);
     }
     Vec3Column velocities() const { return column_of(v_.data(), 0); }
     Vec3Column angular_velocities() const { return column_of(w_.data(), 0); }
@@ -119,7 +119,7 @@ class SmoothAoS {
     // Cold: initialisation and observers only.
     Vec3& w(std::size_t i) { return w_[i]; }
     const Vec3& w(std::size_t i) const { return w_[i]; }
-    void prefetch(std::size_t i) const { prefetch_line(&g_[i]); }
+    void prefetch(std::size_t i, bool for_write = false) const { prefetch_line(&g_[i], for_write); }
     Vec3Column velocities() const { return column_of(g_.data(), offsetof(SmoothGrain, v)); }
     Vec3Column angular_velocities() const { return column_of(w_.data(), 0); }
 
@@ -139,9 +139,9 @@ class SmoothPacked {
     const Vec3& v(std::size_t i) const { return v_[i]; }
     Vec3& w(std::size_t i) { return w_[i]; }
     const Vec3& w(std::size_t i) const { return w_[i]; }
-    void prefetch(std::size_t i) const {
-        prefetch_line(&v_[i]);
-        prefetch_line(reinterpret_cast<const char*>(&v_[i]) + sizeof(Vec3) - 1);
+    void prefetch(std::size_t i, bool for_write = false) const {
+        prefetch_line(&v_[i], for_write);
+        prefetch_line(reinterpret_cast<const char*>(&v_[i]) + sizeof(Vec3) - 1, for_write);
     }
     Vec3Column velocities() const { return column_of(v_.data(), 0); }
     Vec3Column angular_velocities() const { return column_of(w_.data(), 0); }
