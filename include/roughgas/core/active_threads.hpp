@@ -32,7 +32,7 @@ class ActiveThreads {
     static constexpr double lost_limit = 0.15;   // CPUs of waiting per active thread that are too many
     static constexpr double first_probe = 0.5;   // seconds before one more thread is tried
     static constexpr double longest_probe = 8.0; // the longest wait between tries
-    static constexpr double spread = 0.25;       // waits drawn in [1 - spread, 1 + spread] times theirs
+    static constexpr double spread = 0.25;       // waits drawn in (1 - spread, 1 + spread) times theirs
 
     // `seed` draws the waits' spread; `spread_waits` = false gives the waits exactly (tests).
     explicit ActiveThreads(int threads, std::uint64_t seed = 0, bool spread_waits = true)
@@ -64,12 +64,12 @@ class ActiveThreads {
     }
 
   private:
-    // A factor in [1 - spread, 1 + spread) (splitmix64), or 1.
+    // A factor in (1 - spread, 1 + spread) (splitmix64), or 1.
     double factor() {
         if (!spread_)
             return 1.0;
-        const std::uint64_t z = splitmix64(draw_);
-        return 1.0 + spread * (2.0 * static_cast<double>(z >> 11) * 0x1.0p-53 - 1.0);
+        auto next = [this] { return splitmix64(draw_); };
+        return 1.0 + spread * uniform_pm1(next);
     }
 
     int threads_;
