@@ -125,6 +125,7 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
         cell_fields = buffer;
         return *buffer;
     };
+    CellFieldsScratch fields_scratch;
     const auto fields_at = [&](std::size_t row_index) {
         return writes_fields && row_index % static_cast<std::size_t>(domain.fields->every) == 0;
     };
@@ -173,7 +174,7 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
                     ? compute_cell_fields_and_profiles(profile_geometry, domain.cells, walled,
                                                        domain.fields->quantities, engine.positions(),
                                                        engine.velocities(), engine.angular_velocities(), blocks,
-                                                       virial, profile_dt, field_buffer())
+                                                       virial, profile_dt, field_buffer(), fields_scratch)
                     : compute_profiles(profile_geometry, engine.positions(), engine.velocities(),
                                        engine.angular_velocities(), blocks, virial, profile_dt);
             // A sheared box: the moments of the peculiar velocities (about the images' flow) in the
@@ -239,7 +240,7 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
             if (!cell_fields) // a repeated row's state, or walls across another axis than the profiles'
                 compute_cell_fields(profile_geometry, domain.cells, walled, domain.fields->quantities,
                                     engine.positions(), engine.velocities(), engine.angular_velocities(), blocks,
-                                    field_buffer());
+                                    field_buffer(), fields_scratch);
             io.fields(FieldSnapshot{row_index, engine.time(), 2.0 * static_cast<double>(engine.collisions()) / N,
                                     cell_fields});
         }

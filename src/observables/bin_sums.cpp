@@ -15,6 +15,14 @@ double& component(Vec3& q, std::size_t a) { return a == 0 ? q.x : a == 1 ? q.y :
 std::vector<BinSums> bin_sums(const FlightSampling& s, const BinGrid& g, const std::vector<Vec3>& x,
                               const std::vector<Vec3>& v, const std::vector<Vec3>& w,
                               const std::vector<SpeciesBlock>& species) {
+    BinSumsBuffers buffers;
+    bin_sums(s, g, x, v, w, species, buffers);
+    return std::move(buffers.sums);
+}
+
+const std::vector<BinSums>& bin_sums(const FlightSampling& s, const BinGrid& g, const std::vector<Vec3>& x,
+                                     const std::vector<Vec3>& v, const std::vector<Vec3>& w,
+                                     const std::vector<SpeciesBlock>& species, BinSumsBuffers& buffers) {
     const double tau = s.half_flight;
     const Vec3 dv = tau * s.gravity;
     // The axes a grain's bin or mid-flight velocity depends on: binned ones, walled ones (a
@@ -68,17 +76,14 @@ std::vector<BinSums> bin_sums(const FlightSampling& s, const BinGrid& g, const s
     //   sum (J w^2/2) c = R - (rot/2) D                       (R = sum (J w^2/2) d).
     // A reference inside the bin's velocity spread keeps the cancellation of A - M D D to the order
     // of the spread itself, as in the two-pass sums about U_b (a bin of one grain: exactly zero).
-    struct Moments {
-        double count = 0, mass = 0, rot = 0;
-        Vec3 momentum{}, spin{}, ref{}, md{}, q{}, r{};
-        double a[6] = {};
-    };
-    std::vector<Moments> acc(g.size());
+    std::vector<BinMoments>& acc = buffers.moments;
+    if (acc.size() != g.size())
+        acc.assign(g.size(), BinMoments{});
     for (const SpeciesBlock& sp : species) {
         const double m = sp.grain.mass, J = sp.moment_of_inertia();
         for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i) {
             const auto [bin, u] = locate(i);
-            Moments& b = acc[bin];
+            BinMoments& b = acc[bin];
             if (b.count == 0)
                 b.ref = u;
             const double e_rot = J * norm2(w[i]);
@@ -100,10 +105,14 @@ std::vector<BinSums> bin_sums(const FlightSampling& s, const BinGrid& g, const s
                 b.r += (0.5 * e_rot) * d;
         }
     }
-    std::vector<BinSums> sums(g.size());
+    std::vector<BinSums>& sums = buffers.sums;
+    sums.resize(g.size());
     for (std::size_t k = 0; k < sums.size(); ++k) {
-        const Moments& b = acc[k];
+        // Each bin's running sums are read once here and cleared at once, while in the cache: no
+        // pass of its own to clear them for the next call.
+        const BinMoments b = std::exchange(acc[k], BinMoments{});
         BinSums& o = sums[k];
+        o = BinSums{};
         o.count = b.count;
         o.mass = b.mass;
         o.rot = b.rot;

@@ -28,8 +28,28 @@ struct BinSums {
     Vec3 flow() const { return mass > 0 ? (1.0 / mass) * momentum : Vec3{}; }
 };
 
+// A bin's running sums in bin_sums' pass: its moments about a velocity of its own (`ref`, its first
+// grain's), turned into BinSums about its flow at the end.
+struct BinMoments {
+    double count = 0, mass = 0, rot = 0;
+    Vec3 momentum{}, spin{}, ref{}, md{}, q{}, r{};
+    double a[6] = {};
+};
+
+// The arrays of bin_sums' pass, kept from call to call: a grid of every collision cell at N = 10^6
+// needs 17 MB of them, and fresh arrays at every output row would be faulted in and cleared anew (a
+// few per cent of a run writing cell fields at every row). `moments` is all zeros between calls.
+struct BinSumsBuffers {
+    std::vector<BinMoments> moments;
+    std::vector<BinSums> sums;
+};
+
 // Bin i_x + B_x (i_y + B_y i_z) of each grain in the middle of its flight; grain order within a bin
-// (a deterministic sum).
+// (a deterministic sum). The result lives in `buffers.sums`, valid until the next call with them.
+const std::vector<BinSums>& bin_sums(const FlightSampling& s, const BinGrid& g, const std::vector<Vec3>& x,
+                                     const std::vector<Vec3>& v, const std::vector<Vec3>& w,
+                                     const std::vector<SpeciesBlock>& species, BinSumsBuffers& buffers);
+// The same with buffers of its own (a few bins: the profiles' slabs).
 std::vector<BinSums> bin_sums(const FlightSampling& s, const BinGrid& g, const std::vector<Vec3>& x,
                               const std::vector<Vec3>& v, const std::vector<Vec3>& w,
                               const std::vector<SpeciesBlock>& species);

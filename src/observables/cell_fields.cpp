@@ -29,12 +29,16 @@ std::string_view field_unit(FieldQuantity q) {
     return "?";
 }
 
+CellFieldsScratch::CellFieldsScratch() : buffers(std::make_unique<detail::BinSumsBuffers>()) {}
+CellFieldsScratch::~CellFieldsScratch() = default;
+
 CellFields compute_cell_fields(const FlightSampling& s, const std::array<int, 3>& cells,
                                const std::array<bool, 3>& walled, const std::vector<FieldQuantity>& quantities,
                                const std::vector<Vec3>& x, const std::vector<Vec3>& v, const std::vector<Vec3>& w,
                                const std::vector<SpeciesBlock>& species) {
     CellFields out;
-    compute_cell_fields(s, cells, walled, quantities, x, v, w, species, out);
+    CellFieldsScratch scratch;
+    compute_cell_fields(s, cells, walled, quantities, x, v, w, species, out, scratch);
     return out;
 }
 
@@ -109,9 +113,9 @@ void fields_from_sums(const FlightSampling& s, const detail::BinGrid& grid, cons
 void compute_cell_fields(const FlightSampling& s, const std::array<int, 3>& cells, const std::array<bool, 3>& walled,
                          const std::vector<FieldQuantity>& quantities, const std::vector<Vec3>& x,
                          const std::vector<Vec3>& v, const std::vector<Vec3>& w,
-                         const std::vector<SpeciesBlock>& species, CellFields& out) {
+                         const std::vector<SpeciesBlock>& species, CellFields& out, CellFieldsScratch& scratch) {
     const detail::BinGrid grid = cell_grid(s, cells, walled);
-    fields_from_sums(s, grid, detail::bin_sums(s, grid, x, v, w, species), quantities, out);
+    fields_from_sums(s, grid, detail::bin_sums(s, grid, x, v, w, species, *scratch.buffers), quantities, out);
 }
 
 std::vector<double> compute_cell_fields_and_profiles(const ProfileGeometry& g, const std::array<int, 3>& cells,
@@ -119,7 +123,8 @@ std::vector<double> compute_cell_fields_and_profiles(const ProfileGeometry& g, c
                                                      const std::vector<FieldQuantity>& quantities,
                                                      const std::vector<Vec3>& x, const std::vector<Vec3>& v,
                                                      const std::vector<Vec3>& w, const std::vector<SpeciesBlock>& species,
-                                                     const std::vector<Virial>& virial, double dt, CellFields& out) {
+                                                     const std::vector<Virial>& virial, double dt, CellFields& out,
+                                                     CellFieldsScratch& scratch) {
     const auto axis = static_cast<std::size_t>(g.axis);
     // The profile's own pass reflects the grains only at the walls across its axis.
     bool other_walls = false;
@@ -129,7 +134,7 @@ std::vector<double> compute_cell_fields_and_profiles(const ProfileGeometry& g, c
         throw std::invalid_argument(
             "compute_cell_fields_and_profiles: the profile bins must be layers of cells, walls only across them");
     const detail::BinGrid grid = cell_grid(g, cells, walled);
-    const std::vector<detail::BinSums> sums = detail::bin_sums(g, grid, x, v, w, species);
+    const std::vector<detail::BinSums>& sums = detail::bin_sums(g, grid, x, v, w, species, *scratch.buffers);
     fields_from_sums(g, grid, sums, quantities, out);
     return detail::profiles_from_sums(g, detail::layer_sums(sums, grid, g.axis, g.rotation), virial, dt);
 }

@@ -153,6 +153,7 @@ TEST(CellFields, ProfilesFromTheCellsAgreeWithTheirOwnPass) {
         v.push_back({normal(rng) + 10 * std::sin(x.back().y), normal(rng) - 3 * x.back().x, normal(rng)});
         w.push_back({normal(rng), normal(rng) + 0.3, normal(rng)});
     }
+    CellFieldsScratch scratch;
     for (const int axis : {0, 1})
         for (const bool rotation : {true, false}) {
             ProfileGeometry p;
@@ -172,8 +173,8 @@ TEST(CellFields, ProfilesFromTheCellsAgreeWithTheirOwnPass) {
                 virial[b][0] = static_cast<double>(b) + 1;
             const std::vector<double> own = compute_profiles(p, x, v, w, species, virial, 0.5);
             CellFields fused;
-            const std::vector<double> from_cells =
-                compute_cell_fields_and_profiles(p, cells, walled, all, x, v, w, species, virial, 0.5, fused);
+            const std::vector<double> from_cells = compute_cell_fields_and_profiles(
+                p, cells, walled, all, x, v, w, species, virial, 0.5, fused, scratch); // reused from the last pass
             const CellFields alone = compute_cell_fields(p, cells, walled, all, x, v, w, species);
             ASSERT_EQ(fused.values.size(), alone.values.size());
             for (std::size_t k = 0; k < alone.values.size(); ++k) { // bit for bit, NaN included
@@ -206,11 +207,11 @@ TEST(CellFields, ProfilesFromTheCellsAgreeWithTheirOwnPass) {
     p.box = box;
     CellFields out;
     EXPECT_THROW(compute_cell_fields_and_profiles(p, cells, {false, false, false}, all, x, v, w, species,
-                                                  std::vector<Virial>(3), 0.5, out),
+                                                  std::vector<Virial>(3), 0.5, out, scratch),
                  std::invalid_argument);
     p.bins = cells[2];
     EXPECT_THROW(compute_cell_fields_and_profiles(p, cells, {false, true, false}, all, x, v, w, species, // walls
-                                                  std::vector<Virial>(4), 0.5, out),                     // along y
+                                                  std::vector<Virial>(4), 0.5, out, scratch),            // along y
                  std::invalid_argument);
 }
 
@@ -239,6 +240,41 @@ TEST(CellFields, CellsRunXFastestAndEmptyCellsHaveNoFields) {
     ASSERT_EQ(g.values.size(), 2u);
     EXPECT_EQ(g.values[0].size(), 6u * 24u);
     EXPECT_EQ(g.values[1].size(), 24u);
+}
+
+TEST(CellFields, AScratchKeptFromSnapshotToSnapshotLeavesNothingBehind) {
+    // A full box, then one grain in it: every other cell must come out empty again, and the grain's
+    // own cell must hold it alone, bit for bit as from fresh arrays.
+    const std::array<int, 3> cells{3, 4, 2};
+    FlightSampling s;
+    s.box = {3.0, 8.0, 4.0};
+    s.weight = 5.0;
+    s.rotation = true;
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::normal_distribution<double> normal(0, 1);
+    std::vector<Vec3> x, v, w;
+    for (int i = 0; i < 400; ++i) {
+        x.push_back({u(rng) * s.box[0], u(rng) * s.box[1], u(rng) * s.box[2]});
+        v.push_back({normal(rng), normal(rng), normal(rng)});
+        w.push_back({normal(rng), normal(rng), normal(rng)});
+    }
+    CellFieldsScratch scratch;
+    CellFields full, single;
+    compute_cell_fields(s, cells, {false, false, false}, all, x, v, w, one_species(400, 2.0), full, scratch);
+    EXPECT_EQ(at(full, FieldQuantity::n, 0, 0, 0) > 0, true);
+    const std::vector<Vec3> x1 = {{2.5, 5.5, 3.1}}, v1 = {{1, -2, 0.5}}, w1 = {{0, 0, 3}}; // cell (2, 2, 1)
+    compute_cell_fields(s, cells, {false, false, false}, all, x1, v1, w1, one_species(1, 2.0), single, scratch);
+    const CellFields fresh = compute_cell_fields(s, cells, {false, false, false}, all, x1, v1, w1, one_species(1, 2.0));
+    ASSERT_EQ(single.values.size(), fresh.values.size());
+    for (std::size_t k = 0; k < fresh.values.size(); ++k) { // bit for bit, NaN included
+        ASSERT_EQ(single.values[k].size(), fresh.values[k].size());
+        EXPECT_EQ(std::memcmp(single.values[k].data(), fresh.values[k].data(), fresh.values[k].size() * sizeof(double)),
+                  0)
+            << "quantity " << k;
+    }
+    EXPECT_EQ(at(single, FieldQuantity::n, 0, 0, 0), 0.0);
+    EXPECT_EQ(at(single, FieldQuantity::T_tr, 2, 2, 1), 0.0);
 }
 
 } // namespace

@@ -19,10 +19,25 @@
 #include "roughgas/observables/profiles.hpp"
 
 #include <array>
+#include <memory>
 #include <string_view>
 #include <vector>
 
 namespace roughgas {
+
+namespace detail {
+struct BinSumsBuffers;
+}
+
+// What the pass behind the fields keeps from snapshot to snapshot: its per-cell sums (at every row,
+// fresh arrays of them would be faulted in and cleared anew). One per run, used by one thread at a time.
+struct CellFieldsScratch {
+    CellFieldsScratch();
+    ~CellFieldsScratch();
+    CellFieldsScratch(const CellFieldsScratch&) = delete;
+    CellFieldsScratch& operator=(const CellFieldsScratch&) = delete;
+    std::unique_ptr<detail::BinSumsBuffers> buffers;
+};
 
 // The unit, as the CSV headers name them ("1/volume", "length/time", ...).
 std::string_view field_unit(FieldQuantity q);
@@ -41,11 +56,12 @@ CellFields compute_cell_fields(const FlightSampling& s, const std::array<int, 3>
                                const std::array<bool, 3>& walled, const std::vector<FieldQuantity>& quantities,
                                const std::vector<Vec3>& x, const std::vector<Vec3>& v, const std::vector<Vec3>& w,
                                const std::vector<SpeciesBlock>& species);
-// The same into `out`, reusing its arrays' memory (a snapshot every row need not fault in fresh pages).
+// The same into `out`, reusing its arrays' memory and those of `scratch` (a snapshot every row need
+// not fault in fresh pages).
 void compute_cell_fields(const FlightSampling& s, const std::array<int, 3>& cells, const std::array<bool, 3>& walled,
                          const std::vector<FieldQuantity>& quantities, const std::vector<Vec3>& x,
                          const std::vector<Vec3>& v, const std::vector<Vec3>& w,
-                         const std::vector<SpeciesBlock>& species, CellFields& out);
+                         const std::vector<SpeciesBlock>& species, CellFields& out, CellFieldsScratch& scratch);
 
 // At a row that writes fields: the cell fields into `out` and, from the same pass over the grains,
 // the profiles of `g` (compute_profiles' result to round-off: each profile bin is a layer of cells,
@@ -57,6 +73,7 @@ std::vector<double> compute_cell_fields_and_profiles(const ProfileGeometry& g, c
                                                      const std::vector<FieldQuantity>& quantities,
                                                      const std::vector<Vec3>& x, const std::vector<Vec3>& v,
                                                      const std::vector<Vec3>& w, const std::vector<SpeciesBlock>& species,
-                                                     const std::vector<Virial>& virial, double dt, CellFields& out);
+                                                     const std::vector<Virial>& virial, double dt, CellFields& out,
+                                                     CellFieldsScratch& scratch);
 
 } // namespace roughgas
