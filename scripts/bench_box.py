@@ -14,8 +14,12 @@ on 1 thread, run alternately for --rounds rounds in that order with rough grains
 smooth grains on 1 thread run right before or after each of rough grains and 2 threads), the order
 reversed every other round, so that a drift of the machine's speed hits all alike.
 Reported per variant: the median and range of the wall time per particle and step (ns), and of the
-ratios rough/smooth, 1 thread/2 threads, nearest/random partners and brilliantov/smooth. The
-machine, date, commit and load are printed with the table (docs/performance.md).
+ratios rough/smooth, 1 thread/2 threads, nearest/random partners and brilliantov/smooth, twice:
+for whole runs (the process's start and the initial state included, which the ice deck's 120
+steps share out less than the others' 300), and for the steps alone: each variant also runs its
+first SHORT_STEPS steps right after its whole run, and the difference of the two runs' times is
+the cost of the steps beyond them, the start cancelled. The machine, date, commit and load are
+printed with the tables (docs/performance.md).
 """
 import argparse
 import os
@@ -28,6 +32,7 @@ from bench_common import box_deck, cpu_times, loadavg, machine, measured_line, t
 STEPS = 300
 TIME_STEP = 0.5
 ICE_STEPS = 120
+SHORT_STEPS = 10  # the short run that cancels the start in the steps-alone figures
 
 
 def deck(n, rough, partners="random"):
@@ -72,7 +77,7 @@ def main():
     os.makedirs(a.out, exist_ok=True)
     print(machine(), file=sys.stderr)
     load0, steal0 = loadavg(), cpu_times()
-    rows = []
+    rows, rows_steps = [], []
     for n in (int(float(x)) for x in a.sizes.split(",")):
         cases = {}
         for rough in (False, True):
@@ -94,32 +99,47 @@ def main():
                     ("smooth, 2 threads", cases[False], "2"), ("smooth, nearest, 1 thread", nearest, "1"),
                     ("brilliantov, 1 thread", ice, "1")]
         times = {v[0]: [] for v in variants}
+        steps_alone = {v[0]: [] for v in variants}
+        short = [f"run.end={SHORT_STEPS * TIME_STEP}", f"run.output_every={SHORT_STEPS * TIME_STEP}"]
         for r in range(a.rounds):
             order = variants if r % 2 == 0 else variants[::-1]
             for name, case, threads in order:
-                t = timed([roughgas, "run", case, "--out", os.path.join(a.out, "run"), "--force", "--quiet",
-                           "--threads", threads], "bench_box")
-                times[name].append(t / (n * (ICE_STEPS if case == ice else STEPS)) * 1e9)
-                print(f"  N = {n:.0e}, {name}, round {r + 1}: {times[name][-1]:.1f} ns", file=sys.stderr)
-
-        def fmt(x):
-            return f"{statistics.median(x):.1f} ({min(x):.1f}-{max(x):.1f})"
-
-        def ratio(p, q):
-            rs = [x / y for x, y in zip(times[p], times[q])]
-            return f"{statistics.median(rs):.2f} ({min(rs):.2f}-{max(rs):.2f})"
-        rows.append(f"| {n:.0e} | {fmt(times['smooth, 1 thread'])} | {fmt(times['rough, 1 thread'])} | "
-                    f"{fmt(times['smooth, 2 threads'])} | {ratio('rough, 1 thread', 'smooth, 1 thread')} | "
-                    f"{ratio('smooth, 1 thread', 'smooth, 2 threads')} | "
-                    f"{ratio('smooth, nearest, 1 thread', 'smooth, 1 thread')} | "
-                    f"{fmt(times['brilliantov, 1 thread'])} | {ratio('brilliantov, 1 thread', 'smooth, 1 thread')} |")
+                run = [roughgas, "run", case, "--out", os.path.join(a.out, "run"), "--force", "--quiet",
+                       "--threads", threads]
+                steps = ICE_STEPS if case == ice else STEPS
+                t = timed(run, "bench_box")
+                t_short = timed(run + [arg for s in short for arg in ("--set", s)], "bench_box")
+                times[name].append(t / (n * steps) * 1e9)
+                steps_alone[name].append((t - t_short) / (n * (steps - SHORT_STEPS)) * 1e9)
+                print(f"  N = {n:.0e}, {name}, round {r + 1}: {times[name][-1]:.1f} ns, steps alone "
+                      f"{steps_alone[name][-1]:.1f} ns", file=sys.stderr)
+        for table, ns in ((rows, times), (rows_steps, steps_alone)):
+            table.append(row(n, ns))
     print(measured_line(a.rounds, "wall ns per particle and step (whole runs: start, initial state, 300 "
                                   "steps, one row): median (min-max)", load0, steal0))
-    print("| N | smooth, 1 thread | rough, 1 thread | smooth, 2 threads | rough/smooth | 1 thread/2 threads "
-          "| nearest/random partners | brilliantov, 1 thread | brilliantov/smooth |")
-    print("|---|---|---|---|---|---|---|---|---|")
-    for r in rows:
-        print(r)
+    for title, table in (("whole runs", rows), (f"the steps alone (whole runs less their first {SHORT_STEPS} "
+                                                f"steps)", rows_steps)):
+        print(f"\n{title}:\n")
+        print("| N | smooth, 1 thread | rough, 1 thread | smooth, 2 threads | rough/smooth | 1 thread/2 threads "
+              "| nearest/random partners | brilliantov, 1 thread | brilliantov/smooth |")
+        print("|---|---|---|---|---|---|---|---|---|")
+        for r in table:
+            print(r)
+
+
+def row(n, times):
+    """A table row: the variants' ns per particle and step and their ratios, medians and ranges."""
+    def fmt(x):
+        return f"{statistics.median(x):.1f} ({min(x):.1f}-{max(x):.1f})"
+
+    def ratio(p, q):
+        rs = [x / y for x, y in zip(times[p], times[q])]
+        return f"{statistics.median(rs):.2f} ({min(rs):.2f}-{max(rs):.2f})"
+    return (f"| {n:.0e} | {fmt(times['smooth, 1 thread'])} | {fmt(times['rough, 1 thread'])} | "
+            f"{fmt(times['smooth, 2 threads'])} | {ratio('rough, 1 thread', 'smooth, 1 thread')} | "
+            f"{ratio('smooth, 1 thread', 'smooth, 2 threads')} | "
+            f"{ratio('smooth, nearest, 1 thread', 'smooth, 1 thread')} | "
+            f"{fmt(times['brilliantov, 1 thread'])} | {ratio('brilliantov, 1 thread', 'smooth, 1 thread')} |")
 
 
 if __name__ == "__main__":
