@@ -1,5 +1,5 @@
-// The default thread count: OMP_NUM_THREADS when set, else what the process may use (its affinity
-// mask, the cgroup's CPU quota, SLURM_CPUS_PER_TASK).
+// The default thread count: what the process may use (its affinity mask, the CPU quotas of its
+// cgroup and those above it, SLURM_CPUS_PER_TASK), or OMP_NUM_THREADS when that is smaller.
 #include "roughgas/core/available_cpus.hpp"
 
 #include <gtest/gtest.h>
@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <optional>
 #include <string>
 
@@ -62,9 +64,70 @@ TEST(AvailableCpus, CgroupQuota) {
     EXPECT_EQ(cpus_of_cpu_max("12x 100000"), std::nullopt);
 }
 
-TEST(AvailableCpus, OmpNumThreadsIsTheUsersChoice) {
-    const ScopedEnv omp("OMP_NUM_THREADS", "3");
-    EXPECT_EQ(default_threads(), 3);
+// A cgroup tree under a temporary root, with a file's text at a relative path.
+class CgroupTree {
+  public:
+    CgroupTree() : root_(std::filesystem::temp_directory_path() / ("roughgas_cgroup_" + std::to_string(::getpid()))) {
+        std::filesystem::remove_all(root_);
+    }
+    ~CgroupTree() { std::filesystem::remove_all(root_); }
+    void put(const std::string& rel, const std::string& text) const {
+        const std::filesystem::path p = root_ / rel;
+        std::filesystem::create_directories(p.parent_path());
+        std::ofstream(p) << text;
+    }
+    const std::filesystem::path& root() const { return root_; }
+
+  private:
+    std::filesystem::path root_;
+};
+
+TEST(AvailableCpus, CgroupV2QuotaOfTheProcesssCgroupOrOneAboveIt) {
+    // A systemd service with CPUQuota=150% inside a slice limited to 4 CPUs, on cgroup v2.
+    CgroupTree t;
+    t.put("cgroup.controllers", "cpu memory\n");
+    t.put("system.slice/cpu.max", "400000 100000\n");
+    t.put("system.slice/run.service/cpu.max", "150000 100000\n");
+    EXPECT_EQ(cgroup_quota_cpus("0::/system.slice/run.service\n", t.root()), 2);
+    // The slice's quota binds a job below it that has none of its own.
+    t.put("system.slice/job/cpu.max", "max 100000\n");
+    EXPECT_EQ(cgroup_quota_cpus("0::/system.slice/job\n", t.root()), 4);
+    // No quota anywhere on the way up: none.
+    t.put("user.slice/cpu.max", "max 100000\n");
+    EXPECT_EQ(cgroup_quota_cpus("0::/user.slice/session-1.scope\n", t.root()), std::nullopt);
+    // The root's quota (a container's own cgroup namespace shows "/").
+    t.put("cpu.max", "300000 100000\n");
+    EXPECT_EQ(cgroup_quota_cpus("0::/\n", t.root()), 3);
+    EXPECT_EQ(cgroup_quota_cpus("", t.root()), 3); // /proc/self/cgroup unreadable: the roots
+}
+
+TEST(AvailableCpus, CgroupV1QuotaOfTheCpuControllersHierarchy) {
+    // A hybrid system: v1's cpu controller (mounted as cpu,cpuacct) and an empty v2 tree in unified.
+    CgroupTree t;
+    t.put("unified/cgroup.procs", "");
+    t.put("cpu,cpuacct/slurm/uid_1/job_7/cpu.cfs_quota_us", "200000\n");
+    t.put("cpu,cpuacct/slurm/uid_1/job_7/cpu.cfs_period_us", "100000\n");
+    t.put("cpu,cpuacct/slurm/cpu.cfs_quota_us", "-1\n");
+    t.put("cpu,cpuacct/slurm/cpu.cfs_period_us", "100000\n");
+    const std::string self = "12:memory:/slurm/uid_1/job_7\n4:cpu,cpuacct:/slurm/uid_1/job_7\n0::/slurm/uid_1/job_7\n";
+    EXPECT_EQ(cgroup_quota_cpus(self, t.root()), 2);
+    // Only the cpu controller's hierarchy counts: a quota-like file elsewhere is not read.
+    EXPECT_EQ(cgroup_quota_cpus("12:memory:/slurm/uid_1/job_7\n", t.root()), std::nullopt);
+}
+
+TEST(AvailableCpus, OmpNumThreadsLowersTheDefaultButNeverRaisesIt) {
+    const ScopedEnv slurm("SLURM_CPUS_PER_TASK", nullptr);
+    int available = 0;
+    {
+        const ScopedEnv omp("OMP_NUM_THREADS", nullptr);
+        available = default_threads();
+    }
+    {
+        const ScopedEnv omp("OMP_NUM_THREADS", "1");
+        EXPECT_EQ(default_threads(), 1);
+    }
+    const ScopedEnv omp("OMP_NUM_THREADS", "4096");
+    EXPECT_EQ(default_threads(), available);
 }
 
 TEST(AvailableCpus, NeverMoreThanTheAffinityMaskOrSlurmsCpusPerTask) {
