@@ -7,7 +7,9 @@
 // exactly once: anything else is refused with exit 2 before anything is written. OUT/checkpoint
 // then holds the run and every finished replica's file, and the CSVs are written as
 // `roughgas run --resume OUT` writes them for a run whose replicas have all finished (the rows of
-// each replica, combined in replica order: the same bytes as the run in one process).
+// each replica, combined in replica order: the same bytes as the run in one process). Each
+// replica's final state (run.save_state) and cell fields come from its range's directory: the
+// same files, the fields' XDMF sidecar naming the HDF5 files by their new absolute paths.
 #include "commands.hpp"
 #include "replica_files.hpp"
 
@@ -15,12 +17,17 @@
 
 #include "roughgas/io/atomic_file.hpp"
 #include "roughgas/io/checkpoint_file.hpp"
+#include "roughgas/io/fields_series.hpp"
 #include "roughgas/io/input_error.hpp"
+#include "roughgas/io/state_file.hpp"
 
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -45,6 +52,52 @@ RunCheckpoint read_run(const fs::path& dir) {
     } catch (const std::exception& e) {
         throw InputError(file.string(), "merge", fmt::format("{}: cannot merge: {}", file.string(), e.what()));
     }
+}
+
+std::string read_bytes(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in)
+        throw std::runtime_error("cannot read " + file.string());
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// A sidecar's text with every HDF5 file it names moved into `dir` (same file names): the range's
+// run named them by the absolute paths it had, which need not be those of the merged output.
+std::string xdmf_in(const std::string& text, const fs::path& dir) {
+    static const std::string tag = "Format=\"HDF\">";
+    std::string out;
+    std::size_t at = 0;
+    for (std::size_t p; (p = text.find(tag, at)) != std::string::npos;) {
+        const std::size_t path = p + tag.size();
+        const std::size_t end = text.find(":/", path); // FILE:/DATASET
+        if (end == std::string::npos)
+            break;
+        const std::string file = fs::path(text.substr(path, end - path)).filename().string();
+        out.append(text, at, path - at);
+        out += (dir / file).string();
+        at = end;
+    }
+    out.append(text, at, std::string::npos);
+    return out;
+}
+
+// Replica r's final state and cell fields, if its range wrote them, into `out`.
+void copy_replica_files(const fs::path& range, const fs::path& out, std::uint64_t r) {
+    if (const fs::path from = state_file_path(range, r); fs::exists(from)) {
+        fs::create_directories(state_dir(out));
+        write_file_atomically(state_file_path(out, r), read_bytes(from));
+    }
+    const int replica = static_cast<int>(r);
+    const fs::path from = fields_replica_dir(range, replica);
+    if (!fs::is_directory(from))
+        return;
+    const fs::path to = fs::absolute(fields_replica_dir(out, replica));
+    fs::create_directories(to);
+    for (const auto& e : fs::directory_iterator(from))
+        if (e.is_regular_file() && e.path().extension() == ".h5")
+            write_file_atomically(to / e.path().filename(), read_bytes(e.path()));
+    if (const fs::path xdmf = fields_xdmf_path(range, replica); fs::exists(xdmf))
+        write_file_atomically(fields_xdmf_path(out, replica), xdmf_in(read_bytes(xdmf), to));
 }
 
 int run_merge(const MergeOptions& o) {
@@ -101,6 +154,11 @@ int run_merge(const MergeOptions& o) {
 
     // OUT: a checkpoint of the whole run with every replica finished; then its CSVs.
     const fs::path out = o.out;
+    for (const std::string& d : o.dirs) // its --force clears what the ranges' files are read from
+        if (fs::exists(out) && fs::equivalent(out, d))
+            throw InputError(out.string(), "--out",
+                             fmt::format("--out {}: is one of the ranges' directories (merge into another)",
+                                         out.string()));
     {
         OutputDirLock lock;
         lock.lock_if_exists(out);
@@ -115,14 +173,18 @@ int run_merge(const MergeOptions& o) {
         lock.lock(out);
         for (const auto& e : fs::directory_iterator(checkpoint_dir(out))) // --force: no stale replica files
             fs::remove(e.path());
-        fs::remove_all(replicas_dir(out)); // nor another run's replicas' rows
+        fs::remove_all(replicas_dir(out)); // nor another run's replicas' rows, states or fields
+        fs::remove_all(state_dir(out));
+        fs::remove_all(fields_dir(out));
         RunCheckpoint whole = runs[0];
         whole.replica_from = 0;
         whole.replica_to = K;
         whole.checkpoint_every = 0;
         write_file_atomically(run_checkpoint_path(out), encode_checkpoint(whole));
-        for (std::uint64_t r = 0; r < K; ++r)
+        for (std::uint64_t r = 0; r < K; ++r) {
             write_file_atomically(replica_checkpoint_path(out, r), replica_bytes[r]);
+            copy_replica_files(o.dirs[static_cast<std::size_t>(owner[r])], out, r);
+        }
     } // the lock is released: the resume below takes it again
     return resume_finished_run(out.string(), o.threads, o.quiet);
 }

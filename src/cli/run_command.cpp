@@ -233,7 +233,13 @@ RunSetup resume_run(const RunOptions& o, bool root) {
 
 int run_run(const RunOptions& o, const Communicator& comm) {
     // First: the signals are blocked in every thread started from here on (the OpenMP pool too).
-    const StopSignals signals("run", "stopping at the next step, writing a checkpoint and the CSV so far",
+    // Under a launcher rank 0 writes the CSV only once every rank has stopped: when the stop comes
+    // because the launcher ends the job after a rank died, there is none to write.
+    const StopSignals signals("run",
+                              comm.under_launcher()
+                                  ? "stopping at the next step and writing the replicas' checkpoints (rank 0 "
+                                    "writes the CSV so far once every rank has stopped)"
+                                  : "stopping at the next step, writing a checkpoint and the CSV so far",
                               !comm.under_launcher());
     const bool root = comm.is_root();
     const bool quiet = o.quiet || !root; // the progress and the report are rank 0's

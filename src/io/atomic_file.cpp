@@ -1,4 +1,4 @@
-// POSIX write-fsync-rename; std::ofstream cannot fsync.
+// POSIX write-fsync-rename (the file unnamed until complete where Linux allows); std::ofstream cannot fsync.
 #include "roughgas/io/atomic_file.hpp"
 
 #include <cerrno>
@@ -12,6 +12,17 @@ namespace {
 
 [[noreturn]] void fail(const std::string& what, const std::filesystem::path& path, int err) {
     throw std::system_error(err, std::generic_category(), what + " " + path.string());
+}
+
+void write_all(int fd, std::string_view data, const std::filesystem::path& path) {
+    while (!data.empty()) {
+        const ssize_t n = ::write(fd, data.data(), data.size());
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n < 0)
+            fail("cannot write", path, errno);
+        data.remove_prefix(static_cast<std::size_t>(n));
+    }
 }
 
 // Closes the descriptor and, unless released, removes the temporary file: every exit path of
@@ -38,16 +49,7 @@ class TemporaryFile {
             ::unlink(path_.c_str());
     }
 
-    void write(std::string_view data) {
-        while (!data.empty()) {
-            const ssize_t n = ::write(fd_, data.data(), data.size());
-            if (n < 0 && errno == EINTR)
-                continue;
-            if (n < 0)
-                fail("cannot write", path_, errno);
-            data.remove_prefix(static_cast<std::size_t>(n));
-        }
-    }
+    void write(std::string_view data) { write_all(fd_, data, path_); }
 
     // Data on disk before the rename makes it visible, so the new name never shows a partial file.
     void commit(const std::filesystem::path& target) {
@@ -86,10 +88,49 @@ std::filesystem::path temporary_path(const std::filesystem::path& path) {
     return tmp;
 }
 
+// Writes `contents` to an unnamed file in `path`'s directory (O_TMPFILE) and gives it the
+// temporary name only once it is complete and synced, then renames it over `path`: a process
+// killed while it writes (SIGKILL, a lost MPI rank's job torn down) leaves no file at all, where a
+// named temporary would stay behind half-written. False when the file system has no unnamed files
+// (NFS, older kernels): the caller then writes a named temporary.
+bool write_unnamed_then_rename(const std::filesystem::path& path, std::string_view contents) {
+    const std::filesystem::path dir = path.parent_path().empty() ? "." : path.parent_path();
+    const int fd = ::open(dir.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0644);
+    if (fd < 0)
+        return false;
+    struct Closer {
+        int fd;
+        ~Closer() { ::close(fd); }
+    } closer{fd};
+    write_all(fd, contents, path);
+    if (::fsync(fd) != 0)
+        fail("cannot sync", path, errno);
+    const std::filesystem::path tmp = temporary_path(path);
+    const std::string self = "/proc/self/fd/" + std::to_string(fd);
+    int linked = ::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, tmp.c_str(), AT_SYMLINK_FOLLOW);
+    if (linked != 0 && errno == EEXIST) { // a temporary of an earlier process with this process id
+        ::unlink(tmp.c_str());
+        linked = ::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, tmp.c_str(), AT_SYMLINK_FOLLOW);
+    }
+    if (linked != 0) {
+        if (errno == ENOENT) // no /proc: nothing was written under a name, the caller writes one
+            return false;
+        fail("cannot create", tmp, errno);
+    }
+    if (::rename(tmp.c_str(), path.c_str()) != 0) {
+        const int err = errno;
+        ::unlink(tmp.c_str());
+        fail("cannot rename to", path, err);
+    }
+    return true;
+}
+
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents) {
-    TemporaryFile tmp(temporary_path(path));
-    tmp.write(contents);
-    tmp.commit(path);
+    if (!write_unnamed_then_rename(path, contents)) {
+        TemporaryFile tmp(temporary_path(path));
+        tmp.write(contents);
+        tmp.commit(path);
+    }
     sync_directory(path.parent_path());
 }
 

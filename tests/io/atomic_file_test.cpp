@@ -6,6 +6,12 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <string>
 #include <system_error>
 
 namespace roughgas {
@@ -39,6 +45,31 @@ TEST(AtomicFile, FailureLeavesTargetAndNoTemporaryFile) {
     EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"busy"});
     EXPECT_THROW(write_file_atomically(dir / "missing" / "a.csv", "x"), std::system_error);
     EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"busy"});
+}
+
+TEST(AtomicFile, AProcessKilledWhileWritingLeavesNothing) {
+    // A child whose file size limit stops it mid-write (SIGXFSZ ends it as a kill would): neither
+    // the target nor a temporary file may be left, and an earlier version of the file stays whole.
+    const test::ScratchDir dir;
+    const fs::path p = dir / "state.bin";
+    write_file_atomically(p, "earlier\n");
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        const rlimit limit{65536, 65536};
+        ::setrlimit(RLIMIT_FSIZE, &limit);
+        try {
+            write_file_atomically(p, std::string(1 << 20, 'x'));
+        } catch (...) {
+            ::_exit(3); // the write failed without a signal: not what this test looks at
+        }
+        ::_exit(0);
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGXFSZ) << "status " << status;
+    EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"state.bin"});
+    EXPECT_EQ(test::read_file(p), "earlier\n");
 }
 
 TEST(CsvWriter, ProvenanceHeaderAndFullPrecision) {

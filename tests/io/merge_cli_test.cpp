@@ -89,6 +89,70 @@ rate = 1.0
         EXPECT_EQ(test::read_file(dir / "m" / file), test::read_file(dir / "whole" / file)) << file;
 }
 
+TEST(MergeCli, ABoxRunsStatesAndFieldsMergeToo) {
+    // Every file a box run with run.save_state and [fields] writes: each replica's final state and
+    // cell fields, the sidecar naming the merged directory's HDF5 files.
+    const test::ScratchDir dir;
+    const fs::path f = dir.write("box.toml", R"([run]
+particles = 2000
+replicas = 3
+end = 2.0
+output_every = 1.0
+density = 0.02
+seed = 4
+save_state = true
+
+[[species]]
+mass = 1.0
+radius = 0.5
+
+[collision]
+model = "constant"
+alpha = 0.9
+beta = 0.5
+
+[domain]
+size = [30.0, 30.0, 30.0]
+cells = [4, 4, 4]
+allow_coarse = true
+
+[fields]
+quantities = ["n", "P"]
+replicas = 3
+)");
+    const std::string run = "run " + q(f) + " --quiet --out ";
+    ASSERT_EQ(test::run_roughgas(run + q(dir / "whole"), dir).status, 0);
+    ASSERT_EQ(test::run_roughgas(run + q(dir / "a") + " --replicas 0:2", dir).status, 0);
+    ASSERT_EQ(test::run_roughgas(run + q(dir / "b") + " --replicas 2:3", dir).status, 0);
+    const test::CommandResult m =
+        test::run_roughgas("merge " + q(dir / "b") + " " + q(dir / "a") + " --quiet --out " + q(dir / "m"), dir);
+    ASSERT_EQ(m.status, 0) << m.err;
+    const auto relative = [](std::string text, const fs::path& run_dir) { // the sidecar, paths from its run
+        const std::string abs = fs::absolute(run_dir).string();
+        for (std::size_t p; (p = text.find(abs)) != std::string::npos;)
+            text.replace(p, abs.size(), "RUN");
+        return text;
+    };
+    for (int r = 0; r < 3; ++r) {
+        const std::string R = std::to_string(r);
+        for (const std::string file : {"state/replica_" + R + ".bin", "fields/replica_" + R + "/row_000000.h5",
+                                       "fields/replica_" + R + "/row_000002.h5"})
+            EXPECT_EQ(test::read_file(dir / "m" / file), test::read_file(dir / "whole" / file)) << file;
+        const std::string xmf = "fields/replica_" + R + ".xmf";
+        EXPECT_EQ(relative(test::read_file(dir / "m" / xmf), dir / "m"),
+                  relative(test::read_file(dir / "whole" / xmf), dir / "whole"))
+            << xmf;
+        EXPECT_NE(test::read_file(dir / "m" / xmf).find(fs::absolute(dir / "m").string()), std::string::npos);
+    }
+    for (const char* file : {"moments.csv", "profiles.csv"})
+        EXPECT_EQ(test::read_file(dir / "m" / file), test::read_file(dir / "whole" / file)) << file;
+    // Merging into a range's own directory would clear what it reads from: refused.
+    const test::CommandResult into =
+        test::run_roughgas("merge " + q(dir / "a") + " " + q(dir / "b") + " --quiet --force --out " + q(dir / "a"), dir);
+    EXPECT_EQ(into.status, 2);
+    EXPECT_NE(into.err.find("one of the ranges"), std::string::npos) << into.err;
+}
+
 TEST(MergeCli, RefusesWhatIsNotOneWholeRun) {
     const test::ScratchDir dir;
     const fs::path f = dir.write("hcs.toml", cooling_case());

@@ -6,9 +6,12 @@
 
 namespace roughgas {
 
-// Writes `contents` to `path.tmp.<pid>` in the same directory (so the rename cannot cross file
-// systems), fsyncs it, renames it over `path` and fsyncs the directory. On failure the temporary
-// file is removed and std::system_error is thrown; `path` is then untouched.
+// Writes `contents` to a file in the same directory as `path` (so the rename cannot cross file
+// systems), fsyncs it, renames it over `path` and fsyncs the directory. The file is unnamed while
+// it is written (Linux O_TMPFILE) and named `path.tmp.<pid>` only once complete, so a process
+// killed mid-write leaves nothing behind; where the file system has no unnamed files it is named
+// `path.tmp.<pid>` from the start. On failure the temporary file is removed and std::system_error
+// is thrown; `path` is then untouched.
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents);
 
 // For a file another library writes (HDF5): `tmp`, complete and closed, is fsynced, renamed over
