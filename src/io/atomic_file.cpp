@@ -112,11 +112,8 @@ bool write_unnamed_then_rename(const std::filesystem::path& path, std::string_vi
         ::unlink(tmp.c_str());
         linked = ::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, tmp.c_str(), AT_SYMLINK_FOLLOW);
     }
-    if (linked != 0) {
-        if (errno == ENOENT) // no /proc: nothing was written under a name, the caller writes one
-            return false;
-        fail("cannot create", tmp, errno);
-    }
+    if (linked != 0) // no /proc, or a file system that cannot name it: the caller writes a named file
+        return false;
     if (::rename(tmp.c_str(), path.c_str()) != 0) {
         const int err = errno;
         ::unlink(tmp.c_str());
