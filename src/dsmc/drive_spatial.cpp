@@ -56,7 +56,8 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
     const auto wall0 = std::chrono::steady_clock::now();
     const DomainSpec& domain = *spec.domain;
     SpatialEngine<Policy, General> engine(domain, blocks, std::move(policies), spec.density, spec.seed,
-                                 static_cast<std::uint64_t>(replica), std::max(1, spec.threads));
+                                          static_cast<std::uint64_t>(replica), std::max(1, spec.threads),
+                                          spec.kernel);
     const double N = static_cast<double>(engine.particles());
     const std::size_t S = blocks.size();
     std::vector<SpeciesSlice> slices(S);
@@ -68,7 +69,8 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
     const std::string kernel = std::string("box of ") + std::to_string(engine.cells()) + " cells" +
                                (domain.has_walls() ? ", walls" : "") + (domain.has_gravity() ? ", gravity" : "") +
                                (domain.lees_edwards() ? ", Lees-Edwards" : "") +
-                               ", " + std::string(Policy::name);
+                               (spec.kernel == CollisionKernel::maxwell ? ", Maxwell kernel" : "") + ", " +
+                               std::string(Policy::name);
 
     std::vector<double> outputs = spec.output_times;
     if (outputs.empty())

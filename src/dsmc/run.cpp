@@ -73,7 +73,6 @@ void validate(const RunSpec& spec) {
                 "a sheared box has Lees-Edwards boundaries at the shear rate, and only a sheared box");
         require(!spec.domain->lees_edwards() || (!spec.domain->walled(0) && !spec.domain->walled(1)),
                 "Lees-Edwards boundaries need x and y periodic");
-        require(spec.kernel == CollisionKernel::hard_sphere, "a spatially resolved run collides hard spheres");
         require(spec.histogram_times.empty(), "a spatially resolved run writes no histograms");
         require(spec.domain->profile_axis >= 0 && spec.domain->profile_axis <= 2, "the profile axis must be 0, 1 or 2");
         require(!spec.domain->spectra || (!spec.domain->has_walls() && !spec.domain->lees_edwards()),

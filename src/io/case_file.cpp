@@ -965,8 +965,6 @@ class Builder {
                                     "Lees-Edwards boundaries along y and flows along x, both periodic (walls "
                                     "along z only)",
                                     a));
-        if (c.run.kernel == CollisionKernel::maxwell)
-            add("run.kernel", "run.kernel = \"maxwell\" with [domain]: cells collide hard spheres only");
         if (c.run.histogram_every > 0)
             add("run.histogram_every", "run.histogram_every with [domain]: histograms are written for the "
                                        "homogeneous gas only (set it to 0)");

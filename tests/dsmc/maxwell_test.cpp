@@ -85,6 +85,44 @@ TEST(Maxwell, RoughGasFollowsTheExactTemperatureOdes) {
     }
 }
 
+// `s` in a periodic cube of 3 mean free paths (of unit diameters, n = 0.02) in cells of half a mean
+// free path: far below the instability length, so the gas stays uniform and follows the ODEs.
+RunSpec in_a_small_box(RunSpec s) {
+    s.density = 0.02;
+    const double lambda = 1.0 / (std::sqrt(2.0) * std::numbers::pi * s.density);
+    DomainSpec d;
+    d.size = {3 * lambda, 3 * lambda, 3 * lambda};
+    d.cells = {6, 6, 6};
+    s.domain = d;
+    return s;
+}
+
+TEST(Maxwell, ABoxOfCellsFollowsTheExactTemperatureOdes) {
+    // The first test's gas in a box: the cells' Maxwell kernel (every pair of a cell at the constant
+    // rate, the cell for the volume) gives each grain the homogeneous rate, so the same ODEs hold.
+    // Same tolerances: within 4 standard errors of 1, and within 1 %.
+    RunSpec s;
+    SpeciesSpec a;
+    a.rotational_temperature = 0.1;
+    s.species = {a};
+    s.pairs = {ConstantRestitution{0.8, 0.4}};
+    s.particles = 20000;
+    s.output_times = {1, 2, 4, 8};
+    s.end = 8;
+    s.seed = 3;
+    s.kernel = CollisionKernel::maxwell;
+    s = in_a_small_box(s);
+    const auto r = ratios(s, 8, {"T_tr", "T_rot"});
+    for (std::size_t k = 0; k < r.size(); ++k) {
+        std::printf("  box, %g collisions per particle: T_tr/ODE = %.5f +- %.5f, T_rot/ODE = %.5f +- %.5f\n",
+                    s.output_times[k], r[k][0].mean, r[k][0].err, r[k][1].mean, r[k][1].err);
+        for (const MeanErr& m : r[k]) {
+            EXPECT_NEAR(m.mean, 1.0, 4 * m.err) << "row " << k;
+            EXPECT_NEAR(m.mean, 1.0, 0.01) << "row " << k;
+        }
+    }
+}
+
 TEST(Maxwell, MixtureFollowsTheExactTemperatureOdes) {
     // Binary mixture, unequal masses, radii, q and temperatures, a different (alpha, beta) per pair:
     // per-species T_tr and T_rot at 1, 3 collisions per particle. N = 2e4, 8 replicas; within 4
@@ -108,13 +146,16 @@ TEST(Maxwell, MixtureFollowsTheExactTemperatureOdes) {
     s.seed = 5;
     s.kernel = CollisionKernel::maxwell;
     const std::vector<std::string> cols = {"T_tr.a", "T_tr.b", "T_rot.a", "T_rot.b"};
-    const auto r = ratios(s, 8, cols);
-    for (std::size_t k = 0; k < r.size(); ++k)
-        for (std::size_t c = 0; c < cols.size(); ++c) {
-            std::printf("  %g collisions per particle: %s/ODE = %.5f +- %.5f\n", s.output_times[k],
-                        cols[c].c_str(), r[k][c].mean, r[k][c].err);
-            EXPECT_NEAR(r[k][c].mean, 1.0, 4 * r[k][c].err) << cols[c] << " row " << k;
-        }
+    // The homogeneous gas, and the same in a small box (the pairs' rates thinned from the largest).
+    for (const bool box : {false, true}) {
+        const auto r = ratios(box ? in_a_small_box(s) : s, 8, cols);
+        for (std::size_t k = 0; k < r.size(); ++k)
+            for (std::size_t c = 0; c < cols.size(); ++c) {
+                std::printf("  %s%g collisions per particle: %s/ODE = %.5f +- %.5f\n", box ? "box, " : "",
+                            s.output_times[k], cols[c].c_str(), r[k][c].mean, r[k][c].err);
+                EXPECT_NEAR(r[k][c].mean, 1.0, 4 * r[k][c].err) << cols[c] << " row " << k << " box " << box;
+            }
+    }
 }
 
 TEST(Maxwell, CollisionRateDoesNotDependOnTheTemperature) {

@@ -124,11 +124,15 @@ template <class Policy, bool General = false> class SpatialEngine {
     // `policies[k]` is the restitution policy of species pair k (pair_index order, run_spec.hpp).
     // The initial state: positions uniform in the box (stream initial_position, one per species),
     // velocities and spins Maxwellian (dsmc/init.hpp), the total momentum removed.
+    // `kernel`: hard spheres, or the Maxwell kernel of the homogeneous engine (every pair of species
+    // (a, b) in a cell collides at the constant rate pi sigma_ab^2 u_ab F / V_c, u_ab from the
+    // species' initial temperatures, the impact normal uniform on the approaching hemisphere).
     SpatialEngine(const DomainSpec& domain, std::vector<SpeciesBlock> blocks, std::vector<Policy> policies,
-                  double density, std::uint64_t seed, std::uint64_t replica, int threads)
+                  double density, std::uint64_t seed, std::uint64_t replica, int threads,
+                  CollisionKernel kernel = CollisionKernel::hard_sphere)
         : domain_(domain), blocks_(std::move(blocks)), types_(make_pair_types(blocks_)),
           policies_(std::move(policies)), density_(density), seed_(seed), replica_(replica),
-          team_(std::make_unique<WorkerTeam>(std::max(1, threads))) {
+          team_(std::make_unique<WorkerTeam>(std::max(1, threads))), maxwell_(kernel == CollisionKernel::maxwell) {
         if (policies_.size() != types_.size())
             throw std::invalid_argument("SpatialEngine: one policy per species pair needed");
         if (!General && domain_.general_flight())
@@ -155,8 +159,15 @@ template <class Policy, bool General = false> class SpatialEngine {
             throw std::invalid_argument("SpatialEngine: at least two particles needed");
         if (particles_ >= (std::size_t{1} << 32) || cells_ >= (std::size_t{1} << 32))
             throw std::invalid_argument("SpatialEngine: at most 2^32 - 1 grains and cells (32-bit offsets)");
-        for (const PairType& t : types_)
+        for (const PairType& t : types_) {
             cs_max_ = std::max(cs_max_, t.pc.cross_section);
+            // u_ab = sqrt((8/pi)(T_a/m_a + T_b/m_b)) at the initial temperatures (observables/theory.hpp).
+            const double u = std::sqrt(8.0 / std::numbers::pi *
+                                       (blocks_[t.a].temperature / blocks_[t.a].grain.mass +
+                                        blocks_[t.b].temperature / blocks_[t.b].grain.mass));
+            maxwell_rate_.push_back(t.pc.cross_section * u);
+            maxwell_rate_max_ = std::max(maxwell_rate_max_, maxwell_rate_.back());
+        }
         for (std::vector<Vec3>* a : {&x_, &v_, &w_})
             resize_on_huge_pages(*a, particles_);
         if (domain_.profile_axis < 0 || domain_.profile_axis > 2)
@@ -262,8 +273,12 @@ template <class Policy, bool General = false> class SpatialEngine {
             const std::size_t end = std::min(cells_, (u + 1) * cells_per_unit);
             Unit& unit = local[u];
             for (std::size_t c = u * cells_per_unit; c < end; ++c) {
-                unit.collisions += nearest ? collide_cell<true>(c, dt, rng, unit.observer)
-                                           : collide_cell<false>(c, dt, rng, unit.observer);
+                if (maxwell_)
+                    unit.collisions += nearest ? collide_cell<true, true>(c, dt, rng, unit.observer)
+                                               : collide_cell<false, true>(c, dt, rng, unit.observer);
+                else
+                    unit.collisions += nearest ? collide_cell<true, false>(c, dt, rng, unit.observer)
+                                               : collide_cell<false, false>(c, dt, rng, unit.observer);
                 tally_cell(c);
             }
         });
@@ -330,9 +345,12 @@ template <class Policy, bool General = false> class SpatialEngine {
                 const double* f = &total[(b * S + s) * fields];
                 const double n = f[0];
                 in_bin += n;
-                // About the species' mean velocity in the slab (walls and gravity make flows).
+                // About the species' mean velocity in the slab (walls and gravity make flows); the
+                // Maxwell kernel's rates stay those of the initial temperatures.
                 const Vec3 mean = n > 0 ? (1.0 / n) * Vec3{f[1], f[2], f[3]} : Vec3{};
-                T_over_m[s] = n > 0 ? std::max(0.0, f[4] / n - norm2(mean)) / 3.0 : 0.0;
+                T_over_m[s] = maxwell_            ? blocks_[s].temperature / blocks_[s].grain.mass
+                              : n > 0 ? std::max(0.0, f[4] / n - norm2(mean)) / 3.0
+                                      : 0.0;
             }
             if (in_bin < 2)
                 continue;
@@ -836,8 +854,10 @@ template <class Policy, bool General = false> class SpatialEngine {
         return j;
     }
 
-    // Collisions of cell c for a time dt (the header's kernel); returns how many.
-    template <bool Nearest, class Observer>
+    // Collisions of cell c for a time dt (the header's kernel; with Maxwell, the Maxwell kernel:
+    // candidates at the rate of the largest pi sigma_ab^2 u_ab, accepted with the pair's share of
+    // it, no velocity bound); returns how many.
+    template <bool Nearest, bool Maxwell, class Observer>
     std::int64_t collide_cell(std::size_t c, double dt, CollisionRng& rng, Observer& obs) {
         const std::size_t S = blocks_.size();
         Virial& virial = cell_virial_[c];
@@ -854,12 +874,14 @@ template <class Policy, bool General = false> class SpatialEngine {
             return 0;
         u = (1.0 / static_cast<double>(n)) * u;
         double b = 0;
-        for (std::size_t s = 0; s < S; ++s) {
-            const auto [first, last] = cell_range(s, c);
-            for (std::size_t i = first; i < last; ++i)
-                b = std::max(b, norm2(v_[i] - u));
+        if constexpr (!Maxwell) {
+            for (std::size_t s = 0; s < S; ++s) {
+                const auto [first, last] = cell_range(s, c);
+                for (std::size_t i = first; i < last; ++i)
+                    b = std::max(b, norm2(v_[i] - u));
+            }
+            b = std::sqrt(b);
         }
-        b = std::sqrt(b);
         // Lambda per unit g_max: pairs x pi sigma_max^2 / V_c with V_c = N / (n C) (simulated units).
         const double rate_per_g =
             0.5 * static_cast<double>(n) * static_cast<double>(n - 1) * cs_max_ * density_ *
@@ -867,7 +889,8 @@ template <class Policy, bool General = false> class SpatialEngine {
         std::int64_t done = 0;
         double t = 0;
         for (;;) {
-            const double g_max = 2.0 * b;
+            // The Maxwell kernel's speed u_max = max (pi sigma_ab^2 u_ab) / (pi sigma_max^2) in place of g_max.
+            const double g_max = Maxwell ? maxwell_rate_max_ / cs_max_ : 2.0 * b;
             if (!(g_max > 0))
                 return done; // every grain at the cell's mean velocity: no pair approaches
             t += -std::log(uniform01_open0(rng)) / (rate_per_g * g_max);
@@ -890,16 +913,28 @@ template <class Policy, bool General = false> class SpatialEngine {
             const std::size_t type = S == 1 ? 0 : pair_index(sa, sb, S);
             const PairConstants& pc = types_[type].pc;
             const Vec3 g_c = v_[i] - v_[j];
-            const double g = std::sqrt(norm2(g_c));
-            if (!(uniform01(rng) * cs_max_ * g_max < pc.cross_section * g))
-                continue;
             const Vec3 v_before = v_[i];
-            if constexpr (rough) {
-                const Vec3 normal = sample_impact_normal(rng, g_c, g);
-                obs(collide(pc, policies_[type], v_[i], w_[i], v_[j], w_[j], normal), type);
+            if constexpr (Maxwell) {
+                if (types_.size() > 1 && !(uniform01(rng) * maxwell_rate_max_ < maxwell_rate_[type]))
+                    continue;
+                Vec3 normal = uniform_direction(rng);
+                if (dot(normal, g_c) > 0) // onto the approaching hemisphere: uniform there
+                    normal = -1.0 * normal;
+                if constexpr (rough)
+                    obs(collide(pc, policies_[type], v_[i], w_[i], v_[j], w_[j], normal), type);
+                else
+                    obs(collide(pc, policies_[type], v_[i], v_[j], normal), type);
             } else {
-                const Vec3 g_N = sample_impact_normal_part(rng, g_c, g);
-                obs(collide_normal_part(pc, policies_[type], v_[i], v_[j], g_N), type);
+                const double g = std::sqrt(norm2(g_c));
+                if (!(uniform01(rng) * cs_max_ * g_max < pc.cross_section * g))
+                    continue;
+                if constexpr (rough) {
+                    const Vec3 normal = sample_impact_normal(rng, g_c, g);
+                    obs(collide(pc, policies_[type], v_[i], w_[i], v_[j], w_[j], normal), type);
+                } else {
+                    const Vec3 g_N = sample_impact_normal_part(rng, g_c, g);
+                    obs(collide_normal_part(pc, policies_[type], v_[i], v_[j], g_N), type);
+                }
             }
             ++done;
             if constexpr (Nearest) {
@@ -914,7 +949,8 @@ template <class Policy, bool General = false> class SpatialEngine {
             virial[3] += 0.5 * (dp.x * r.y + dp.y * r.x);
             virial[4] += 0.5 * (dp.x * r.z + dp.z * r.x);
             virial[5] += 0.5 * (dp.y * r.z + dp.z * r.y);
-            b = std::max({b, std::sqrt(norm2(v_[i] - u)), std::sqrt(norm2(v_[j] - u))});
+            if constexpr (!Maxwell)
+                b = std::max({b, std::sqrt(norm2(v_[i] - u)), std::sqrt(norm2(v_[j] - u))});
         }
     }
 
@@ -927,6 +963,9 @@ template <class Policy, bool General = false> class SpatialEngine {
     std::unique_ptr<WorkerTeam> team_;
     std::size_t particles_ = 0, cells_ = 1;
     double cs_max_ = 0;
+    bool maxwell_ = false;
+    std::vector<double> maxwell_rate_; // per pair type: pi sigma_ab^2 u_ab of the Maxwell kernel
+    double maxwell_rate_max_ = 0;
     std::array<double, 3> k_{}; // the initial wave's wave vector
     std::vector<PairConstants> wall_pc_; // per species: the grain with an infinitely massive wall
     WallFluxes wall_flux_{};
