@@ -1,7 +1,7 @@
 // The spectra of the spatially resolved engine's gas in equilibrium (observables/spectra.hpp): the
 // DSMC keeps the ideal gas's product of uniform positions and Maxwellian velocities, so at every
-// wave vector S = S_T = 1 and E_perp = E_par = T, for cells smaller and larger than the mean free
-// path alike.
+// wave vector S = S_T = 1 and E_perp = E_par = T, and the velocities stay Maxwellian, for cells
+// smaller and larger than the mean free path alike.
 #include "no_observer.hpp"
 #include "roughgas/dsmc/spatial_engine.hpp"
 
@@ -40,7 +40,10 @@ std::vector<SpeciesBlock> mixture(std::int64_t n, double T_heavy) {
 // its own too, so that an error that depends on k cannot hide in the mean: a mode's |field_k|^2 of
 // an ideal gas scatters by its own mean (exponentially), a shell of M wave vectors averages M/2
 // independent ones, and its mean over the samples is held to 1 within 5 / sqrt(M/2), the scatter of
-// one sample (the samples of the slow long waves are not independent of each other).
+// one sample (the samples of the slow long waves are not independent of each other). And each
+// species stays Maxwellian: at every sample its a20 = (4/15) <c*^4> - 1 (c* = c / sqrt(2 T/m)), 0 for
+// a Maxwellian with the sampling scatter sqrt(3.2 / N_s) (var c*^4 = 945/16 - (15/4)^2 = 45), is held
+// to 0 within 5 of those.
 TEST(SpatialSpectra, EquilibriumGasHasUnitSpectraForAnyCellSize) {
     const double n = 0.01, sigma = 1.6;
     const double lambda = 1.0 / (std::sqrt(2.0) * std::numbers::pi * n * sigma * sigma);
@@ -74,6 +77,19 @@ TEST(SpatialSpectra, EquilibriumGasHasUnitSpectraForAnyCellSize) {
                         N += 1;
                     }
                 const double T = 2 * E / (3 * N);
+                for (const SpeciesBlock& s : blocks) {
+                    double c2 = 0, c4 = 0;
+                    for (std::size_t i = s.offset; i < s.offset + s.count; ++i)
+                        c2 += norm2(e.velocities()[i]);
+                    const double two_T_over_m = 2.0 * c2 / (3.0 * static_cast<double>(s.count));
+                    for (std::size_t i = s.offset; i < s.offset + s.count; ++i) {
+                        const double x = norm2(e.velocities()[i]) / two_T_over_m;
+                        c4 += x * x;
+                    }
+                    const double a20 = 4.0 / 15.0 * c4 / static_cast<double>(s.count) - 1.0;
+                    EXPECT_NEAR(a20, 0.0, 5 * std::sqrt(3.2 / static_cast<double>(s.count)))
+                        << "species of mass " << s.grain.mass << ", step " << k;
+                }
                 const std::vector<double> out = spectra.compute(e.positions(), e.velocities(), blocks, e.team());
                 std::array<double, 4> mean{};
                 double modes = 0;
