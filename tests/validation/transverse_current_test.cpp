@@ -88,8 +88,10 @@ double decay_rate(const RunSpec& spec, int replica) {
 // 16/(75 pi) (0.2 sqrt(pi)/2)^2) eta_0 = 1.0259 eta_0, within 4 standard errors of the replicas' mean
 // plus 1.5 % for the order beyond Navier-Stokes at k lambda = 0.2 (the cooling gas's transverse waves
 // show (1.6 +- 1.1) % less damping than Navier-Stokes at k lambda = 0.31, ShearModeGrowth; a (k lambda)^2
-// correction scales that to 0.7 % here). A viscosity off by 10 % (the first Sonine 1.6 % is not
-// resolved) or a rate per unit time mistaken for one per collision fails.
+// correction scales that to 0.7 % here). The replicas resolve the rate to about 2.5 %, so the
+// tolerance is about 11.5 % (at most 13.5 % with the error bound of 3 % below): a viscosity off by 15 %
+// fails (the first Sonine 1.6 % is not resolved, nor is 10 %), and so does a rate per unit time
+// mistaken for one per collision.
 TEST(TransverseCurrent, ElasticGasFluctuationsDecayAtTheKinematicViscosity) {
     const RunSpec spec = equilibrium_run();
     std::vector<double> rates;
