@@ -3,7 +3,7 @@
 // a transverse wave u_y = A sqrt(T/m) sin(2 pi x/L) decays against the thermal speed in a box shorter
 // than L_c and grows in a longer one, at gamma = growth - damping (k lambda)^2 per collision per
 // particle.
-// CPU: about 60 s (Release; five boxes, 8 replicas of 1e5 grains to 40 or 20 collisions per particle).
+// CPU: about 75 s (Release; eight boxes, 8 replicas of 1e5 grains to 40, 20 or 12 collisions per particle).
 #include "../dsmc/test_stats.hpp"
 #include "../dsmc/run_test_support.hpp"
 #include "roughgas/dsmc/run.hpp"
@@ -126,6 +126,26 @@ TEST(ShearModeGrowth, RoughGrainsGrowAtTheirRateAboveTheCriticalLength) {
                     p.alpha, p.beta, k_lambda, g.mean, g.err, expected);
         EXPECT_NEAR(g.mean, expected, 4 * g.err + 0.03 * damping + 0.03 * t.growth) << p.alpha << ", " << p.beta;
         EXPECT_LT(g.err, 0.002);
+    }
+}
+
+// The same three kinds of rough grains in a box of 0.8 L_c: the wave decays, at the rate Navier-Stokes
+// gives, within the same allowance (the damping term, now the larger, dominates it).
+TEST(ShearModeGrowth, RoughGrainsDecayBelowTheCriticalLength) {
+    struct Point {
+        double alpha, beta, end;
+    };
+    for (const Point p : {Point{0.9, 0.0, 20}, Point{0.9, 1.0, 40}, Point{0.8, -0.5, 12}}) {
+        const ShearModeTheory t = rough_shear_mode(p.alpha, p.beta, 0.4);
+        const double L = 0.8 * t.critical_length * lambda, k_lambda = 2 * std::numbers::pi * lambda / L;
+        const double damping = t.damping * (1 + laws) * k_lambda * k_lambda, expected = t.growth - damping;
+        const test::MeanErr g = test::mean_err(growth_rates(wave_run(L, p.beta, p.end, p.alpha), 8));
+        std::printf("[ SHEAR MODE ] rough, alpha = %.2f, beta = %+.2f, L = 0.8 L_c (k lambda = %.3f): gamma = %+.5f "
+                    "+- %.5f per collision, Navier-Stokes %+.5f\n",
+                    p.alpha, p.beta, k_lambda, g.mean, g.err, expected);
+        EXPECT_LT(g.mean, 0) << "the wave must decay below L_c: " << p.alpha << ", " << p.beta;
+        EXPECT_NEAR(g.mean, expected, 4 * g.err + 0.03 * damping + 0.03 * t.growth) << p.alpha << ", " << p.beta;
+        EXPECT_LT(g.err, 0.003);
     }
 }
 
