@@ -61,10 +61,12 @@ class Diagnostics {
     }
 
   private:
-    // `key` or a table on the way to it was given with --set.
+    // `key`, a key below it, or the table or array it is in ("domain.cells[0]" of --set
+    // domain.cells=[...]) was given with --set.
     bool overridden(const std::string& key) const {
-        return std::any_of(overridden_.begin(), overridden_.end(),
-                           [&](const std::string& o) { return o == key || o.rfind(key + ".", 0) == 0; });
+        return std::any_of(overridden_.begin(), overridden_.end(), [&](const std::string& o) {
+            return o == key || o.rfind(key + ".", 0) == 0 || key.rfind(o + ".", 0) == 0 || key.rfind(o + "[", 0) == 0;
+        });
     }
 
     std::string file_;

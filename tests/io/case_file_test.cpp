@@ -117,6 +117,11 @@ TEST(CaseFile, SetErrorsNameTheArgument) {
     EXPECT_NE(e.find("case.toml: species.0.radius = -1: must be > 0 (length) (set with --set)"),
               std::string::npos)
         << e;
+    // An element of an array given with --set: no line and column of the case file.
+    const std::string a = error_of(small_case(), {"domain.size=[10.0, 10.0, 10.0]", "domain.cells=[0, 2, 2]",
+                                                  "domain.allow_coarse=true"});
+    EXPECT_NE(a.find("case.toml: domain.cells[0] = 0: must be in [1, 4096] (set with --set)"), std::string::npos)
+        << a;
 }
 
 TEST(CaseFile, MessageHasFileLineColumnKeyValueAndRange) {
