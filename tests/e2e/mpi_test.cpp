@@ -1,8 +1,9 @@
 // `mpirun -np R roughgas run|sweep` (src/cli/run_command.cpp, sweep_command.cpp, rank_errors.hpp):
 // the ranks share the replicas or the sweep points and rank 0 writes the very bytes one process
 // writes, for 1, 2 and 3 ranks (a box with walls and saved states too); a SIGTERM to the ranks stops them as it stops one process and
-// the job resumes on another rank count into the same bytes; a rank killed with SIGKILL ends the
-// job non-zero, naming the rank, with no ensemble file written; invalid input is reported once,
+// the job resumes on another rank count into the same bytes; a rank killed with SIGKILL, or one
+// whose checkpoint cannot be written, ends the job non-zero, naming the rank, with no ensemble file
+// written; invalid input is reported once,
 // with exit status 2. Built only when CMake found MPI (ROUGHGAS_MPIEXEC).
 #ifdef ROUGHGAS_MPIEXEC
 #include "../io/io_test_support.hpp"
@@ -13,7 +14,9 @@
 #include <algorithm>
 #include <csignal>
 #include <cstdlib>
+#include <fstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace roughgas {
@@ -240,6 +243,36 @@ TEST_F(Mpi, AKilledRankEndsTheJobNamingItAndNoEnsembleFileIsWritten) {
                                  });
             EXPECT_TRUE(victims) << e.path();
         }
+}
+
+// An error on one rank during the run: replica 2's checkpoint (rank 2's) cannot be written, because
+// a directory holding a file now stands where it goes. That rank says so, naming itself, and ends
+// the job (MPI_Abort): a non-zero exit and no ensemble file.
+TEST_F(Mpi, AnErrorOnOneRankEndsTheJobNamingTheRank) {
+    const test::ScratchDir dir;
+    const fs::path f = dir.write("hcs.toml", ensemble_case("1.0e6", 3, 20000)); // hours: ended by the error
+    const fs::path out = dir / "failed";
+    test::ChildProcess job(ROUGHGAS_MPIEXEC,
+                           mpirun(3, {"run", f.string(), "--quiet", "--checkpoint-every", "1", "--out", out.string()}),
+                           dir / "mpi_out.txt", dir / "mpi_err.txt");
+    ASSERT_TRUE(test::wait_until(job, [&] { return every_replica_saved(out, 3); }))
+        << test::read_file(dir / "mpi_err.txt");
+    // The rank rewrites the file at every checkpoint: replace it until the directory stays.
+    const fs::path target = out / "checkpoint" / "replica_2.bin";
+    for (int tries = 0; tries < 1000 && !fs::is_directory(target); ++tries) {
+        std::error_code ec;
+        fs::remove(target, ec);
+        fs::create_directory(target, ec);
+    }
+    ASSERT_TRUE(fs::is_directory(target));
+    { std::ofstream(target / "keep") << "a non-empty directory: no rename replaces it\n"; }
+    const int status = job.wait();
+    const std::string err = test::read_file(dir / "mpi_err.txt");
+    EXPECT_NE(exit_status(status), 0) << err;
+    EXPECT_NE(err.find("roughgas: rank 2 of 3:"), std::string::npos) << err;
+    EXPECT_NE(err.find("replica_2.bin"), std::string::npos) << err;
+    for (const char* file : {"moments.csv", "histograms.csv", "scaled.csv"})
+        EXPECT_FALSE(fs::exists(out / file)) << file;
 }
 
 TEST_F(Mpi, InvalidInputIsReportedOnceWithStatus2) {
