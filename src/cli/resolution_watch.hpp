@@ -1,10 +1,12 @@
 #pragma once
-// The cells' resolution of a box run's densest slab, watched as its rows come (cell_over_lambda of
-// moments.csv): a cooling gas's clusters or a heated floor can bring the local mean free path below
-// the cells' size while the run goes on. The first row past 0.5 local mean free paths gives a
-// warning (in gradients the viscosity comes out too large by about 16/(45 pi) (edge/lambda)^2), the
-// first past 1 another (the cells no longer resolve the gas there). One watch per file that carries
-// the warnings: the ensemble's moments.csv and profiles.csv, and each replica's own moments_R.csv.
+// The cells' resolution of a box run, watched as its rows come, in its densest slab and in its
+// densest cell (cell_over_lambda and cell_over_lambda_cells of moments.csv): a cooling gas's
+// clusters or a heated floor can bring the local mean free path below the cells' size while the
+// run goes on, and a cluster can do so in a few cells while its slab's mean stays resolved. For
+// each, the first row past 0.5 local mean free paths gives a warning (in gradients the viscosity
+// comes out too large by about 16/(45 pi) (edge/lambda)^2), the first past 1 another (the cells no
+// longer resolve the gas there). One watch per file that carries the warnings: the ensemble's
+// moments.csv and profiles.csv, and each replica's own moments_R.csv.
 #include <optional>
 #include <span>
 #include <string>
@@ -20,8 +22,17 @@ class ResolutionWatch {
     std::vector<std::string> notes(std::span<const double> row);
 
   private:
-    std::optional<std::size_t> resolution_, t_, coll_per_particle_;
-    double threshold_ = 0.5;
+    struct Watched {
+        std::size_t column;
+        const char* name;  // the column's
+        const char* where; // "the densest slab", "the densest cell"
+        // The densest cell is watched only where it is denser than the densest slab: a gas uniform
+        // within its slabs has the slabs' warnings alone.
+        std::optional<std::size_t> above;
+        double threshold = 0.5;
+    };
+    std::vector<Watched> watched_;
+    std::optional<std::size_t> t_, coll_per_particle_;
 };
 
 } // namespace roughgas::cli

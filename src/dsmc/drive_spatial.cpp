@@ -16,6 +16,7 @@
 
 #include "roughgas/core/bytes.hpp"
 #include "roughgas/dsmc/spatial_engine.hpp"
+#include "roughgas/observables/densest_cell.hpp"
 #include "roughgas/observables/pressure.hpp"
 
 #include <array>
@@ -222,6 +223,9 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
             for (std::size_t b = 0; b < profiles.size(); b += profile_field_count)
                 n_max = std::max(n_max, profiles[b]);
             row.push_back(edge / mean_free_path(n_max, sigma_max));
+            row.push_back(edge / mean_free_path(densest_cell_density(engine.cell_sums(), engine.cell_sum_fields, S,
+                                                                     engine.cells(), spec.density),
+                                                sigma_max));
             append_wall_columns(row, domain, engine.wall_fluxes(), walls_prev, spec.density, N,
                                 first ? std::numeric_limits<double>::quiet_NaN() : t - t_prev);
             walls_prev = engine.wall_fluxes();

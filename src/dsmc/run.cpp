@@ -247,8 +247,10 @@ std::vector<Column> dsmc_columns(const RunSpec& spec) {
     if (spec.domain && spec.domain->initial.mode != Perturbation::none) // the initial wave's amplitudes
         for (const Column& w : {Column{"u_wave", "length/time"}, Column{"n_wave", "-"}, Column{"e_wave", "-"}})
             c.push_back(w);
-    if (spec.domain) // the cells' resolution of the densest slab
+    if (spec.domain) { // the cells' resolution of the densest slab, and of the densest cell
         c.push_back({"cell_over_lambda", "-"});
+        c.push_back({"cell_over_lambda_cells", "-"});
+    }
     return c;
 }
 

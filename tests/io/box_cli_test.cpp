@@ -70,6 +70,13 @@ TEST(BoxCli, ThreadsAndReplicaRangesGiveTheSameBytes) {
         EXPECT_EQ(test::read_file(dir / "t2" / "replicas" / replica), own) << replica;
         EXPECT_EQ(test::read_file(dir / "m" / "replicas" / replica), own) << replica;
     }
+    // The densest cell of this uniform gas (32 grains per cell) reads as the mean density: the
+    // cells' edge of 10 over lambda = 1/(sqrt(2) pi n sigma^2), in every row, and no warning of
+    // the densest cell beside the slabs' (the cell's 0.89 would give one).
+    const auto rows = test::read_csv(dir / "t1" / "moments.csv");
+    for (const double x : rows.at("cell_over_lambda_cells"))
+        EXPECT_NEAR(x, 10.0 * std::sqrt(2.0) * std::numbers::pi * 0.02, 1e-12);
+    EXPECT_EQ(one.find("in the densest cell"), std::string::npos);
 }
 
 TEST(BoxCli, RefusesWhatTheBoxCannotRunBeforeAnyWork) {
