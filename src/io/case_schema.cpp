@@ -144,7 +144,8 @@ std::vector<Key> keys() {
             .doc("collision kernel: hard_sphere (rate pi sigma^2 |g|, n weighted by |g.n|); maxwell (each pair at "
                  "the hard-sphere rate of the initial Maxwellian, independent of the velocities, n uniform on the "
                  "approaching hemisphere: T_tr, T_rot follow closed linear ODEs, the theory columns; constant "
-                 "restitution only)"),
+                 "restitution only; in a [domain] run each pair of a cell, at the rate with the cell for the "
+                 "volume)"),
         Key("run.seed", T::integer).fallback(std::int64_t{1}).ge(0).doc("random seed (same seed, same run)"),
         Key("run.end", T::real).unit("collisions per particle").required().gt(0).doc("length of the run"),
         Key("run.output_every", T::real)

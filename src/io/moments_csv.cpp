@@ -345,9 +345,10 @@ const std::map<std::string, std::string>& meanings() {
                              "1/(sqrt(2) pi n_b sigma^2) among the profile slabs (n_b the slab's density, sigma the "
                              "largest diameter); run warns once it exceeds 0.5 and 1"},
         {"cell_over_lambda_cells",
-         "box runs: the same at the density of the cell holding the most grains, counted 8 Poisson standard "
-         "deviations of the mean count low (N_c - 8 sqrt(N/C) grains, at least the mean N/C: the cells of a "
-         "uniform gas read as the mean, a cluster as itself); run warns once it exceeds 0.5 and 1"},
+         "box runs: the same at the density of the cell holding the most grains, N_c, counted 8 Poisson "
+         "standard deviations of the mean count m = N/C low: (N_c - 8 sqrt(m))/m times the mean density, at "
+         "least the mean (a uniform gas's noisiest cell reads as the mean, a cluster as nearly itself); run "
+         "warns once it exceeds 0.5 and 1 where it exceeds cell_over_lambda"},
         {"u_wave", "box runs with an [initial] wave: its velocity amplitude, (2/N) sum of v.e sin(k.x) over the "
                    "grains (e: the transverse direction of a transverse wave, k/|k| for the other waves)"},
         {"n_wave", "box runs with an [initial] wave: the relative amplitude of the density wave, (2/N) sum of "
