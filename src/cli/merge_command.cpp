@@ -61,31 +61,19 @@ std::string read_bytes(const fs::path& file) {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// A sidecar's text with every HDF5 file it names moved into `dir` (same file names): the range's
-// run named them by the absolute paths it had, which need not be those of the merged output.
-std::string xdmf_in(const std::string& text, const fs::path& dir) {
-    static const std::string tag = "Format=\"HDF\">";
-    std::string out;
-    std::size_t at = 0;
-    for (std::size_t p; (p = text.find(tag, at)) != std::string::npos;) {
-        const std::size_t path = p + tag.size();
-        const std::size_t end = text.find(":/", path); // FILE:/DATASET
-        if (end == std::string::npos)
-            break;
-        const std::string file = fs::path(text.substr(path, end - path)).filename().string();
-        out.append(text, at, path - at);
-        out += (dir / file).string();
-        at = end;
-    }
-    out.append(text, at, std::string::npos);
-    return out;
+// `from` copied to `to` through a temporary next to it (complete or absent, as every output), without
+// holding the file in memory (a snapshot of every cell of a large box is hundreds of megabytes).
+void copy_atomically(const fs::path& from, const fs::path& to) {
+    const fs::path tmp = temporary_path(to);
+    fs::copy_file(from, tmp, fs::copy_options::overwrite_existing);
+    publish_file_atomically(tmp, to);
 }
 
 // Replica r's final state and cell fields, if its range wrote them, into `out`.
 void copy_replica_files(const fs::path& range, const fs::path& out, std::uint64_t r) {
     if (const fs::path from = state_file_path(range, r); fs::exists(from)) {
         fs::create_directories(state_dir(out));
-        write_file_atomically(state_file_path(out, r), read_bytes(from));
+        copy_atomically(from, state_file_path(out, r));
     }
     const int replica = static_cast<int>(r);
     const fs::path from = fields_replica_dir(range, replica);
@@ -95,9 +83,9 @@ void copy_replica_files(const fs::path& range, const fs::path& out, std::uint64_
     fs::create_directories(to);
     for (const auto& e : fs::directory_iterator(from))
         if (e.is_regular_file() && e.path().extension() == ".h5")
-            write_file_atomically(to / e.path().filename(), read_bytes(e.path()));
+            copy_atomically(e.path(), to / e.path().filename());
     if (const fs::path xdmf = fields_xdmf_path(range, replica); fs::exists(xdmf))
-        write_file_atomically(fields_xdmf_path(out, replica), xdmf_in(read_bytes(xdmf), to));
+        write_file_atomically(fields_xdmf_path(out, replica), fields_xdmf_moved(read_bytes(xdmf), to));
 }
 
 int run_merge(const MergeOptions& o) {

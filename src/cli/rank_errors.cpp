@@ -9,20 +9,25 @@
 namespace roughgas::cli {
 
 int report_error(std::exception_ptr error, std::ostream& out, const std::string& prefix) {
+    // Each message is put together first and written at once: std::cerr is unbuffered, and a
+    // message written piece by piece can be cut by the output of the launcher or of other ranks.
+    std::string line;
+    int status = exit_failure;
     try {
         std::rethrow_exception(error);
     } catch (const QuietExit& q) {
         return q.status;
     } catch (const InputError& e) {
-        out << (prefix.empty() ? "" : "roughgas: " + prefix) << e.what() << '\n';
-        return exit_invalid;
+        line = (prefix.empty() ? "" : "roughgas: " + prefix) + e.what() + "\n";
+        status = exit_invalid;
     } catch (const std::exception& e) {
-        out << "roughgas: " << prefix << "error: " << e.what() << '\n';
-        return exit_failure;
+        line = "roughgas: " + prefix + "error: " + e.what() + "\n";
     } catch (...) {
-        out << "roughgas: " << prefix << "unknown error\n";
-        return exit_failure;
+        line = "roughgas: " + prefix + "unknown error\n";
     }
+    out << line;
+    out.flush();
+    return status;
 }
 
 void agree_on_setup(const Communicator& comm, const std::function<void()>& setup) {

@@ -34,7 +34,7 @@ std::vector<std::string> ResolutionWatch::notes(std::span<const double> row) {
     const double t = row[*t_], c = row[*coll_per_particle_];
     for (Watched& w : watched_) {
         const double r = row[w.column];
-        if (w.above && !(r > row[*w.above]))
+        if (w.above && !(r > 1.05 * row[*w.above])) // by more than round-off and noise
             continue;
         while (r > w.threshold) {
             out.push_back(

@@ -26,7 +26,7 @@ class ResolutionWatch {
         std::size_t column;
         const char* name;  // the column's
         const char* where; // "the densest slab", "the densest cell"
-        // The densest cell is watched only where it is denser than the densest slab: a gas uniform
+        // The densest cell is watched only where it reads 5 % above the densest slab: a gas uniform
         // within its slabs has the slabs' warnings alone.
         std::optional<std::size_t> above;
         double threshold = 0.5;

@@ -82,7 +82,8 @@ std::optional<int> cgroup_quota_cpus(const std::string& self_cgroup, const std::
         const std::string controllers = "," + line.substr(a + 1, b - a - 1) + ",";
         const std::string path = line.substr(b + 1);
         if (line.compare(0, a, "0") == 0 && controllers == ",,") { // cgroup v2 (unified)
-            const fs::path base = fs::exists(root / "cgroup.controllers") || !fs::exists(root / "unified")
+            std::error_code ec; // an unreadable tree is no quota, never an error
+            const fs::path base = fs::exists(root / "cgroup.controllers", ec) || !fs::exists(root / "unified", ec)
                                       ? root
                                       : root / "unified"; // a hybrid system's v2 hierarchy
             up_from(path, [&](const fs::path& rel) {
@@ -90,7 +91,8 @@ std::optional<int> cgroup_quota_cpus(const std::string& self_cgroup, const std::
             });
         } else if (controllers.find(",cpu,") != std::string::npos) { // cgroup v1, the cpu controller
             for (const char* mount : {"cpu", "cpu,cpuacct", "cpuacct,cpu"}) {
-                if (!fs::exists(root / mount))
+                std::error_code ec;
+                if (!fs::exists(root / mount, ec))
                     continue;
                 up_from(path, [&](const fs::path& rel) {
                     const fs::path dir = root / mount / rel;

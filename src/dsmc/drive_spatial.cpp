@@ -104,6 +104,9 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
     std::vector<UsfSpecies> usf_species;
     for (const SpeciesBlock& b : blocks)
         usf_species.push_back({static_cast<double>(b.count) / N, b.grain.mass, b.grain.radius});
+    double T0_tr = 0; // the initial translational temperature of the mixture (the Maxwell kernel's rates)
+    for (const SpeciesBlock& b : blocks)
+        T0_tr += b.temperature * static_cast<double>(b.count) / N;
     double edge = 0, sigma_max = 0; // the longest cell edge, the largest diameter
     for (std::size_t a = 0; a < 3; ++a)
         edge = std::max(edge, domain.size[a] / domain.cells[a]);
@@ -222,10 +225,15 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
             double n_max = 0;
             for (std::size_t b = 0; b < profiles.size(); b += profile_field_count)
                 n_max = std::max(n_max, profiles[b]);
-            row.push_back(edge / mean_free_path(n_max, sigma_max));
-            row.push_back(edge / mean_free_path(densest_cell_density(engine.cell_sums(), engine.cell_sum_fields, S,
-                                                                     engine.cells(), spec.density),
-                                                sigma_max));
+            // The Maxwell kernel's rate stays that of the initial temperature T0 while the grains slow
+            // down: its mean free path, <v>/nu, is the hard spheres' times sqrt(T/T0).
+            const double kernel_path =
+                spec.kernel == CollisionKernel::maxwell && m.all.T_tr > 0 ? std::sqrt(m.all.T_tr / T0_tr) : 1.0;
+            row.push_back(edge / (kernel_path * mean_free_path(n_max, sigma_max)));
+            row.push_back(edge / (kernel_path * mean_free_path(densest_cell_density(engine.cell_sums(),
+                                                                                    engine.cell_sum_fields, S,
+                                                                                    engine.cells(), spec.density),
+                                                               sigma_max)));
             append_wall_columns(row, domain, engine.wall_fluxes(), walls_prev, spec.density, N,
                                 first ? std::numeric_limits<double>::quiet_NaN() : t - t_prev);
             walls_prev = engine.wall_fluxes();

@@ -909,6 +909,12 @@ class Builder {
             add("initial.from", fmt::format("initial.from = \"{}\" without [domain]: a saved state starts a box "
                                             "run (give the box in [domain])",
                                             c.initial->from));
+        if (c.initial && !c.initial->from.empty() && c.run.kernel == CollisionKernel::maxwell)
+            add("initial.from",
+                fmt::format("initial.from = \"{}\" with run.kernel = \"maxwell\": the kernel's rates come from "
+                            "the species' temperatures in this case, not from the saved grains' (start a Maxwell "
+                            "box from its Maxwellian)",
+                            c.initial->from));
         if (c.initial && c.initial->mode != Perturbation::none) {
             if (!c.domain)
                 add("initial.mode", fmt::format("initial.mode = \"{}\" without [domain]: a wave needs positions "

@@ -41,6 +41,25 @@ fs::path fields_xdmf_path(const fs::path& run_dir, int replica) {
     return fields_dir(run_dir) / ("replica_" + std::to_string(replica) + ".xmf");
 }
 
+std::string fields_xdmf_moved(const std::string& text, const fs::path& dir) {
+    static const std::string open = "Format=\"HDF\">", close = "</DataItem>";
+    std::string out;
+    std::size_t at = 0;
+    for (std::size_t p; (p = text.find(open, at)) != std::string::npos;) {
+        const std::size_t path = p + open.size(), end = text.find(close, path);
+        const std::size_t colon = end == std::string::npos ? end : text.rfind(":/", end); // PATH:/DATASET
+        if (colon == std::string::npos || colon < path)
+            break;
+        const std::size_t slash = text.rfind('/', colon - 1);
+        const std::size_t name = slash == std::string::npos || slash < path ? path : slash + 1;
+        out.append(text, at, path - at);
+        out += escaped((dir / text.substr(name, colon - name)).string());
+        at = colon;
+    }
+    out.append(text, at, std::string::npos);
+    return out;
+}
+
 std::string fields_xdmf(const std::vector<FieldsEntry>& entries, const std::array<int, 3>& cells,
                         const std::array<double, 3>& box, const std::vector<FieldQuantity>& quantities, int replica) {
     // Xdmf2 lists every dimension slowest first: z, y, x (the datasets' order, fields_file.hpp).

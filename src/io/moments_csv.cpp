@@ -346,9 +346,10 @@ const std::map<std::string, std::string>& meanings() {
                              "largest diameter); run warns once it exceeds 0.5 and 1"},
         {"cell_over_lambda_cells",
          "box runs: the same at the density of the cell holding the most grains, N_c, counted 8 Poisson "
-         "standard deviations of the mean count m = N/C low: (N_c - 8 sqrt(m))/m times the mean density, at "
-         "least the mean (a uniform gas's noisiest cell reads as the mean, a cluster as nearly itself); run "
-         "warns once it exceeds 0.5 and 1 where it exceeds cell_over_lambda"},
+         "standard deviations of the mean count m = N/C and 8 grains low: (N_c - 8 sqrt(m) - 8)/m times the "
+         "mean density, at least the mean (a uniform gas's noisiest cell reads as the mean, a cluster as "
+         "nearly itself); with run.kernel = maxwell both paths are <v>/nu at the kernel's constant rate; run "
+         "warns once it exceeds 0.5 and 1 where it exceeds cell_over_lambda by 5 %"},
         {"u_wave", "box runs with an [initial] wave: its velocity amplitude, (2/N) sum of v.e sin(k.x) over the "
                    "grains (e: the transverse direction of a transverse wave, k/|k| for the other waves)"},
         {"n_wave", "box runs with an [initial] wave: the relative amplitude of the density wave, (2/N) sum of "

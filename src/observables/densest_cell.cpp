@@ -19,7 +19,7 @@ double densest_cell_density(const std::vector<double>& sums, std::size_t fields,
     const double mean = all / static_cast<double>(cells);
     if (!(mean > 0))
         return density;
-    return density * std::max(1.0, (most - 8.0 * std::sqrt(mean)) / mean);
+    return density * std::max(1.0, (most - 8.0 * std::sqrt(mean) - 8.0) / mean);
 }
 
 } // namespace roughgas

@@ -85,8 +85,10 @@ TEST(Maxwell, RoughGasFollowsTheExactTemperatureOdes) {
     }
 }
 
-// `s` in a periodic cube of 3 mean free paths (of unit diameters, n = 0.02) in cells of half a mean
-// free path: far below the instability length, so the gas stays uniform and follows the ODEs.
+// `s` in a periodic cube of 3 hard-sphere mean free paths (unit diameters, n = 0.02) in cells of half
+// of one. The Maxwell kernel's rate stays that of the start while the gas cools, so its own mean
+// free path shrinks as sqrt(T): at T_tr = 0.2 the cells are about one of them and the box about
+// seven, still below the instability length, and the gas stays uniform and follows the ODEs.
 RunSpec in_a_small_box(RunSpec s) {
     s.density = 0.02;
     const double lambda = 1.0 / (std::sqrt(2.0) * std::numbers::pi * s.density);

@@ -435,6 +435,8 @@ TEST(BoxCli, StartsFromTheSavedStateOfAnEarlierRun) {
          "needs fresh positions"},
         {c.substr(0, c.find("[domain]")) + "[initial]\nfrom = " + q(dir / "hom") + "\n", "initial.from",
          "without [domain]"},
+        {replaced(from_hom, "seed = 4", "seed = 4\nkernel = \"maxwell\""), "initial.from",
+         "run.kernel = \"maxwell\""},
     };
     for (const auto& x : bad) {
         const fs::path f = dir.write("bad.toml", x.text);

@@ -124,6 +124,19 @@ TEST(FieldsSeries, SidecarListsTheSnapshotsAndAResumeReplacesWhatFollows) {
 
 // The files are written behind the run: a failure to write reaches the run at the next snapshot
 // or at flush, and flush returns only once the files are on disk.
+TEST(FieldsSeries, ASidecarMovedNamesTheFilesInTheirNewDirectory) {
+    // What merge does with a range's sidecar: the text a sidecar of the new paths would have, with
+    // XML's special characters and a colon in the directories.
+    const std::vector<FieldQuantity> q = {FieldQuantity::n, FieldQuantity::P};
+    const auto sidecar = [&](const std::string& dir) {
+        return fields_xdmf({{0, 0.0, dir + "/row_000000.h5"}, {3, 2.5, dir + "/row_000003.h5"}}, {4, 3, 2},
+                           {8.0, 6.0, 4.0}, q, 1);
+    };
+    const std::string from = sidecar("/runs/range a:1 & b/fields/replica_1");
+    EXPECT_EQ(fields_xdmf_moved(from, "/merged/<all> 'x'/fields/replica_1"),
+              sidecar("/merged/<all> 'x'/fields/replica_1"));
+}
+
 TEST(FieldsSeries, WritesBehindTheRunAndReportsItsErrors) {
     const test::ScratchDir dir;
     DomainSpec d;

@@ -30,6 +30,12 @@ TEST(DensestCell, AUniformGasReadsAsItsMeanDensity) {
     for (auto& c : counts)
         c = {static_cast<double>(a(rng)), static_cast<double>(b(rng))};
     EXPECT_EQ(densest_cell_density(sums_of(counts), 5, 2, counts.size(), 0.02), 0.02);
+    // Sparse cells, 0.5 grains each: the fullest of 200 000 holds about 6, ten times the mean.
+    std::poisson_distribution<int> sparse(0.5);
+    std::vector<std::vector<double>> few(200000);
+    for (auto& c : few)
+        c = {static_cast<double>(sparse(rng))};
+    EXPECT_EQ(densest_cell_density(sums_of(few), 5, 1, few.size(), 0.02), 0.02);
 }
 
 TEST(DensestCell, AClusterReadsAsItsOwnDensityLessTheNoise) {
@@ -37,7 +43,7 @@ TEST(DensestCell, AClusterReadsAsItsOwnDensityLessTheNoise) {
     counts[417] = {2020.0}; // a cluster of a hundred times the mean
     const double mean = (999 * 20.0 + 2020.0) / 1000;
     EXPECT_DOUBLE_EQ(densest_cell_density(sums_of(counts), 5, 1, counts.size(), 0.02),
-                     0.02 * (2020.0 - 8 * std::sqrt(mean)) / mean);
+                     0.02 * (2020.0 - 8 * std::sqrt(mean) - 8) / mean);
     // An empty box reads as the mean density (no division by zero).
     EXPECT_EQ(densest_cell_density(sums_of(std::vector<std::vector<double>>(8, {0.0})), 5, 1, 8, 0.5), 0.5);
 }

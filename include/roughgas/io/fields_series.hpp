@@ -31,6 +31,11 @@ struct FieldsEntry {
     std::filesystem::path file; // absolute
 };
 
+// A sidecar's text with every HDF5 file it names moved into `dir` (absolute; the same file names):
+// `roughgas merge` copies a range's fields into the merged directory, whose paths the range's
+// sidecar does not know.
+std::string fields_xdmf_moved(const std::string& text, const std::filesystem::path& dir);
+
 // The sidecar's text for these snapshots of one replica's cells.
 std::string fields_xdmf(const std::vector<FieldsEntry>& entries, const std::array<int, 3>& cells,
                         const std::array<double, 3>& box, const std::vector<FieldQuantity>& quantities, int replica);

@@ -4,9 +4,10 @@
 // average it away. A cell's count is noisy, though: in a uniform gas of about m grains per cell the
 // fullest of C cells holds about m + sqrt(2 m ln C) (sqrt(2 ln C) = 4.7 standard deviations at
 // C = 50 000), which read as a density would warn of clusters that are not there. So the count is
-// taken 8 Poisson standard deviations of the mean low, and never below the mean: N_c - 8 sqrt(m)
-// grains, at least m. A uniform gas then reads as its mean density, a cluster of many times the mean
-// as nearly its own.
+// taken 8 Poisson standard deviations of the mean and 8 grains more low (the grains for sparse
+// cells, whose tails are longer than a normal one's: at m = 0.5 the fullest of 2 million cells
+// holds about 7), and never below the mean: N_c - 8 sqrt(m) - 8 grains, at least m. A uniform gas
+// then reads as its mean density, a cluster of many times the mean as nearly its own.
 #include <cstddef>
 #include <vector>
 
