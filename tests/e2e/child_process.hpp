@@ -27,9 +27,10 @@ class ChildProcess {
     ChildProcess(const std::vector<std::string>& args, const std::filesystem::path& out,
                  const std::filesystem::path& err)
         : ChildProcess(ROUGHGAS_BINARY, args, out, err) {}
-    // Runs `program` (a path) with `args`.
+    // Runs `program` (a path) with `args`; with `own_group`, in a process group of its own, whose
+    // id is the child's pid (a terminal's foreground job: group() signals it as Ctrl-C does).
     ChildProcess(const std::string& program, const std::vector<std::string>& args,
-                 const std::filesystem::path& out, const std::filesystem::path& err) {
+                 const std::filesystem::path& out, const std::filesystem::path& err, bool own_group = false) {
         std::vector<std::string> all{program};
         all.insert(all.end(), args.begin(), args.end());
         std::vector<char*> argv;
@@ -49,7 +50,9 @@ class ChildProcess {
         sigaddset(&defaults, SIGTERM);
         posix_spawnattr_setsigmask(&attr, &none);
         posix_spawnattr_setsigdefault(&attr, &defaults);
-        posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+        posix_spawnattr_setpgroup(&attr, 0);
+        posix_spawnattr_setflags(&attr, static_cast<short>(POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF |
+                                                           (own_group ? POSIX_SPAWN_SETPGROUP : 0)));
         const int e = posix_spawn(&pid_, program.c_str(), &files, &attr, argv.data(), environ);
         posix_spawn_file_actions_destroy(&files);
         posix_spawnattr_destroy(&attr);
@@ -70,6 +73,11 @@ class ChildProcess {
     void signal(int sig) const {
         if (pid_ > 0 && !done_)
             ::kill(pid_, sig);
+    }
+    // `sig` to every process of the child's group (the child made with `own_group`).
+    void signal_group(int sig) const {
+        if (pid_ > 0 && !done_)
+            ::kill(-pid_, sig);
     }
     // The raw wait status (WIFEXITED, WIFSIGNALED, ...).
     int wait() {

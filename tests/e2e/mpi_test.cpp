@@ -1,7 +1,8 @@
 // `mpirun -np R roughgas run|sweep` (src/cli/run_command.cpp, sweep_command.cpp, rank_errors.hpp):
 // the ranks share the replicas or the sweep points and rank 0 writes the very bytes one process
-// writes, for 1, 2 and 3 ranks (a box with walls and saved states too); a SIGTERM to the ranks stops them as it stops one process and
-// the job resumes on another rank count into the same bytes; a rank killed with SIGKILL, or one
+// writes, for 1, 2 and 3 ranks (a box with walls and saved states too); SIGTERM or SIGINT to the ranks,
+// or a Ctrl-C at mpirun, stops them as a signal stops one process, and the job resumes on another
+// rank count into the same bytes; a rank killed with SIGKILL, or one
 // whose checkpoint cannot be written, ends the job non-zero, naming the rank, with no ensemble file
 // written; invalid input is reported once,
 // with exit status 2. Built only when CMake found MPI (ROUGHGAS_MPIEXEC).
@@ -170,10 +171,16 @@ TEST_F(Mpi, SweepRanksWriteTheBytesOfOneProcess) {
     }
 }
 
-// SIGTERM to every rank, as a batch system's cancel sends it: each stops at its next boundary with a
-// checkpoint, rank 0 writes the rows complete so far, every rank exits 128 + 15; the job resumed on
-// two ranks writes the bytes of the run without a stop.
-TEST_F(Mpi, SigtermStopsTheRanksAndTheResumeWritesTheSameBytes) {
+// How a stop reaches the job: a signal to every rank (a batch system's cancel or time limit sends
+// SIGTERM, srun passes a Ctrl-C on as SIGINT), or a Ctrl-C at mpirun's terminal: SIGINT to mpirun's
+// process group, which holds mpirun alone (Open MPI starts each rank in a group of its own), and
+// mpirun passes SIGTERM to the ranks.
+enum class Stop { sigterm_to_ranks, sigint_to_ranks, ctrl_c_to_mpirun };
+
+// Each rank stops at its next boundary with a checkpoint, rank 0 writes the rows complete so far
+// and says which signal stopped it, the job ends non-zero; the job resumed on two ranks writes the
+// bytes of the run without a stop.
+void stop_and_resume(Stop stop, const std::string& said) {
     const test::ScratchDir dir;
     const fs::path f = dir.write("hcs.toml", ensemble_case("1000.0", 3, 5000));
     ASSERT_EQ(test::run_roughgas("run '" + f.string() + "' --quiet --out '" + (dir / "one").string() + "'", dir)
@@ -184,18 +191,27 @@ TEST_F(Mpi, SigtermStopsTheRanksAndTheResumeWritesTheSameBytes) {
         test::ChildProcess job(ROUGHGAS_MPIEXEC,
                                mpirun(3, {"run", f.string(), "--quiet", "--threads", "1", "--checkpoint-every",
                                           "5", "--out", out.string()}),
-                               dir / "mpi_out.txt", dir / "mpi_err.txt");
+                               dir / "mpi_out.txt", dir / "mpi_err.txt", /*own_group=*/true);
         // Every replica has saved a state once (each rank is past its setup and running).
         ASSERT_TRUE(test::wait_until(job, [&] { return every_replica_saved(out, 3); }))
             << test::read_file(dir / "mpi_err.txt");
-        for (int rank = 0; rank < 3; ++rank)
-            for (pid_t p : rank_pids(rank, out))
-                ::kill(p, SIGTERM);
+        if (stop == Stop::ctrl_c_to_mpirun) {
+            job.signal_group(SIGINT);
+        } else {
+            for (int rank = 0; rank < 3; ++rank)
+                for (pid_t p : rank_pids(rank, out))
+                    ::kill(p, stop == Stop::sigterm_to_ranks ? SIGTERM : SIGINT);
+        }
         const int status = job.wait();
         const std::string err = test::read_file(dir / "mpi_err.txt");
         EXPECT_NE(exit_status(status), 0) << err;
-        ASSERT_NE(err.find("roughgas run: stopped by SIGTERM"), std::string::npos) << err;
+        ASSERT_NE(err.find("roughgas run: stopped by " + said + ": "), std::string::npos) << err;
+        EXPECT_NE(err.find("continue with: roughgas run --resume"), std::string::npos) << err;
     }
+    // Every replica's checkpoint is there and no temporary is left.
+    EXPECT_TRUE(every_replica_saved(out, 3));
+    for (const auto& e : fs::recursive_directory_iterator(out))
+        EXPECT_EQ(e.path().filename().string().find(".tmp."), std::string::npos) << e.path();
     // The rows so far are the first rows of the whole run.
     const std::string partial = test::read_file(out / "moments.csv");
     const std::string whole = test::read_file(dir / "one" / "moments.csv");
@@ -206,6 +222,18 @@ TEST_F(Mpi, SigtermStopsTheRanksAndTheResumeWritesTheSameBytes) {
     ASSERT_EQ(exit_status(r.status), 0) << r.err;
     for (const char* file : {"moments.csv", "histograms.csv", "scaled.csv"})
         EXPECT_EQ(test::read_file(out / file), test::read_file(dir / "one" / file)) << file;
+}
+
+TEST_F(Mpi, SigtermStopsTheRanksAndTheResumeWritesTheSameBytes) {
+    stop_and_resume(Stop::sigterm_to_ranks, "SIGTERM");
+}
+
+TEST_F(Mpi, SigintStopsTheRanksAndTheResumeWritesTheSameBytes) {
+    stop_and_resume(Stop::sigint_to_ranks, "SIGINT");
+}
+
+TEST_F(Mpi, CtrlCAtMpirunStopsTheRanksAndTheResumeWritesTheSameBytes) {
+    stop_and_resume(Stop::ctrl_c_to_mpirun, "SIGTERM");
 }
 
 TEST_F(Mpi, AKilledRankEndsTheJobNamingItAndNoEnsembleFileIsWritten) {
