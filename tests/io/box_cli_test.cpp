@@ -370,26 +370,45 @@ TEST(BoxCli, WallsFileHasTheWallsPressureAndHitRate) {
     }
 }
 
-// The box of 4.4 mean free paths against the homogeneous gas (the same case without [domain]) at
-// 40 collisions per particle, where theta and the cumulants have nearly relaxed: the last rows'
-// theta, a20, a02, a11 agree within 4 combined standard errors (8 replicas of 5000 grains each)
-// plus the change of each over the box row's lag (it ends the first step at or after 40: at most
-// 0.2 collisions per particle later, over which theta changes by < 1e-3 here).
+// The box of 4.4 mean free paths against the homogeneous gas (the same case without [domain]) at 40
+// collisions per particle, where theta and the cumulants have nearly relaxed, for restitution of
+// three kinds: constant alpha and beta (the box's constant loop); Coulomb friction (Walton's
+// beta(g_t/g_n)) and the viscoelastic eps^N(g_N) of ice from its table, rough with a constant beta
+// (both through the per-pair policies' loop; the ice from cases/hcs_viscoelastic_ice.toml, in a box
+// of 4.4 mean free paths and cells of 0.89). The last rows' theta, a20, a02, a11 agree within 4
+// combined standard errors (8 replicas of 5000 grains each) plus the change of each over the box
+// row's lag (it ends the first step at or after 40: at most 0.2 collisions per particle later, over
+// which theta changes by < 1e-3 here).
 TEST(BoxCli, SmallBoxCoolsAsTheHomogeneousGas) {
-    const test::ScratchDir dir;
-    const std::string c = box_case(5000, 8, 40.0);
-    const fs::path box = dir.write("box.toml", c);
-    const fs::path hom = dir.write("hom.toml", c.substr(0, c.find("[domain]")));
-    ASSERT_EQ(test::run_roughgas("run " + q(box) + " --quiet --out " + q(dir / "box"), dir).status, 0);
-    ASSERT_EQ(test::run_roughgas("run " + q(hom) + " --quiet --out " + q(dir / "hom"), dir).status, 0);
-    const auto b = test::read_csv(dir / "box" / "moments.csv");
-    const auto h = test::read_csv(dir / "hom" / "moments.csv");
-    EXPECT_NEAR(b.at("coll_per_particle").back(), 40.0, 0.25);
-    for (const char* col : {"theta", "a20", "a02", "a11"}) {
-        const std::string e = std::string(col) + "_err";
-        const double x = b.at(col).back(), y = h.at(col).back();
-        const double se = std::hypot(b.at(e).back(), h.at(e).back());
-        EXPECT_NEAR(x, y, 4 * se + 1e-3) << col;
+    const std::string constant = box_case(5000, 8, 40.0);
+    const std::string coulomb = replaced(constant, "model = \"constant\"\nalpha = 0.9\nbeta = 0.4",
+                                         "model = \"coulomb\"\nalpha = 0.9\nbeta0 = 0.4\nfriction = 0.15");
+    std::string ice = test::read_file(fs::path(ROUGHGAS_SOURCE_DIR) / "cases" / "hcs_viscoelastic_ice.toml");
+    for (const auto& [from, to] : {std::pair{"particles = 50000", "particles = 5000"},
+                                   std::pair{"replicas = 1", "replicas = 8"}, std::pair{"end = 1000.0", "end = 40.0"},
+                                   std::pair{"beta = -1.0 ", "beta = 0.4 "}}) {
+        ASSERT_NE(ice.find(from), std::string::npos) << from;
+        ice = replaced(ice, from, to);
+    }
+    // lambda = 1/(sqrt(2) pi n sigma^2) = 0.5627 m at n = 1000 m^-3, sigma = 0.02 m.
+    ice += "\n[domain]\nsize = [2.5, 2.5, 2.5]\ncells = [5, 5, 5]\n";
+    for (const auto& [name, c] : {std::pair{"constant", constant}, std::pair{"coulomb", coulomb},
+                                  std::pair{"viscoelastic", ice}}) {
+        const test::ScratchDir dir;
+        const fs::path box = dir.write("box.toml", c);
+        const fs::path hom = dir.write("hom.toml", c.substr(0, c.find("[domain]")));
+        const test::CommandResult rb = test::run_roughgas("run " + q(box) + " --quiet --out " + q(dir / "box"), dir);
+        ASSERT_EQ(rb.status, 0) << name << rb.err;
+        ASSERT_EQ(test::run_roughgas("run " + q(hom) + " --quiet --out " + q(dir / "hom"), dir).status, 0) << name;
+        const auto b = test::read_csv(dir / "box" / "moments.csv");
+        const auto h = test::read_csv(dir / "hom" / "moments.csv");
+        EXPECT_NEAR(b.at("coll_per_particle").back(), 40.0, 0.25) << name;
+        for (const char* col : {"theta", "a20", "a02", "a11"}) {
+            const std::string e = std::string(col) + "_err";
+            const double x = b.at(col).back(), y = h.at(col).back();
+            const double se = std::hypot(b.at(e).back(), h.at(e).back());
+            EXPECT_NEAR(x, y, 4 * se + 1e-3) << name << " " << col;
+        }
     }
 }
 
