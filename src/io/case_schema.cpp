@@ -352,7 +352,7 @@ std::vector<Key> keys() {
             .doc("a wave on the uniform Maxwellian start of a [domain] run, wave vector k_a = 2 pi wave_a / L_a: "
                  "transverse: u = A c e sin(k.x), e perpendicular to k (y if k_y = 0, else z if k_z = 0, else "
                  "along k x x); longitudinal: u = A c k/|k| sin(k.x); density: n (1 + A sin(k.x)); "
-                 "temperature: T (1 + A sin(k.x)) (velocities, and rough grains' spins, scaled); c = sqrt(T/m) of the species' mean T and m"),
+                 "temperature: T (1 + A sin(k.x)); c = sqrt(T/m) of the species' mean T and m"),
         Key("initial.amplitude", T::real)
             .fallback(0.1)
             .gt(-1)

@@ -250,44 +250,6 @@ TEST(SpatialEngine, ThreadCountDoesNotChangeTheResults) {
     }
 }
 
-// Smooth grains' spins stay in their slots, bit for bit, through steps, a temperature wave and the
-// sort (they never change and act on nothing: the sort leaves them out); rough grains' spins move
-// with their grains. The spins in each slab of the smooth box are still a sample of the species'
-// Maxwellian: each slab's mean |omega|^2 within 5 standard errors (sqrt(2/3) of the mean over
-// 3 n_slab components) of the whole box's, with the wave's T(1 + A sin) absent from the spins.
-TEST(SpatialEngine, SmoothGrainsLeaveTheirSpinsWhereTheyAre) {
-    DomainSpec d = cube(30.0, 12);
-    d.initial = {Perturbation::temperature, 0.5, {1, 0, 0}};
-    SpatialEngine<SmoothConstant> smooth(d, one_species(20000), {make_smooth_constant(0.8)}, 0.1, 5, 0, 2);
-    SpatialEngine<RoughConstant> rough(d, one_species(20000), {make_rough_constant(1.0, -1.0)}, 0.1, 5, 0, 2);
-    const std::vector<Vec3> w0 = smooth.angular_velocities(), r0 = rough.angular_velocities();
-    CountCollisions count;
-    for (int k = 0; k < 10; ++k) {
-        smooth.step(0.3 / smooth.collision_frequency(), count);
-        rough.step(0.3 / rough.collision_frequency(), count);
-    }
-    const std::vector<Vec3>& w = smooth.angular_velocities();
-    ASSERT_EQ(w.size(), w0.size());
-    for (std::size_t i = 0; i < w.size(); ++i)
-        ASSERT_TRUE(w[i].x == w0[i].x && w[i].y == w0[i].y && w[i].z == w0[i].z) << i;
-    // beta = -1 changes no spin either, but the rough loop moves them with the grains.
-    EXPECT_FALSE(std::equal(r0.begin(), r0.end(), rough.angular_velocities().begin(),
-                            [](const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }));
-    std::vector<double> sum(12, 0.0), n(12, 0.0);
-    double all = 0;
-    for (std::size_t i = 0; i < w.size(); ++i) {
-        const auto slab = static_cast<std::size_t>(smooth.positions()[i].x / 2.5);
-        sum[slab] += norm2(w[i]);
-        n[slab] += 1;
-        all += norm2(w[i]);
-    }
-    all /= static_cast<double>(w.size());
-    for (std::size_t b = 0; b < 12; ++b)
-        EXPECT_NEAR(sum[b] / n[b] / all, 1.0, 5 * std::sqrt(2.0 / (3.0 * n[b]))) << "slab " << b;
-    EXPECT_EQ(smooth.bytes_per_particle(false), 5 * sizeof(Vec3) + 4);
-    EXPECT_EQ(rough.bytes_per_particle(false), 6 * sizeof(Vec3) + 4);
-}
-
 // A box far below the instability length (1.2 mean free paths, alpha = 0.9) stays homogeneous and
 // cools by Haff's law, T(t) = T0 / (1 + t/t0)^2 with t0 from the Maxwellian collision frequency
 // (observables/theory.hpp). Tolerance: 4 standard errors of the mean of 4 replicas of 10000 grains

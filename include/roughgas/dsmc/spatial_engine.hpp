@@ -9,7 +9,7 @@
 //      of the step (any number of walls per step);
 //   2. the grains sorted by collision cell (a uniform grid of n_x x n_y x n_z cells; within each
 //      species, so that a species stays one contiguous range of the store and the observables'
-//      species slices apply unchanged); smooth grains' spins stay where they are (below);
+//      species slices apply unchanged);
 //   3. collisions inside each cell for a time dt, with the collision rule and restitution policies
 //      of the homogeneous engine (collision/rule.hpp, collision/sampling.hpp).
 //
@@ -43,14 +43,6 @@
 // replica, step, u) and has its own observer copy, merged in unit order: the results depend on
 // the cells per unit (fixed), never on the thread count. The flight runs over fixed chunks of
 // grains, the sort over chunks fixed by the grain and cell counts (sort_into_cells).
-//
-// Smooth grains (a policy without rotation: no pair and no wall changes a spin) leave their spins
-// out of the sort: a spin that never changes and acts on nothing need not follow its grain, and
-// the sort moves 48 bytes per grain instead of 72 (smooth runs 8 % faster at N = 1e6). Slot i then
-// holds the spin drawn for slot i: the spins were drawn independently of the positions and
-// velocities, so the spins in a cell's slots are a random sample of the species' spins, as its
-// grains' own would be, and the rotational fields of smooth grains keep their distribution. (The
-// temperature wave therefore scales only the velocities of smooth grains.)
 //
 // Compiled twice: `General` = false for a periodic box without gravity (a flight that only adds and
 // wraps), true for walls or gravity (the exact crossing times, the walls' random emission from the
@@ -386,12 +378,6 @@ template <class Policy, bool General = false> class SpatialEngine {
     std::int64_t collisions() const { return collisions_; }
     std::int64_t steps() const { return steps_; }
     std::size_t particles() const { return particles_; }
-    // The store per grain: positions and velocities twice (the sort writes the second set), the
-    // spins once for smooth grains and twice for rough ones, the cell key, with nearest partners
-    // the identities and last partners twice.
-    static constexpr std::size_t bytes_per_particle(bool nearest) {
-        return (rough ? 6 : 5) * sizeof(Vec3) + sizeof(std::uint32_t) + (nearest ? 4 * sizeof(std::uint32_t) : 0);
-    }
     std::size_t cells() const { return cells_; }
     const WallFluxes& wall_fluxes() const { return wall_flux_; }
     // The collisional virial sums of each profile bin since the last call (observables/profiles.hpp),
@@ -531,8 +517,7 @@ template <class Policy, bool General = false> class SpatialEngine {
             if (wave.mode == Perturbation::temperature) {
                 const double f = std::sqrt(1 + wave.amplitude * s);
                 v_[i] = f * v_[i];
-                if constexpr (rough)
-                    w_[i] = f * w_[i];
+                w_[i] = f * w_[i];
             } else {
                 v_[i] += (wave.amplitude * c * s) * e;
             }
@@ -773,10 +758,8 @@ template <class Policy, bool General = false> class SpatialEngine {
         const std::size_t S = blocks_.size();
         resize_on_huge_pages(key_, particles_);
         cell_start_.resize(S * (cells_ + 1));
-        for (std::vector<Vec3>* a : {&x2_, &v2_})
+        for (std::vector<Vec3>* a : {&x2_, &v2_, &w2_})
             resize_on_huge_pages(*a, particles_);
-        if constexpr (rough)
-            resize_on_huge_pages(w2_, particles_);
         const bool nearest = !id_.empty();
         id2_.resize(id_.size());
         last2_.resize(last_.size());
@@ -816,8 +799,7 @@ template <class Policy, bool General = false> class SpatialEngine {
                     const std::uint32_t q = pos[key_[i]]++;
                     x2_[q] = x_[i];
                     v2_[q] = v_[i];
-                    if constexpr (rough)
-                        w2_[q] = w_[i];
+                    w2_[q] = w_[i];
                     if constexpr (Identities) {
                         id2_[q] = id_[i];
                         last2_[q] = last_[i];
@@ -833,8 +815,7 @@ template <class Policy, bool General = false> class SpatialEngine {
         }
         x_.swap(x2_);
         v_.swap(v2_);
-        if constexpr (rough)
-            w_.swap(w2_);
+        w_.swap(w2_);
         id_.swap(id2_);
         last_.swap(last2_);
     }
