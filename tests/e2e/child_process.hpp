@@ -28,7 +28,7 @@ class ChildProcess {
                  const std::filesystem::path& err)
         : ChildProcess(ROUGHGAS_BINARY, args, out, err) {}
     // Runs `program` (a path) with `args`; with `own_group`, in a process group of its own, whose
-    // id is the child's pid (a terminal's foreground job: group() signals it as Ctrl-C does).
+    // id is the child's pid (a terminal's foreground job: signal_group() signals it as Ctrl-C does).
     ChildProcess(const std::string& program, const std::vector<std::string>& args,
                  const std::filesystem::path& out, const std::filesystem::path& err, bool own_group = false) {
         std::vector<std::string> all{program};

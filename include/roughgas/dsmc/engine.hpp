@@ -193,13 +193,15 @@ class Engine {
     static constexpr std::size_t demotable_cap = 4096;
     static constexpr std::uint32_t no_grain = std::numeric_limits<std::uint32_t>::max();
     static constexpr int max_groups = 4096;
-    // Grains per chunk of the step start's two passes (in parallel, claimed dynamically). Small
-    // enough that a species of 10^5 grains makes 13 chunks, so a thread that joins a pass late
-    // still finds work: with chunks of 65 536 (two at N = 1e5) two threads ran a step-start-heavy
-    // run (N = 1e5, a row per collision per particle) 1.62 times faster than one, with 8192 1.85
-    // times (Zen 5 VM, alternated; N = 1e6 unchanged). Results depend on it (the chunks' sums are
-    // combined in chunk order), never on the threads.
+    // The step start's two passes run in parallel over chunks of a species' grains, claimed
+    // dynamically: at least chunk_grains grains each, at most max_chunks chunks. Small chunks let
+    // a thread that joins a pass late still find work (at N = 1e5, 13 chunks instead of two: two
+    // threads ran a run of a row per collision per particle 1.85 times faster than one instead of
+    // 1.62 times; Zen 5 VM, alternated; docs/performance.md); the cap keeps the per-chunk bucket
+    // counts (chunks x groups x classes, reset every step) from growing as N^2. Results depend on
+    // the chunks (their sums are combined in chunk order), never on the threads.
     static constexpr std::size_t chunk_grains = std::size_t{1} << 13;
+    static constexpr std::size_t max_chunks = 64;
     // Grouped runs with a collision target: collisions processed serially in global time order.
     static constexpr std::int64_t tail_collisions = 256;
     // Block pairs chosen by fixed comparisons instead of a loop: up to small_choice + 1 (choose_block_pair).
@@ -989,14 +991,15 @@ class Engine {
             // their sums are combined in, do not depend on the threads): statistics, bucket sizes and
             // each grain's bucket.
             const std::size_t n_s = sp.count;
-            const std::size_t C = (n_s + chunk_grains - 1) / chunk_grains;
+            const std::size_t chunk = std::max(chunk_grains, (n_s + max_chunks - 1) / max_chunks);
+            const std::size_t C = (n_s + chunk - 1) / chunk;
             ccount_.assign(C * B, 0);
             cmax2_.assign(C * B, 0.0);
             csum2_.assign(C, 0.0);
             cps_.assign(C, Vec3{});
             for_chunks(C, [&](std::size_t ch) {
-                const std::size_t lo = sp.offset + ch * chunk_grains;
-                const std::size_t hi = std::min(lo + chunk_grains, sp.offset + n_s);
+                const std::size_t lo = sp.offset + ch * chunk;
+                const std::size_t hi = std::min(lo + chunk, sp.offset + n_s);
                 std::uint32_t* count = &ccount_[ch * B];
                 double* max2 = &cmax2_[static_cast<std::size_t>(ch) * B];
                 double sum2 = 0;
@@ -1053,8 +1056,8 @@ class Engine {
                 b.bound = sqrt_nonneg(max2_[q]);
             }
             for_chunks(C, [&](std::size_t ch) {
-                const std::size_t lo = sp.offset + ch * chunk_grains;
-                const std::size_t hi = std::min(lo + chunk_grains, sp.offset + n_s);
+                const std::size_t lo = sp.offset + ch * chunk;
+                const std::size_t hi = std::min(lo + chunk, sp.offset + n_s);
                 std::uint32_t* next = &ccount_[ch * B];
                 if (B > 1) {
                     // Each bucket's positions are written in increasing order, one stream per bucket
