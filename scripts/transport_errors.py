@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
-"""The DSMC's discretisation errors of the viscosity, measured in Couette flow.
+"""The DSMC's discretisation errors of the viscosity and the conductivity, measured in Couette and Fourier flow.
 
-    scripts/python3 scripts/transport_errors.py [--build build] [--threads 2] [--collisions 1000]
-        [--out out/transport_errors] [--plot docs/transport_errors.png]
+    scripts/python3 scripts/transport_errors.py [--flow couette|fourier] [--build build] [--threads 2]
+        [--collisions 1000] [--out out/transport_errors_FLOW] [--plot docs/transport_errors.png] [--no-run]
 
 An elastic hard-sphere gas (run.density = 0.02, sigma = 1: mean free path lambda = 11.254) between
 diffuse walls at T_w = 1 moving at -0.5 and +0.5 along x, 20 mean free paths apart. The viscosity
@@ -21,8 +21,16 @@ Three series:
           (domain.time_step); the law 1 + 16/(75 pi) (c_0 dt/lambda)^2, c_0 = sqrt(2 T/m)
           (Hadjiconstantinou 2000), that is 1 + (4/75) s^2 for steps of s mean free times
           lambda/cbar.
+--flow fourier measures the conductivity instead: the same channel between diffuse walls at rest
+at T_w = 0.8 and 1.2, kappa = -q_y/(dT/dy) from the walls' energy flux and the slope of T_tr over
+the bulk, in units of the Chapman-Enskog value 1.025218 kappa_0, kappa_0 = (75/64) sqrt(T/(m pi))
+/sigma^2; the cells and steps series only, against the laws 1 + 32/(225 pi) (dy/lambda)^2 (the
+Green-Kubo self term of the energy that a collision carries between grains a cell apart, the
+route by which Alexander, Garcia & Alder 1998 find the viscosity's; 2/5 of it, as kappa_0 is
+15/(4m) eta_0 and the transfers' ratio 3/(2m)) and 1 + 32/(225 pi) (c_0 dt/lambda)^2 = 1 + (8/225) s^2
+(Hadjiconstantinou 2000).
 Prints a table (docs/validation.md) and least-squares fits of the cells and steps series to
-a + b x^2; --plot draws eta/eta_CE against (dy/lambda)^2 and s^2 with the laws.
+a + b x^2; --plot draws the ratio against (dy/lambda)^2 and s^2 with the laws.
 """
 import argparse
 import math
@@ -39,12 +47,14 @@ from atomic_output import save_figure  # noqa: E402
 DENSITY = 0.02
 LAMBDA = 1.0 / (math.sqrt(2.0) * math.pi * DENSITY)
 WIDTH = 20  # mean free paths between the walls
-CELL_LAW = 16.0 / (45.0 * math.pi)
-STEP_LAW = 4.0 / 75.0
+# The leading-order laws' coefficients of (dy/lambda)^2 and s^2 per flow (see the docstring).
+LAWS = {"couette": (16.0 / (45.0 * math.pi), 4.0 / 75.0), "fourier": (32.0 / (225.0 * math.pi), 8.0 / 225.0)}
+WALLS = {"couette": ((1.0, -0.5), (1.0, 0.5)), "fourier": ((0.8, 0.0), (1.2, 0.0))}
 
 
-def case_text(particles, section, cells, partners, time_step, collisions):
-    """A Couette case: section [L_x, L_z] and cells [n_x, n_y, n_z] in mean free paths and counts."""
+def case_text(flow, particles, section, cells, partners, time_step, collisions):
+    """A channel case: section [L_x, L_z] and cells [n_x, n_y, n_z] in mean free paths and counts."""
+    (t_lower, u_lower), (t_upper, u_upper) = WALLS[flow]
     size = [section[0] * LAMBDA, WIDTH * LAMBDA, section[1] * LAMBDA]
     return (f"[run]\nparticles = {particles}\nend = {float(collisions)}\noutput_every = 10.0\n"
             f"density = {DENSITY}\nseed = 1\n\n[[species]]\nmass = 1.0\nradius = 0.5\n\n"
@@ -52,17 +62,17 @@ def case_text(particles, section, cells, partners, time_step, collisions):
             f"[domain]\nsize = [{size[0]!r}, {size[1]!r}, {size[2]!r}]\ncells = {list(cells)}\n"
             "boundary = [\"periodic\", \"walls\", \"periodic\"]\n"
             f"time_step = {time_step}\nallow_coarse = true\npartners = \"{partners}\"\n\n"
-            "[wall_lower]\nkind = \"diffuse\"\ntemperature = 1.0\nvelocity = [-0.5, 0.0, 0.0]\n\n"
-            "[wall_upper]\nkind = \"diffuse\"\ntemperature = 1.0\nvelocity = [0.5, 0.0, 0.0]\n")
+            f"[wall_lower]\nkind = \"diffuse\"\ntemperature = {t_lower}\nvelocity = [{u_lower}, 0.0, 0.0]\n\n"
+            f"[wall_upper]\nkind = \"diffuse\"\ntemperature = {t_upper}\nvelocity = [{u_upper}, 0.0, 0.0]\n")
 
 
-def runs():
+def runs(flow):
     """(series, dy/lambda, steps in mean free times, partners, particles, section, cells)."""
     out = []
     for dy in (0.25, 0.5, 1.0, 1.5, 2.0):
         ny = round(WIDTH / dy)
         out.append(("cells", WIDTH / ny, 0.2, "random", 40000, (1.0, 1.0), (1, ny, 1)))
-    for dy, m in ((0.5, 8), (1.0, 10), (2.0, 10)):
+    for dy, m in ((0.5, 8), (1.0, 10), (2.0, 10)) if flow == "couette" else ():
         ny = round(WIDTH / dy)
         out.append(("nearest", dy, 0.2, "nearest", 20 * m * m * ny, (m * dy, m * dy), (m, ny, m)))
     for s in (0.1, 0.35, 0.5, 0.75, 1.0):
@@ -70,12 +80,14 @@ def runs():
     return out
 
 
-def viscosity(directory, dy):
-    """eta/eta_CE and its standard error from batch means of 10 rows after the first 100 collisions."""
+def transport(flow, directory):
+    """eta/eta_CE (couette) or kappa/kappa_CE (fourier) and its standard error from batch means of
+    10 rows after the first 100 collisions per particle."""
     prof = read_csv(os.path.join(directory, "profiles.csv"))
     walls = read_csv(os.path.join(directory, "walls.csv"))
     times = walls["coll_per_particle"]
-    wall_pxy = 0.5 * (walls["y_lower.P_xy"] + walls["y_upper.P_xy"])
+    flux, field = ("P_xy", "u_x") if flow == "couette" else ("q_y", "T_tr")
+    wall_flux = 0.5 * (walls["y_lower." + flux] + walls["y_upper." + flux])
     keep = [k for k, t in enumerate(times) if t > 100.5]
     batches = [keep[i:i + 10] for i in range(0, len(keep) - 9, 10)]
     ratios = []
@@ -83,16 +95,19 @@ def viscosity(directory, dy):
         ys, us, ts, p = None, None, [], 0.0
         for k in batch:
             rows = prof["coll_per_particle"] == times[k]
-            y, u, T = prof["y"][rows], prof["u_x"][rows], prof["T_tr"][rows]
+            y, u, T = prof["y"][rows], prof[field][rows], prof["T_tr"][rows]
             bulk = (y > 2 * LAMBDA) & (y < (WIDTH - 2) * LAMBDA)
             ys = y[bulk]
             us = u[bulk] / len(batch) if us is None else us + u[bulk] / len(batch)
             ts.append(T[bulk].mean())
-            p += wall_pxy[k] / len(batch)
+            p += wall_flux[k] / len(batch)
         slope = np.polyfit(ys, us, 1)[0]
         T = float(np.mean(ts))
-        eta_ce = 1.016034 * 5.0 / 16.0 * math.sqrt(T / math.pi)
-        ratios.append(-p / slope / eta_ce)
+        if flow == "couette":
+            ce = 1.016034 * 5.0 / 16.0 * math.sqrt(T / math.pi)
+        else:
+            ce = 1.025218 * 75.0 / 64.0 * math.sqrt(T / math.pi)
+        ratios.append(-p / slope / ce)
     r = np.array(ratios)
     return r.mean(), r.std(ddof=1) / math.sqrt(len(r))
 
@@ -108,72 +123,91 @@ def fit(x, y, e):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--flow", choices=("couette", "fourier"), default="couette",
+                    help="couette: the viscosity; fourier: the conductivity")
     ap.add_argument("--build", default="build", help="build directory with the roughgas binary")
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--collisions", type=int, default=1000, help="collisions per particle of each run")
-    ap.add_argument("--out", default="out/transport_errors", help="directory for the cases and runs")
+    ap.add_argument("--out", default=None, help="directory for the cases and runs (out/transport_errors_FLOW)")
     ap.add_argument("--plot", default=None, help="PNG to draw (e.g. docs/transport_errors.png)")
+    ap.add_argument("--no-run", action="store_true", help="analyse the runs already in the output directory")
     a = ap.parse_args()
+    out = a.out or os.path.join("out", "transport_errors_" + a.flow)
     roughgas = os.path.abspath(os.path.join(a.build, "roughgas"))
-    os.makedirs(a.out, exist_ok=True)
+    os.makedirs(out, exist_ok=True)
+    cell_law, step_law = LAWS[a.flow]
+    what = "eta / eta_CE" if a.flow == "couette" else "kappa / kappa_CE"
     results = []
-    for k, (series, dy, s, partners, n, section, cells) in enumerate(runs()):
+    for k, (series, dy, s, partners, n, section, cells) in enumerate(runs(a.flow)):
         name = f"{series}_{k}"
-        case = os.path.join(a.out, name + ".toml")
-        with open(case, "w") as f:
-            f.write(case_text(n, section, cells, partners, s, a.collisions))
-        p = subprocess.run([roughgas, "run", case, "--out", os.path.join(a.out, name), "--force", "--quiet",
-                            "--threads", str(a.threads)], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
-                           text=True)
-        if p.returncode != 0:
-            sys.exit(f"transport_errors: {case} failed ({p.returncode}):\n{p.stderr}")
-        eta, err = viscosity(os.path.join(a.out, name), dy * LAMBDA)
+        case = os.path.join(out, name + ".toml")
+        if not a.no_run:
+            with open(case, "w") as f:
+                f.write(case_text(a.flow, n, section, cells, partners, s, a.collisions))
+            p = subprocess.run([roughgas, "run", case, "--out", os.path.join(out, name), "--force", "--quiet",
+                                "--threads", str(a.threads)], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                               text=True)
+            if p.returncode != 0:
+                sys.exit(f"transport_errors: {case} failed ({p.returncode}):\n{p.stderr}")
+        ratio, err = transport(a.flow, os.path.join(out, name))
         per_cell = n / (cells[0] * cells[1] * cells[2])
-        law = 1 + CELL_LAW * dy ** 2 + STEP_LAW * s ** 2 if partners == "random" else float("nan")
-        results.append((series, dy, s, partners, per_cell, eta, err, law))
+        law = 1 + cell_law * dy ** 2 + step_law * s ** 2 if partners == "random" else float("nan")
+        results.append((series, dy, s, partners, per_cell, ratio, err, law))
         print(f"{series:8s} dy = {dy:.3g} lambda, step {s} mean free times, {partners} partners, "
-              f"{per_cell:.0f} per cell: eta/eta_CE = {eta:.4f} +- {err:.4f} (law {law:.4f})", flush=True)
+              f"{per_cell:.0f} per cell: {what} = {ratio:.4f} +- {err:.4f} (law {law:.4f})", flush=True)
 
     print("\n| series | cell edge along y [lambda] | step [mean free times] | partners | grains per cell "
-          "| eta / eta_CE | leading-order laws |")
+          f"| {what.replace('eta', 'η').replace('kappa', 'κ')} | leading-order laws |")
     print("|---|---|---|---|---|---|---|")
-    for series, dy, s, partners, per_cell, eta, err, law in results:
+    for series, dy, s, partners, per_cell, ratio, err, law in results:
         law_text = "-" if math.isnan(law) else f"{law:.4f}"
-        print(f"| {series} | {dy:.3g} | {s} | {partners} | {per_cell:.0f} | {eta:.4f} ± {err:.4f} | {law_text} |")
-    for series, var, coefficient, what in (("cells", 1, CELL_LAW, "(dy/lambda)^2"), ("steps", 2, STEP_LAW, "s^2")):
+        print(f"| {series} | {dy:.3g} | {s} | {partners} | {per_cell:.0f} | {ratio:.4f} ± {err:.4f} | {law_text} |")
+    for series, var, coefficient, label in (("cells", 1, cell_law, "(dy/lambda)^2"), ("steps", 2, step_law, "s^2")):
         rows = [r for r in results if r[0] == series]
         x = np.array([r[var] ** 2 for r in rows])
         a0, b, sa, sb = fit(x, [r[5] for r in rows], [r[6] for r in rows])
-        print(f"{series}: eta/eta_CE = {a0:.4f} (+- {sa:.4f}) + {b:.4f} (+- {sb:.4f}) {what}; "
+        print(f"{series}: {what} = {a0:.4f} (+- {sa:.4f}) + {b:.4f} (+- {sb:.4f}) {label}; "
               f"leading-order coefficient {coefficient:.4f}")
+        if series == "cells":
+            fine = [r for r in rows if r[1] <= 1.0]
+            a0, b, sa, sb = fit(np.array([r[1] ** 2 for r in fine]), [r[5] for r in fine], [r[6] for r in fine])
+            print(f"cells up to lambda: {what} = {a0:.4f} (+- {sa:.4f}) + {b:.4f} (+- {sb:.4f}) {label}")
     if a.plot:
-        draw(results, a.plot)
+        draw(a.flow, results, a.plot)
 
 
-def draw(results, path):
+def draw(flow, results, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    cell_law, step_law = LAWS[flow]
+    symbol = "η / η_CE" if flow == "couette" else "κ / κ_CE"
+    cell_text = "16/(45π)" if flow == "couette" else "32/(225π)"
+    step_text = "(4/75) s²" if flow == "couette" else "(8/225) s²"
     fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4.2))
     for series, style, label in (("cells", "o", "random partners"), ("nearest", "s", "nearest partners")):
         rows = [r for r in results if r[0] == series]
-        left.errorbar([r[1] ** 2 for r in rows], [r[5] for r in rows], [r[6] for r in rows], fmt=style,
-                      label=label, capsize=3)
+        if rows:
+            left.errorbar([r[1] ** 2 for r in rows], [r[5] for r in rows], [r[6] for r in rows], fmt=style,
+                          label=label, capsize=3)
     x = np.linspace(0, 4.2, 50)
-    left.plot(x, 1 + CELL_LAW * x + STEP_LAW * 0.04, "k--", lw=1, label="1 + 16/(45π) (Δy/λ)²")
+    left.plot(x, 1 + cell_law * x + step_law * 0.04, "k--", lw=1, label=f"1 + {cell_text} (Δy/λ)²")
     left.set_xlabel("(Δy/λ)²: squared cell edge along the gradient")
-    left.set_ylabel("η / η_CE")
+    left.set_ylabel(symbol)
     left.set_title("cells (steps of 0.2 mean free times)")
     left.legend()
     rows = [r for r in results if r[0] == "steps"]
     right.errorbar([r[2] ** 2 for r in rows], [r[5] for r in rows], [r[6] for r in rows], fmt="o",
                    label="random partners, Δy = λ/4", capsize=3)
     x = np.linspace(0, 1.05, 50)
-    right.plot(x, 1 + CELL_LAW / 16 + STEP_LAW * x, "k--", lw=1, label="1 + (4/75) s²")
+    right.plot(x, 1 + cell_law / 16 + step_law * x, "k--", lw=1, label=f"1 + {step_text}")
     right.set_xlabel("s²: squared step in mean free times")
     right.set_title("steps (cells of λ/4)")
     right.legend()
-    fig.suptitle("Couette flow of elastic hard spheres, walls 20 λ apart: the DSMC's viscosity")
+    if flow == "couette":
+        fig.suptitle("Couette flow of elastic hard spheres, walls 20 λ apart: the DSMC's viscosity")
+    else:
+        fig.suptitle("Fourier flow of elastic hard spheres, walls 20 λ apart: the DSMC's conductivity")
     fig.tight_layout()
     save_figure(fig, path)
 

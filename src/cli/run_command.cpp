@@ -351,15 +351,14 @@ int run_run(const RunOptions& o, const Communicator& comm) {
         double edge = 0;
         for (int a = 0; a < 3; ++a)
             edge = std::max(edge, d.size[a] / d.cells[a]);
-        std::string walled; // "y", "x and z", ...
+        std::string walled; // "y (lower: diffuse, upper: diffuse)", "x (...) and z (...)", ...
         for (int a = 0; a < 3; ++a)
             if (d.walled(a))
-                walled += std::string(walled.empty() ? "" : " and ") + "xyz"[a];
+                walled += fmt::format("{}{} (lower: {}, upper: {})", walled.empty() ? "" : " and ", "xyz"[a],
+                                      wall_kind_names[static_cast<std::size_t>(d.wall(a, false).kind)],
+                                      wall_kind_names[static_cast<std::size_t>(d.wall(a, true).kind)]);
         const std::string kind =
-            walled.empty() ? std::string("periodic box")
-                           : fmt::format("box with walls along {} (lower: {}, upper: {})", walled,
-                                         wall_kind_names[static_cast<std::size_t>(d.wall_lower.kind)],
-                                         wall_kind_names[static_cast<std::size_t>(d.wall_upper.kind)]);
+            walled.empty() ? std::string("periodic box") : fmt::format("box with walls along {}", walled);
         const std::string gravity =
             d.has_gravity() ? fmt::format("; gravity [{:.6g}, {:.6g}, {:.6g}]", d.gravity[0], d.gravity[1], d.gravity[2])
                             : std::string();

@@ -83,17 +83,20 @@ void validate(const RunSpec& spec) {
                 "fields every and replicas must be at least 1");
         for (double g : spec.domain->gravity)
             require(std::isfinite(g), "gravity must be finite");
-        for (const WallSpec* w : {&spec.domain->wall_lower, &spec.domain->wall_upper}) {
-            require(w->kind != WallKind::diffuse || (w->temperature > 0 && std::isfinite(w->temperature)),
-                    "a diffuse wall's temperature must be > 0");
-            require(w->kind != WallKind::rough || (w->alpha > 0 && w->alpha <= 1 && std::abs(w->beta) <= 1),
-                    "a rough wall needs 0 < alpha <= 1 and -1 <= beta <= 1");
-            for (int a = 0; a < 3; ++a) {
-                require(std::isfinite(w->velocity[static_cast<std::size_t>(a)]), "wall velocities must be finite");
-                require(!spec.domain->walled(a) || w->velocity[static_cast<std::size_t>(a)] == 0,
+        for (int axis = 0; axis < 3; ++axis)
+            for (const bool upper : {false, true}) {
+                if (!spec.domain->walled(axis))
+                    continue;
+                const WallSpec* w = &spec.domain->wall(axis, upper);
+                require(w->kind != WallKind::diffuse || (w->temperature > 0 && std::isfinite(w->temperature)),
+                        "a diffuse wall's temperature must be > 0");
+                require(w->kind != WallKind::rough || (w->alpha > 0 && w->alpha <= 1 && std::abs(w->beta) <= 1),
+                        "a rough wall needs 0 < alpha <= 1 and -1 <= beta <= 1");
+                for (const double u : w->velocity)
+                    require(std::isfinite(u), "wall velocities must be finite");
+                require(w->velocity[static_cast<std::size_t>(axis)] == 0,
                         "a wall moves only along itself (no velocity along its normal)");
             }
-        }
     }
     if (spec.shear) {
         require(std::isfinite(spec.shear->rate) && spec.shear->rate > 0, "shear rate must be > 0");
@@ -269,8 +272,10 @@ ReplicaEnd run_replica(const RunSpec& spec, const RestitutionTables& tables, int
     // constant smooth and constant rough pairs share one policy type and need no per-collision variant.
     // A rough wall turns the spins of grains smooth among themselves: they need their rotation too.
     const auto rough_wall = [&](const WallSpec& w) { return w.kind == WallKind::rough && w.beta != -1; };
-    const bool spun_by_walls = spec.domain && spec.domain->has_walls() &&
-                               (rough_wall(spec.domain->wall_lower) || rough_wall(spec.domain->wall_upper));
+    bool spun_by_walls = false;
+    if (spec.domain)
+        for (const WallSpec* w : spec.domain->walls_in_use())
+            spun_by_walls = spun_by_walls || rough_wall(*w);
     if (spun_by_walls ||
         std::any_of(policies.begin(), policies.end(), [](const AnyPolicy& p) { return needs_rotation(p); }))
         for (AnyPolicy& p : policies)

@@ -633,16 +633,16 @@ class Builder {
             d.partners = r.choice<PartnerSelection>("partners", partner_names);
             c.domain = d;
         }
-        for (const char* side : {"wall_lower", "wall_upper"})
-            if (const toml::table* t = root_[side].as_table()) {
-                const Reader r(t, side);
+        for (const WallTable& table : wall_tables())
+            if (const toml::table* t = root_[table.name].as_table()) {
+                const Reader r(t, table.name);
                 WallConfig w;
                 w.kind = r.choice<WallKind>("kind", wall_kind_names);
                 w.temperature = r.opt_real("temperature");
                 w.velocity = r.real3("velocity");
                 w.alpha = r.opt_real("alpha");
                 w.beta = r.opt_real("beta");
-                (std::string_view(side) == "wall_lower" ? c.wall_lower : c.wall_upper) = w;
+                wall_config(c, table) = w;
             }
         if (const toml::table* t = root_["initial"].as_table()) {
             const Reader r(t, "initial");
@@ -869,21 +869,32 @@ class Builder {
         if (const toml::array* a = root_["pair"].as_array())
             for (std::size_t i = 0; i < a->size() && i < c.pairs.size(); ++i)
                 table_keys(a->get(i)->as_table(), c.pairs[i].collision, fmt::format("pair.{}", i));
-        for (const auto& [side, w] : {std::pair{"wall_lower", &c.wall_lower}, std::pair{"wall_upper", &c.wall_upper}}) {
-            if (!*w)
+        for (const WallTable& table : wall_tables()) {
+            const std::optional<WallConfig>& w = wall_config(c, table);
+            const std::string& side = table.name;
+            if (!w)
                 continue;
             if (!c.domain || !c.domain->has_walls()) {
                 c.unused.push_back(fmt::format("[{}] is not used: no axis of domain.boundary has \"walls\"", side));
                 continue;
             }
+            if (wall_axes(c, table).empty()) {
+                c.unused.push_back(
+                    table.axis >= 0
+                        ? fmt::format("[{}] is not used: axis {} of domain.boundary is not \"walls\"", side,
+                                      "xyz"[table.axis])
+                        : fmt::format("[{}] is not used: every walled axis has a [{}_x], [{}_y] or [{}_z] of its own",
+                                      side, side, side, side));
+                continue;
+            }
             const toml::table* t = root_[side].as_table();
             for (const char* k : {"alpha", "beta"})
-                if (t->contains(k) && (*w)->kind != WallKind::rough)
+                if (t->contains(k) && w->kind != WallKind::rough)
                     c.unused.push_back(fmt::format("{}.{} is not used by {}.kind = \"{}\"", side, k, side,
-                                                   name((*w)->kind)));
-            if (t->contains("temperature") && (*w)->kind != WallKind::diffuse)
+                                                   name(w->kind)));
+            if (t->contains("temperature") && w->kind != WallKind::diffuse)
                 c.unused.push_back(fmt::format("{}.temperature is not used by {}.kind = \"{}\"", side, side,
-                                               name((*w)->kind)));
+                                               name(w->kind)));
         }
         if (root_["shear"].as_table() != nullptr && c.run.kind != RunKind::shear)
             c.unused.push_back(fmt::format("[shear] is not used by run.kind = \"{}\"", name(c.run.kind)));
@@ -982,23 +993,30 @@ class Builder {
             add("domain.cells", fmt::format("domain.cells = [{}, {}, {}]: {:.3g} cells, at most 1e8", d.cells[0],
                                             d.cells[1], d.cells[2], cells));
         if (d.has_walls()) {
-            for (const auto& [side, w] : {std::pair{"wall_lower", &c.wall_lower}, std::pair{"wall_upper", &c.wall_upper}}) {
-                if (!*w) {
-                    add(side, fmt::format("domain.boundary has \"walls\" but [{}] is missing: give the wall at "
-                                          "{} of each walled axis (kind = \"diffuse\", \"specular\" or \"rough\")",
-                                          side, std::string_view(side) == "wall_lower" ? "0" : "L"));
+            for (int a = 0; a < 3; ++a)
+                for (const bool upper : {false, true})
+                    if (d.boundary[static_cast<std::size_t>(a)] == Boundary::walls &&
+                        !wall_config(c, wall_table_of(c, a, upper))) {
+                        const std::string side = upper ? "wall_upper" : "wall_lower";
+                        add(side, fmt::format("domain.boundary has \"walls\" but [{}] is missing: give the wall at "
+                                              "{} of each walled axis (kind = \"diffuse\", \"specular\" or "
+                                              "\"rough\"), or axis {}'s own [{}_{}]",
+                                              side, upper ? "L" : "0", "xyz"[a], side, "xyz"[a]));
+                    }
+            for (const WallTable& table : wall_tables()) {
+                const std::optional<WallConfig>& w = wall_config(c, table);
+                const std::vector<int> axes = wall_axes(c, table);
+                if (!w || axes.empty())
                     continue;
-                }
-                const WallConfig& wc = **w;
-                if (wc.kind == WallKind::diffuse)
-                    require(wc.temperature.has_value(), std::string(side) + ".temperature",
-                            std::string(side) + ".kind = \"diffuse\"", side);
-                for (std::size_t a = 0; a < 3; ++a)
-                    if (d.boundary[a] == Boundary::walls && wc.velocity[a] != 0)
-                        add(std::string(side) + ".velocity",
+                const std::string& side = table.name;
+                if (w->kind == WallKind::diffuse)
+                    require(w->temperature.has_value(), side + ".temperature", side + ".kind = \"diffuse\"", side);
+                for (const int a : axes)
+                    if (w->velocity[static_cast<std::size_t>(a)] != 0)
+                        add(side + ".velocity",
                             fmt::format("{}.velocity = [{}, {}, {}]: a wall of axis {} moves along itself only "
                                         "(component {} must be 0)",
-                                        side, wc.velocity[0], wc.velocity[1], wc.velocity[2], "xyz"[a], "xyz"[a]));
+                                        side, w->velocity[0], w->velocity[1], w->velocity[2], "xyz"[a], "xyz"[a]));
             }
         }
         double lambda = mean_free_path(c);
@@ -1377,16 +1395,17 @@ std::string emit_case(const CaseConfig& c) {
         e.put("every", c.fields->every);
         e.put("replicas", c.fields->replicas);
     }
-    for (const auto& [side, w] : {std::pair{"[wall_lower]", &c.wall_lower}, std::pair{"[wall_upper]", &c.wall_upper}}) {
-        if (!*w)
+    for (const WallTable& table : wall_tables()) {
+        const std::optional<WallConfig>& w = wall_config(c, table);
+        if (!w)
             continue;
-        e.header(side);
-        e.put("kind", name((*w)->kind));
-        if ((*w)->temperature)
-            e.put("temperature", *(*w)->temperature);
-        e.put("velocity", (*w)->velocity);
-        e.put("alpha", (*w)->alpha);
-        e.put("beta", (*w)->beta);
+        e.header("[" + table.name + "]");
+        e.put("kind", name(w->kind));
+        if (w->temperature)
+            e.put("temperature", *w->temperature);
+        e.put("velocity", w->velocity);
+        e.put("alpha", w->alpha);
+        e.put("beta", w->beta);
     }
     e.header("[restitution]");
     e.put("g_n_min", c.restitution.g_n_min);

@@ -315,7 +315,8 @@ std::vector<Key> keys() {
             .fallback(std::string("periodic"))
             .one_of(boundary_names)
             .doc("the boundary of each axis: periodic, or walls (two flat walls, at 0 and at L, described "
-                 "in [wall_lower] and [wall_upper]); with run.kind = shear, y is Lees-Edwards (the images "
+                 "in [wall_lower] and [wall_upper], or for one axis in its own [wall_lower_x], [wall_upper_x], "
+                 "...); with run.kind = shear, y is Lees-Edwards (the images "
                  "above and below move at +-shear.rate L_y along x) and x must be periodic too"),
         Key("domain.gravity", T::real3)
             .unit("length/time^2")
@@ -426,15 +427,18 @@ std::vector<Key> keys() {
             .doc("spacing of both grids: log (geometric) or linear"),
     };
     k.insert(k.end(), rest.begin(), rest.end());
-    // [wall_lower], [wall_upper]: after [initial]
+    // [wall_lower], [wall_upper], then each axis's own [wall_lower_x], ...: after [initial]
     std::vector<Key> walls;
-    for (const std::string side : {"wall_lower", "wall_upper"}) {
-        const std::string where = side == "wall_lower" ? "at 0" : "at L";
+    for (const WallTable& table : wall_tables()) {
+        const std::string side = table.name;
+        const std::string where = std::string(table.upper ? "at L" : "at 0") +
+                                  (table.axis < 0 ? std::string(" of every walled axis without a wall of its own")
+                                                  : std::string(" of axis ") + "xyz"[table.axis]);
         walls.push_back(Key(side + ".kind", T::string)
                             .fallback(std::string("diffuse"))
                             .one_of(wall_kind_names)
                             .doc("the wall " + where +
-                                 " of every walled axis: diffuse (re-emits grains from the flux-weighted "
+                                 ": diffuse (re-emits grains from the flux-weighted "
                                  "Maxwellian at its temperature and velocity, spins from the Maxwellian at its "
                                  "temperature), specular (reverses the normal velocity), rough (the collision "
                                  "rule with an infinitely massive flat partner, its alpha and beta)"));
@@ -446,8 +450,8 @@ std::vector<Key> keys() {
         walls.push_back(Key(side + ".velocity", T::real3)
                             .unit("length/time")
                             .when("[0, 0, 0]")
-                            .doc("the wall's velocity U_w, along the wall (0 along a walled axis): a Couette "
-                                 "flow between walls moving apart; diffuse and rough walls"));
+                            .doc("the wall's velocity U_w, along the wall (0 along every axis it closes): a "
+                                 "Couette flow between walls moving apart; diffuse and rough walls"));
         walls.push_back(Key(side + ".alpha", T::real)
                             .fallback(1.0)
                             .gt(0)
@@ -622,10 +626,22 @@ const std::vector<TableSpec>& case_tables() {
         {"fields", false, "optional (with [domain])",
          "the fields of every collision cell at output rows, as HDF5 files with an XDMF sidecar for ParaView "
          "(docs/reference.md)"},
-        {"wall_lower", false, "required for domain.boundary with \"walls\"",
-         "the wall at coordinate 0 of every walled axis"},
-        {"wall_upper", false, "required for domain.boundary with \"walls\"",
-         "the wall at coordinate L of every walled axis"},
+        {"wall_lower", false, "required for domain.boundary with \"walls\" unless every walled axis has its own",
+         "the wall at coordinate 0 of every walled axis without a [wall_lower_x], [wall_lower_y] or [wall_lower_z]"},
+        {"wall_upper", false, "required for domain.boundary with \"walls\" unless every walled axis has its own",
+         "the wall at coordinate L of every walled axis without a [wall_upper_x], [wall_upper_y] or [wall_upper_z]"},
+        {"wall_lower_x", false, "optional (with walls along x)",
+         "the wall at x = 0 (the keys of [wall_lower]), in place of [wall_lower] there"},
+        {"wall_upper_x", false, "optional (with walls along x)",
+         "the wall at x = L_x (the keys of [wall_upper]), in place of [wall_upper] there"},
+        {"wall_lower_y", false, "optional (with walls along y)",
+         "the wall at y = 0 (the keys of [wall_lower]), in place of [wall_lower] there"},
+        {"wall_upper_y", false, "optional (with walls along y)",
+         "the wall at y = L_y (the keys of [wall_upper]), in place of [wall_upper] there"},
+        {"wall_lower_z", false, "optional (with walls along z)",
+         "the wall at z = 0 (the keys of [wall_lower]), in place of [wall_lower] there"},
+        {"wall_upper_z", false, "optional (with walls along z)",
+         "the wall at z = L_z (the keys of [wall_upper]), in place of [wall_upper] there"},
         {"restitution", false, "optional", "the grid that roughgas restitution tabulates"},
     };
     return tables;

@@ -74,6 +74,12 @@ RunSpec run_spec_from_case(const CaseConfig& cfg) {
         };
         d.wall_lower = wall(cfg.wall_lower);
         d.wall_upper = wall(cfg.wall_upper);
+        for (std::size_t a = 0; a < 3; ++a) {
+            if (cfg.axis_wall_lower[a])
+                d.axis_lower[a] = wall(cfg.axis_wall_lower[a]);
+            if (cfg.axis_wall_upper[a])
+                d.axis_upper[a] = wall(cfg.axis_wall_upper[a]);
+        }
         if (cfg.initial) {
             d.initial.mode = cfg.initial->mode;
             d.initial.amplitude = cfg.initial->amplitude;

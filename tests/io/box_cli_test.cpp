@@ -10,6 +10,8 @@
 #include "roughgas/observables/shear_mode.hpp"
 
 #include <fmt/format.h>
+#include "roughgas/io/case_file.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -105,6 +107,11 @@ TEST(BoxCli, RefusesWhatTheBoxCannotRunBeforeAnyWork) {
         {replaced(walls, "seed = 4", "seed = 4\nkind = \"shear\"") + lower + upper + "\n[shear]\nrate = 1.0\n",
          "domain.boundary", "Lees-Edwards boundaries along y"},
         {walls + "[wall_upper]\nkind = \"specular\"\n", "wall_lower", "[wall_lower] is missing"},
+        {replaced(walls, "[\"periodic\", \"walls\", \"periodic\"]", "[\"walls\", \"walls\", \"periodic\"]") +
+             replaced(lower, "[wall_lower]", "[wall_lower_y]") + upper,
+         "wall_lower", "or axis x's own [wall_lower_x]"},
+        {walls + lower + upper + "[wall_upper_y]\nkind = \"rough\"\nvelocity = [0.0, 0.1, 0.0]\n",
+         "wall_upper_y.velocity", "moves along itself only"},
         {walls + lower + "[wall_upper]\nkind = \"diffuse\"\n", "wall_upper.temperature",
          "required for wall_upper.kind = \"diffuse\""},
         {walls + replaced(lower, "[0.0, 0.0, 0.3]", "[0.0, 0.2, 0.3]") + upper, "wall_lower.velocity",
@@ -332,6 +339,60 @@ TEST(BoxCli, CheckStatesTheShearModesStability) {
         << stable.out;
 }
 
+// Elastic smooth grains, 20000 of them to 20 collisions per particle with rows at linear spacing, in
+// the box of box_case with `boundary` (its wall tables to be added).
+std::string elastic_walled_box(const std::string& boundary) {
+    return replaced(replaced(replaced(box_case(20000, 1, 20.0), "alpha = 0.9\nbeta = 0.4", "alpha = 1.0\nbeta = -1.0"),
+                             "cells = [5, 5, 5]", "cells = [5, 5, 5]\nboundary = " + boundary),
+                    "output_spacing = \"log\"", "output_spacing = \"linear\"");
+}
+
+// Walls along x and y, each axis its own: x closed by specular walls of its own ([wall_lower_x],
+// [wall_upper_x]), y by the shared [wall_lower], [wall_upper], diffuse at 1.5 and 0.5 and sliding
+// along x (allowed: they close y only). The specular walls exchange no energy and no tangential
+// momentum (exactly 0 in every row), the hot wall gives heat and the cold one takes it (means over
+// the rows beyond 5 standard errors), the header names each axis's walls, and a table for the
+// periodic z is reported as unused.
+TEST(BoxCli, EachAxisCanHaveWallsOfItsOwn) {
+    const test::ScratchDir dir;
+    const std::string text =
+        elastic_walled_box("[\"walls\", \"walls\", \"periodic\"]") +
+        "\n[wall_lower]\ntemperature = 1.5\nvelocity = [0.2, 0.0, 0.0]\n\n[wall_upper]\ntemperature = 0.5\n"
+        "velocity = [-0.2, 0.0, 0.0]\n\n[wall_lower_x]\nkind = \"specular\"\n\n[wall_upper_x]\nkind = \"specular\"\n\n"
+        "[wall_lower_z]\nkind = \"specular\"\n";
+    const fs::path f = dir.write("own.toml", text);
+    const CaseConfig c = load_case(f.string());
+    ASSERT_TRUE(c.axis_wall_lower[0] && c.axis_wall_upper[0] && c.axis_wall_lower[2] && !c.axis_wall_lower[1]);
+    EXPECT_EQ(parse_case(emit_case(c), "emitted.toml"), c) << "the echo in the CSV headers and checkpoints reads back";
+    const test::CommandResult r = test::run_roughgas("run " + q(f) + " --out " + q(dir / "out"), dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("[wall_lower_z] is not used: axis z of domain.boundary is not \"walls\""), std::string::npos)
+        << r.err;
+    EXPECT_NE(test::read_file(dir / "out" / "moments.csv")
+                  .find("walls along x (lower: specular, upper: specular) and y (lower: diffuse, upper: diffuse)"),
+              std::string::npos);
+    const auto csv = test::read_csv(dir / "out" / "walls.csv");
+    const std::size_t rows = csv.at("t").size();
+    ASSERT_GT(rows, 10u);
+    for (std::size_t k = 1; k < rows; ++k) {
+        for (const char* wall : {"x_lower", "x_upper"}) {
+            EXPECT_GT(csv.at(std::string(wall) + ".hits")[k], 0) << wall << " row " << k;
+            for (const char* column : {".q_x", ".P_yx", ".P_zx"})
+                EXPECT_EQ(csv.at(wall + std::string(column))[k], 0.0) << wall << column << " row " << k;
+        }
+    }
+    for (const char* column : {"y_lower.q_y", "y_upper.q_y"}) {
+        const std::vector<double>& x = csv.at(column);
+        double mean = 0, ss = 0;
+        const double K = static_cast<double>(rows - 1);
+        for (std::size_t k = 1; k < rows; ++k)
+            mean += x[k] / K;
+        for (std::size_t k = 1; k < rows; ++k)
+            ss += (x[k] - mean) * (x[k] - mean);
+        EXPECT_GT(mean, 5 * std::sqrt(ss / (K * (K - 1)))) << column << ": heat flows from the hot wall to the cold";
+    }
+}
+
 // Elastic smooth grains between two diffuse walls at their temperature (normal to y): walls.csv has
 // a row per moments.csv row, the same bytes for one and two threads; averaged over the rows after
 // the first, each wall's pressure P_yy is n T_w and its hit rate n sqrt(T_w/(2 pi m)) (5 standard
@@ -339,9 +400,7 @@ TEST(BoxCli, CheckStatesTheShearModesStability) {
 TEST(BoxCli, WallsFileHasTheWallsPressureAndHitRate) {
     const test::ScratchDir dir;
     const std::string text =
-        replaced(replaced(replaced(box_case(20000, 1, 20.0), "alpha = 0.9\nbeta = 0.4", "alpha = 1.0\nbeta = -1.0"),
-                          "cells = [5, 5, 5]", "cells = [5, 5, 5]\nboundary = [\"periodic\", \"walls\", \"periodic\"]"),
-                 "output_spacing = \"log\"", "output_spacing = \"linear\"") +
+        elastic_walled_box("[\"periodic\", \"walls\", \"periodic\"]") +
         "\n[wall_lower]\ntemperature = 1.0\n\n[wall_upper]\ntemperature = 1.0\n";
     const fs::path f = dir.write("walls.toml", text);
     const std::string run = "run " + q(f) + " --quiet --out ";

@@ -134,8 +134,7 @@ Rates fitted_rates(const RunSpec& spec, const Eigen::Matrix3cd& M, const Longitu
 // The DSMC's transport coefficients for cells of lambda/4 along the wave and steps of 0.2 mean free
 // times: the viscosity's cell-size and step laws, 16/(45 pi) (1/4)^2 + 16/(75 pi) (0.2 sqrt(pi)/2)^2
 // = 0.98 %, and the thermal conductivity's cell-size law 32/(225 pi) (1/4)^2 = 0.28 % (Alexander,
-// Garcia & Alder 1998) with a step term of the same form, 0.14 % (its own coefficient is not used
-// here; either is far below the tests' allowances).
+// Garcia & Alder 1998) and step law 32/(225 pi) (0.2 sqrt(pi)/2)^2 = 0.14 % (Hadjiconstantinou 2000).
 LongitudinalModeTheory dsmc_theory(LongitudinalModeTheory t, double eta_factor, double kappa_factor) {
     const double step = std::pow(0.2 * std::sqrt(std::numbers::pi) / 2, 2);
     t.shear.eta_star *= eta_factor * (1 + 16 / (45 * std::numbers::pi) / 16 + 16 / (75 * std::numbers::pi) * step);

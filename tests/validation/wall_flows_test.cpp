@@ -8,8 +8,10 @@
 //     c_0 = sqrt(2 T/m) (Hadjiconstantinou 2000).
 //   Fourier: walls at rest at T_w (1 -/+ 0.2). The heat flux is the same everywhere: the bulk's q_y
 //     equals what the walls give. The conductivity -q_y/(dT/dy) is 1.025218 kappa_0,
-//     kappa_0 = (75/(64 sigma^2)) sqrt(T/(pi m)), raised by 16/(45 pi) (dy/lambda)^2 and
-//     32/(225 pi) (c_0 dt/lambda)^2 (the same authors).
+//     kappa_0 = (75/(64 sigma^2)) sqrt(T/(pi m)), raised by 32/(225 pi) (dy/lambda)^2 (the
+//     Green-Kubo self term of the energy a collision carries between grains a cell apart, as the
+//     viscosity's law is derived: 2/5 of its coefficient) and 32/(225 pi) (c_0 dt/lambda)^2
+//     (Hadjiconstantinou 2000).
 //   Couette in cells of 2 lambda: the cell-size error of the viscosity with random partners, and
 //     with nearest partners the error of the grains' spacing instead.
 // Gradients fitted over the bulk, two mean free paths from each wall (outside the Knudsen layers),
@@ -147,14 +149,16 @@ class Channel {
     double dy_ = 1;
 };
 
-// The DSMC's relative cell-size and time-step errors at temperature T (m = 1), with coefficient
-// `step_coefficient` of (c_0 dt/lambda)^2; dt = 0.2 mean free times lambda/cbar.
-double discretisation(double dy, double T, double step_coefficient) {
+// The DSMC's relative cell-size and time-step errors at temperature T (m = 1), with coefficients
+// `cell_coefficient` of (dy/lambda)^2 and `step_coefficient` of (c_0 dt/lambda)^2; dt = 0.2 mean
+// free times lambda/cbar.
+double discretisation(double dy, double T, double cell_coefficient, double step_coefficient) {
     const double c0 = std::sqrt(2 * T), cbar = std::sqrt(8 * T / std::numbers::pi);
     const double dt = 0.2 * lambda / cbar;
-    return 1 + 16.0 / (45 * std::numbers::pi) * (dy / lambda) * (dy / lambda) +
-           step_coefficient * std::pow(c0 * dt / lambda, 2);
+    return 1 + cell_coefficient * (dy / lambda) * (dy / lambda) + step_coefficient * std::pow(c0 * dt / lambda, 2);
 }
+const double viscosity_cell = 16.0 / (45 * std::numbers::pi), viscosity_step = 16.0 / (75 * std::numbers::pi);
+const double conductivity_cell = 32.0 / (225 * std::numbers::pi), conductivity_step = 32.0 / (225 * std::numbers::pi);
 
 TEST(WallFlows, CouetteMomentumFluxIsUniformAndGivesTheChapmanEnskogViscosity) {
     const double U = 0.5;
@@ -164,7 +168,7 @@ TEST(WallFlows, CouetteMomentumFluxIsUniformAndGivesTheChapmanEnskogViscosity) {
     for (int k = 0; k < 9; ++k) {
         const Batch b = c.batch(k, "P_xy", {"P_xy", "Pc_xy"}, "u_x");
         const double eta0 = 5.0 / (16.0 * sigma * sigma) * std::sqrt(b.T / std::numbers::pi);
-        ratio.push_back(-b.wall / b.slope / (1.016034 * eta0 * discretisation(c.dy(), b.T, 16.0 / (75 * std::numbers::pi))));
+        ratio.push_back(-b.wall / b.slope / (1.016034 * eta0 * discretisation(c.dy(), b.T, viscosity_cell, viscosity_step)));
         difference.push_back((b.bulk - b.wall) / std::abs(b.wall));
     }
     std::printf("eta / eta_DSMC = %.4f +- %.4f; (bulk - wall) P_xy / |P_xy| = %.4f +- %.4f\n", mean(ratio),
@@ -182,7 +186,7 @@ TEST(WallFlows, FourierHeatFluxIsUniformAndGivesTheChapmanEnskogConductivity) {
         const Batch b = c.batch(k, "q_y", {"q_y"}, "T_tr");
         const double kappa0 = 75.0 / (64.0 * sigma * sigma) * std::sqrt(b.T / std::numbers::pi);
         ratio.push_back(-b.wall / b.slope /
-                        (1.025218 * kappa0 * discretisation(c.dy(), b.T, 32.0 / (225 * std::numbers::pi))));
+                        (1.025218 * kappa0 * discretisation(c.dy(), b.T, conductivity_cell, conductivity_step)));
         difference.push_back((b.bulk - b.wall) / std::abs(b.wall));
     }
     std::printf("kappa / kappa_DSMC = %.4f +- %.4f; (bulk - wall) q_y / |q_y| = %.4f +- %.4f\n", mean(ratio),
@@ -214,7 +218,7 @@ TEST(WallFlows, NearestPartnersRemoveMostOfTheCellSizeErrorOfTheViscosity) {
             const double eta0 = 5.0 / (16.0 * sigma * sigma) * std::sqrt(b.T / std::numbers::pi);
             // The time-step error alone: the cell's is what is measured.
             ratio.push_back(-b.wall / b.slope /
-                            (1.016034 * eta0 * discretisation(0, b.T, 16.0 / (75 * std::numbers::pi))));
+                            (1.016034 * eta0 * discretisation(0, b.T, viscosity_cell, viscosity_step)));
         }
         mean_ratio.push_back(mean(ratio));
         se_ratio.push_back(standard_error(ratio));

@@ -103,8 +103,10 @@ struct DomainSpec {
     std::array<double, 3> size{1, 1, 1}; // L_x, L_y, L_z (the case's length unit)
     std::array<int, 3> cells{1, 1, 1};   // collision cells along each axis
     std::array<Boundary, 3> boundary{Boundary::periodic, Boundary::periodic, Boundary::periodic};
-    // The walls at coordinate 0 (lower) and L (upper) of every walled axis.
+    // The walls at coordinate 0 (lower) and L (upper) of every walled axis, unless the axis has its
+    // own (axis_lower[a], axis_upper[a]: a floor that heats beside side walls that only reflect).
     WallSpec wall_lower, wall_upper;
+    std::array<std::optional<WallSpec>, 3> axis_lower, axis_upper;
     std::array<double, 3> gravity{0, 0, 0}; // uniform acceleration
     int profile_axis = 0;                   // profiles.csv: slabs normal to this axis, one per cell along it
     // Lees-Edwards boundaries along y (run.kind = shear): the images above and below move at
@@ -120,6 +122,20 @@ struct DomainSpec {
     GrainStateSource initial_state;
 
     bool walled(int axis) const { return boundary[static_cast<std::size_t>(axis)] == Boundary::walls; }
+    // The wall at 0 (upper: at L) of `axis`.
+    const WallSpec& wall(int axis, bool upper) const {
+        const std::optional<WallSpec>& own = (upper ? axis_upper : axis_lower)[static_cast<std::size_t>(axis)];
+        return own ? *own : upper ? wall_upper : wall_lower;
+    }
+    // The walls the walled axes use, lower then upper per axis.
+    std::vector<const WallSpec*> walls_in_use() const {
+        std::vector<const WallSpec*> w;
+        for (int a = 0; a < 3; ++a)
+            if (walled(a))
+                for (const bool upper : {false, true})
+                    w.push_back(&wall(a, upper));
+        return w;
+    }
     bool has_walls() const { return walled(0) || walled(1) || walled(2); }
     bool has_gravity() const { return gravity[0] != 0 || gravity[1] != 0 || gravity[2] != 0; }
     bool lees_edwards() const { return shear_rate != 0; }

@@ -141,7 +141,7 @@ template <class Policy, bool General = false> class SpatialEngine {
             throw std::invalid_argument("SpatialEngine: Lees-Edwards boundaries need x and y periodic");
         for (const SpeciesBlock& b : blocks_)
             wall_pc_.push_back(wall_pair_constants(b.grain));
-        for (const WallSpec* w : {&domain_.wall_lower, &domain_.wall_upper}) {
+        for (const WallSpec* w : domain_.walls_in_use()) {
             if (w->kind == WallKind::rough && !rough && w->beta != -1)
                 throw std::invalid_argument("SpatialEngine: a rough wall (beta > -1) needs rough grains");
             if (w->kind == WallKind::rough && !(w->alpha > 0 && w->alpha <= 1 && std::abs(w->beta) <= 1))
@@ -682,7 +682,7 @@ template <class Policy, bool General = false> class SpatialEngine {
 
     // Grain i (species s, velocity v at the wall) meets the wall of axis a.
     void hit_wall(std::size_t i, std::size_t s, int a, bool upper, Vec3& v, CollisionRng& rng, WallFlux& flux) {
-        const WallSpec& wall = upper ? domain_.wall_upper : domain_.wall_lower;
+        const WallSpec& wall = domain_.wall(a, upper);
         const double sign = upper ? -1.0 : 1.0; // n = sign e_a, from the wall into the gas
         Vec3 U{wall.velocity[0], wall.velocity[1], wall.velocity[2]};
         component(U, a) = 0;

@@ -241,12 +241,57 @@ struct CaseConfig {
     std::optional<SpectraConfig> spectra; // present iff [spectra] was given
     std::optional<FieldsConfig> fields;   // present iff [fields] was given
     std::optional<WallConfig> wall_lower, wall_upper; // present iff given
+    // [wall_lower_x], [wall_upper_x], ... _y, _z: one axis's own walls, present iff given.
+    std::array<std::optional<WallConfig>, 3> axis_wall_lower, axis_wall_upper;
     // Keys and tables given but not used by the chosen models or run kind (kept, not refused: a user
     // may switch the model or kind with --set and back); commands print them as warnings.
     std::vector<std::string> unused;
     RestitutionGridConfig restitution;
     friend bool operator==(const CaseConfig&, const CaseConfig&) = default;
 };
+
+// The wall tables: [wall_lower] and [wall_upper] serve every walled axis (axis -1) that has no
+// table of its own, [wall_lower_x], [wall_upper_x], ... _y, _z (axis 0, 1, 2).
+struct WallTable {
+    std::string name; // "wall_lower", "wall_upper_y", ...
+    int axis = -1;
+    bool upper = false;
+};
+inline std::vector<WallTable> wall_tables() {
+    std::vector<WallTable> t{{"wall_lower", -1, false}, {"wall_upper", -1, true}};
+    for (int a = 0; a < 3; ++a)
+        for (const bool upper : {false, true})
+            t.push_back({std::string(upper ? "wall_upper_" : "wall_lower_") + "xyz"[a], a, upper});
+    return t;
+}
+inline std::optional<WallConfig>& wall_config(CaseConfig& c, const WallTable& t) {
+    if (t.axis < 0)
+        return t.upper ? c.wall_upper : c.wall_lower;
+    return (t.upper ? c.axis_wall_upper : c.axis_wall_lower)[static_cast<std::size_t>(t.axis)];
+}
+inline const std::optional<WallConfig>& wall_config(const CaseConfig& c, const WallTable& t) {
+    if (t.axis < 0)
+        return t.upper ? c.wall_upper : c.wall_lower;
+    return (t.upper ? c.axis_wall_upper : c.axis_wall_lower)[static_cast<std::size_t>(t.axis)];
+}
+// The table that describes the wall at 0 (upper: at L) of `axis`: its own, else the shared one.
+inline WallTable wall_table_of(const CaseConfig& c, int axis, bool upper) {
+    const WallTable own{std::string(upper ? "wall_upper_" : "wall_lower_") + "xyz"[axis], axis, upper};
+    if (wall_config(c, own))
+        return own;
+    return {upper ? "wall_upper" : "wall_lower", -1, upper};
+}
+
+// The walled axes whose wall `t` describes (none when it is not used).
+inline std::vector<int> wall_axes(const CaseConfig& c, const WallTable& t) {
+    std::vector<int> axes;
+    if (!c.domain)
+        return axes;
+    for (int a = 0; a < 3; ++a)
+        if (c.domain->boundary[static_cast<std::size_t>(a)] == Boundary::walls && wall_table_of(c, a, t.upper).name == t.name)
+            axes.push_back(a);
+    return axes;
+}
 
 // The collision rule of species i with species j: its [[pair]] table, else [collision].
 inline const CollisionConfig& collision_for(const CaseConfig& cfg, std::size_t i, std::size_t j) {
@@ -280,9 +325,14 @@ inline bool driven(const CaseConfig& c) {
         return true;
     if (!c.domain || !c.domain->has_walls())
         return false;
-    for (const std::optional<WallConfig>* w : {&c.wall_lower, &c.wall_upper})
-        if (*w && ((*w)->kind == WallKind::diffuse || (*w)->velocity != std::array<double, 3>{}))
-            return true;
+    for (int a = 0; a < 3; ++a)
+        for (const bool upper : {false, true}) {
+            if (c.domain->boundary[static_cast<std::size_t>(a)] != Boundary::walls)
+                continue;
+            const std::optional<WallConfig>& w = wall_config(c, wall_table_of(c, a, upper));
+            if (w && (w->kind == WallKind::diffuse || w->velocity != std::array<double, 3>{}))
+                return true;
+        }
     return false;
 }
 
