@@ -240,8 +240,10 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
             row.insert(row.end(), profiles.begin(), profiles.end());
             if (spectra) {
                 // The engine's cells are the spectra's grid: its sums per cell, with no pass over positions.
+                const std::vector<double> spins =
+                    domain.spectra->modes > 0 ? engine.cell_spin_sums() : std::vector<double>{};
                 const std::vector<double> s = spectra->compute_from_cell_sums(
-                    engine.cell_sums(), engine.cell_sum_fields, engine.velocities(), blocks, engine.team());
+                    engine.cell_sums(), engine.cell_sum_fields, spins, engine.velocities(), blocks, engine.team());
                 row.insert(row.end(), s.begin(), s.end());
             }
             if (row.size() != columns)

@@ -138,6 +138,8 @@ Spectra::Spectra(const SpectraGeometry& g) : g_(g), bins_(spectrum_bins(g)), mod
         fields_[static_cast<std::size_t>(f)].assign(G, 0.0);
         transforms_[static_cast<std::size_t>(f)].assign(2 * H, 0.0);
     }
+    if (!modes_.empty())
+        rotation_.assign(G, 0.0);
     plan_ = std::make_unique<Plan>();
     {
         const std::lock_guard<std::mutex> lock(planner_mutex());
@@ -172,7 +174,7 @@ Spectra::~Spectra() {
 const std::vector<double>& Spectra::transform(int f) const { return transforms_.at(static_cast<std::size_t>(f)); }
 const std::vector<double>& Spectra::field(int f) const { return fields_.at(static_cast<std::size_t>(f)); }
 
-std::vector<double> Spectra::compute(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+std::vector<double> Spectra::compute(const std::vector<Vec3>& x, const std::vector<Vec3>& v, const std::vector<Vec3>& w,
                                      const std::vector<SpeciesBlock>& species, WorkerTeam& team) {
     const std::array<int, 3>& G = g_.grid;
     // The mass-weighted mean velocity U: the currents and energies are of c = v - U (a drift would
@@ -202,9 +204,22 @@ std::vector<double> Spectra::compute(const std::vector<Vec3>& x, const std::vect
         squares += sum2 - e_species[s] * sum;
     }
     const double e_mean = N > 0 ? E / N : 0.0;
+    // Each species' mean rotational energy r_s and the grains' mean r (T_rot's modes).
+    std::vector<double> r_species(species.size(), 0.0);
+    double R = 0;
+    if (!modes_.empty())
+        for (std::size_t s = 0; s < species.size(); ++s) {
+            const SpeciesBlock& b = species[s];
+            double sum = 0;
+            for (std::size_t i = b.offset; i < b.offset + b.count; ++i)
+                sum += 0.5 * b.moment_of_inertia() * norm2(w[i]);
+            r_species[s] = b.count > 0 ? sum / static_cast<double>(b.count) : 0.0;
+            R += sum;
+        }
     // Nearest grid point, grain by grain in store order (a deterministic sum per cell).
     for (std::vector<double>& f : fields_)
         std::fill(f.begin(), f.end(), 0.0);
+    std::fill(rotation_.begin(), rotation_.end(), 0.0);
     std::array<double, 3> per_length{};
     for (std::size_t a = 0; a < 3; ++a)
         per_length[a] = G[a] / g_.box[a];
@@ -225,19 +240,23 @@ std::vector<double> Spectra::compute(const std::vector<Vec3>& x, const std::vect
             fields_[2][c] += m * cv.y;
             fields_[3][c] += m * cv.z;
             fields_[4][c] += 0.5 * m * norm2(cv) - e_species[s];
+            if (!modes_.empty())
+                rotation_[c] += 0.5 * b.moment_of_inertia() * norm2(w[i]) - r_species[s];
         }
     }
-    return finish(N, M, e_mean, squares, team);
+    return finish(N, M, e_mean, squares, N > 0 ? R / N : 0.0, team);
 }
 
 std::vector<double> Spectra::compute_from_cell_sums(const std::vector<double>& cell_sums, std::size_t fields,
-                                                    const std::vector<Vec3>& v,
+                                                    const std::vector<double>& spin_sums, const std::vector<Vec3>& v,
                                                     const std::vector<SpeciesBlock>& species, WorkerTeam& team) {
     const std::array<int, 3>& G = g_.grid;
     const std::size_t S = species.size(), nx = static_cast<std::size_t>(G[0]), ny = static_cast<std::size_t>(G[1]),
                       nz = static_cast<std::size_t>(G[2]), cells = nx * ny * nz;
     if (fields < 5 || cell_sums.size() != cells * S * fields)
         throw std::logic_error("Spectra: the cell sums do not fit the grid and species");
+    if (!modes_.empty() && spin_sums.size() != cells * S)
+        throw std::logic_error("Spectra: the modes need the spins' sums per cell and species");
     const auto at = [&](std::size_t c, std::size_t s) { return cell_sums.data() + (c * S + s) * fields; };
     // U from the cells' momenta; each species' mean kinetic energy about it,
     // sum_j m |v_j - U|^2 / 2 = (m/2) (sum |v|^2 - 2 U.sum v + n |U|^2), from the cells' sums too.
@@ -268,6 +287,19 @@ std::vector<double> Spectra::compute_from_cell_sums(const std::vector<double>& c
         E += sum;
     }
     const double e_mean = N > 0 ? E / N : 0.0;
+    // Each species' mean rotational energy r_s and the grains' mean r, from the spins' sums.
+    std::vector<double> r_species(S, 0.0);
+    double R = 0;
+    if (!modes_.empty()) {
+        for (std::size_t c = 0; c < cells; ++c)
+            for (std::size_t s = 0; s < S; ++s)
+                r_species[s] += spin_sums[c * S + s];
+        for (std::size_t s = 0; s < S; ++s) {
+            const double sum = 0.5 * species[s].moment_of_inertia() * r_species[s];
+            r_species[s] = n_species[s] > 0 ? sum / n_species[s] : 0.0;
+            R += sum;
+        }
+    }
     // sum_j (e_j - e_s(j))^2 needs the grains themselves: one pass over the velocities.
     double squares = 0;
     for (std::size_t s = 0; s < S; ++s) {
@@ -302,11 +334,18 @@ std::vector<double> Spectra::compute_from_cell_sums(const std::vector<double>& c
                 fields_[2][to] = py;
                 fields_[3][to] = pz;
                 fields_[4][to] = h;
+                if (!modes_.empty()) {
+                    double r = 0;
+                    for (std::size_t s = 0; s < S; ++s)
+                        r += 0.5 * species[s].moment_of_inertia() * spin_sums[c * S + s] - at(c, s)[0] * r_species[s];
+                    rotation_[to] = r;
+                }
             }
-    return finish(N, M, e_mean, squares, team);
+    return finish(N, M, e_mean, squares, N > 0 ? R / N : 0.0, team);
 }
 
-std::vector<double> Spectra::finish(double N, double M, double e_mean, double squares, WorkerTeam& team) {
+std::vector<double> Spectra::finish(double N, double M, double e_mean, double squares, double r_mean,
+                                    WorkerTeam& team) {
     const std::array<int, 3>& G = g_.grid;
     const fftw_plan plan = plan_->plan;
     team.for_each(5, [&](std::size_t f) {
@@ -380,8 +419,22 @@ std::vector<double> Spectra::finish(double N, double M, double e_mean, double sq
         }
         result.insert(result.end(), out, out + spectrum_field_count);
     }
+    // T_rot's field summed over the slabs normal to each axis (its modes lie along the axes).
+    std::array<std::vector<double>, 3> slabs;
+    if (!modes_.empty()) {
+        for (std::size_t a = 0; a < 3; ++a)
+            slabs[a].assign(static_cast<std::size_t>(G[a]), 0.0);
+        std::size_t c = 0;
+        for (std::size_t i = 0; i < static_cast<std::size_t>(G[0]); ++i)
+            for (std::size_t j = 0; j < static_cast<std::size_t>(G[1]); ++j)
+                for (std::size_t l = 0; l < static_cast<std::size_t>(G[2]); ++l, ++c) {
+                    slabs[0][i] += rotation_[c];
+                    slabs[1][j] += rotation_[c];
+                    slabs[2][l] += rotation_[c];
+                }
+    }
     // Modes: the transforms at k along the axis, their phase referred to the cell centres
-    // (exp(-i k Delta/2)), normalised to amplitudes.
+    // (exp(-i k Delta/2)), normalised to amplitudes; T_rot's from its slabs at their centres.
     for (const ModeIndex& m : modes_) {
         int n[3] = {0, 0, 0};
         n[m.axis - 1] = m.n;
@@ -394,6 +447,15 @@ std::vector<double> Spectra::finish(double N, double M, double e_mean, double sq
             result.push_back(z.real());
             result.push_back(z.imag());
         }
+        cplx rot = 0;
+        if (r_mean > 0) {
+            const std::vector<double>& slab = slabs[static_cast<std::size_t>(m.axis - 1)];
+            for (std::size_t i = 0; i < slab.size(); ++i)
+                rot += slab[i] * std::polar(1.0, -m.k * (static_cast<double>(i) + 0.5) * delta);
+            rot *= 2.0 / (N * r_mean);
+        }
+        result.push_back(rot.real());
+        result.push_back(rot.imag());
     }
     return result;
 }

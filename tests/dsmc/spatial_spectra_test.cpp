@@ -90,7 +90,7 @@ TEST(SpatialSpectra, EquilibriumGasHasUnitSpectraForAnyCellSize) {
                     EXPECT_NEAR(a20, 0.0, 5 * std::sqrt(3.2 / static_cast<double>(s.count)))
                         << "species of mass " << s.grain.mass << ", step " << k;
                 }
-                const std::vector<double> out = spectra.compute(e.positions(), e.velocities(), blocks, e.team());
+                const std::vector<double> out = spectra.compute(e.positions(), e.velocities(), e.angular_velocities(), blocks, e.team());
                 std::array<double, 4> mean{};
                 double modes = 0;
                 for (std::size_t r = 0; r < shell_count; ++r) {
@@ -161,9 +161,10 @@ TEST(SpatialSpectra, CellSumsGiveTheGrainsSpectra) {
     g.box = d.size;
     g.modes = 2;
     Spectra by_grains(g), by_cells(g);
-    const std::vector<double> want = by_grains.compute(e.positions(), e.velocities(), blocks, e.team());
+    const std::vector<double> want = by_grains.compute(e.positions(), e.velocities(), e.angular_velocities(), blocks, e.team());
     const std::vector<double> got =
-        by_cells.compute_from_cell_sums(e.cell_sums(), e.cell_sum_fields, e.velocities(), blocks, e.team());
+        by_cells.compute_from_cell_sums(e.cell_sums(), e.cell_sum_fields, e.cell_spin_sums(), e.velocities(), blocks,
+                                        e.team());
     ASSERT_EQ(got.size(), want.size());
     for (std::size_t r = 0; r < want.size(); ++r)
         EXPECT_NEAR(got[r], want[r], 1e-11 * (1 + std::abs(want[r]))) << "value " << r;

@@ -31,7 +31,7 @@ int signed_index(int i, int G) { return i <= G / 2 ? i : i - G; }
 // species of different mass at random positions and velocities.
 struct Scene {
     SpectraGeometry g;
-    std::vector<Vec3> x, v;
+    std::vector<Vec3> x, v, w;
     std::vector<SpeciesBlock> species = blocks(300, 1.0, 200, 2.5);
     Scene() {
         g.grid = {7, 5, 8};
@@ -43,6 +43,7 @@ struct Scene {
         for (int i = 0; i < 500; ++i) {
             x.push_back({u(rng) * g.box[0], u(rng) * g.box[1], u(rng) * g.box[2]});
             v.push_back({normal(rng), normal(rng) + 0.3, normal(rng)});
+            w.push_back({normal(rng), 2 * normal(rng), normal(rng)});
         }
         Vec3 p{};
         double M = 0;
@@ -57,10 +58,16 @@ struct Scene {
                 sum += energy(static_cast<std::size_t>(j));
             for (int j = first; j < last; ++j)
                 excess.push_back(energy(static_cast<std::size_t>(j)) - sum / (last - first));
+            double rot = 0;
+            for (int j = first; j < last; ++j)
+                rot += rotational_energy(static_cast<std::size_t>(j));
+            for (int j = first; j < last; ++j)
+                rot_excess.push_back(rotational_energy(static_cast<std::size_t>(j)) - rot / (last - first));
         }
     }
     Vec3 U;                     // the mass-weighted mean velocity
-    std::vector<double> excess; // each grain's kinetic energy about U minus its species' mean
+    std::vector<double> excess;     // each grain's kinetic energy about U minus its species' mean
+    std::vector<double> rot_excess; // each grain's rotational energy minus its species' mean
     double mass(std::size_t i) const { return i < 300 ? 1.0 : 2.5; }
     // The grain's cell index along each axis.
     std::array<int, 3> cell(std::size_t i) const {
@@ -71,6 +78,9 @@ struct Scene {
         return c;
     }
     double energy(std::size_t i) const { return 0.5 * mass(i) * norm2(v[i] - U); }
+    double rotational_energy(std::size_t i) const {
+        return 0.5 * species[i < 300 ? 0 : 1].moment_of_inertia() * norm2(w[i]);
+    }
     // The grain's value of field f (rho, p_x, p_y, p_z, h).
     double q(int f, std::size_t i) const {
         const Vec3 c = v[i] - U;
@@ -98,7 +108,7 @@ TEST(Spectra, TransformsAreTheDirectSumsAndKeepParseval) {
     Scene s;
     Spectra sp(s.g);
     WorkerTeam team(2);
-    sp.compute(s.x, s.v, s.species, team);
+    sp.compute(s.x, s.v, s.w, s.species, team);
     const int Gx = s.g.grid[0], Gy = s.g.grid[1], Gz = s.g.grid[2], Hz = Gz / 2 + 1;
     for (int f = 0; f < 5; ++f) {
         const std::vector<double>& F = sp.transform(f);
@@ -128,7 +138,7 @@ TEST(Spectra, ValuesFollowTheirDefinitions) {
     Scene s;
     Spectra sp(s.g);
     WorkerTeam team(1);
-    const std::vector<double> out = sp.compute(s.x, s.v, s.species, team);
+    const std::vector<double> out = sp.compute(s.x, s.v, s.w, s.species, team);
     const std::vector<SpectrumBin> bins = spectrum_bins(s.g);
     double N = 0, M = 0, squares = 0;
     for (std::size_t i = 0; i < s.x.size(); ++i) {
@@ -199,6 +209,17 @@ TEST(Spectra, ValuesFollowTheirDefinitions) {
         EXPECT_NEAR(m[2 * f], expected[f].real(), 1e-14) << mode_fields[2 * f];
         EXPECT_NEAR(m[2 * f + 1], expected[f].imag(), 1e-14) << mode_fields[2 * f + 1];
     }
+    // T_rot's: (2/(N r)) sum_j (r_j - r_s(j)) exp(-i k x_c), x_c the centre of grain j's cell, grain by grain.
+    double r_mean = 0;
+    for (std::size_t i = 0; i < s.x.size(); ++i)
+        r_mean += s.rotational_energy(i) / N;
+    cplx rot = 0;
+    for (std::size_t i = 0; i < s.x.size(); ++i)
+        rot += s.rot_excess[i] * std::polar(1.0, -k * (s.cell(i)[0] + 0.5) * dx);
+    rot *= 2.0 / (N * r_mean);
+    EXPECT_GT(std::abs(rot), 0.01);
+    EXPECT_NEAR(m[mode_T_rot_first], rot.real(), 1e-14);
+    EXPECT_NEAR(m[mode_T_rot_first + 1], rot.imag(), 1e-14);
 }
 
 // Shells: every wave vector of the grid with 0 < |k| up to the reach (the largest |k| every axis
@@ -243,16 +264,19 @@ TEST(Spectra, ShellsHoldEveryWaveVectorOnce) {
 }
 
 // Grains at the cell centres carrying exact waves along y on a uniform density (in every cell two
-// grains of mass 1 and two of mass 2.5): the velocity v_x = U sin(k y_c), and v_z = +-(what makes
-// each grain's kinetic energy e (1 + B cos(k y_c))), one of each sign. modes.csv at n = 1 along y has the flow's -i U
-// and the temperature's B (the mean energy is e), the density's 0; at n = 2 nothing; to round-off.
+// grains of mass 1 and two of mass 2.5): the velocity v_x = U sin(k y_c), v_z = +-(what makes
+// each grain's kinetic energy e (1 + B cos(k y_c))), one of each sign, and the spin omega_z that
+// makes its rotational energy r (1 + C sin(k y_c)). modes.csv at n = 1 along y has the flow's -i U,
+// the temperature's B (the mean energy is e) and T_rot's -i C, the density's 0; at n = 2 nothing;
+// to round-off.
 TEST(Spectra, WavesOnTheGridHaveTheirAmplitudes) {
     SpectraGeometry g;
     g.grid = {3, 8, 2};
     g.box = {3.0, 16.0, 2.0};
     g.modes = 2;
-    const double U = 0.3, B = 0.2, k = 2 * std::numbers::pi / 16.0, e = 1.5;
-    std::vector<Vec3> x, v;
+    const double U = 0.3, B = 0.2, C = 0.15, k = 2 * std::numbers::pi / 16.0, e = 1.5, r = 0.7;
+    const std::vector<SpeciesBlock> species = blocks(96, 1.0, 96, 2.5);
+    std::vector<Vec3> x, v, w;
     for (const double m : {1.0, 2.5})
         for (const double sign : {1.0, -1.0})
             for (int c = 0; c < 3 * 8 * 2; ++c) {
@@ -262,17 +286,18 @@ TEST(Spectra, WavesOnTheGridHaveTheirAmplitudes) {
                 const double vz = std::sqrt(2 * e * (1 + B * std::cos(k * y)) / m - vx * vx);
                 x.push_back({i + 0.5, y, l + 0.5});
                 v.push_back({vx, 0.0, sign * vz});
+                w.push_back({0.0, 0.0, std::sqrt(2 * r * (1 + C * std::sin(k * y)) / species[m == 1.0 ? 0 : 1].moment_of_inertia())});
             }
     Spectra sp(g);
     WorkerTeam team(1);
-    const std::vector<double> out = sp.compute(x, v, blocks(96, 1.0, 96, 2.5), team);
+    const std::vector<double> out = sp.compute(x, v, w, species, team);
     const std::vector<ModeIndex> modes = mode_indices(g);
     const std::size_t first = spectrum_bins(g).size() * spectrum_field_count;
     for (std::size_t r = 0; r < modes.size(); ++r) {
         const double* a = out.data() + first + r * mode_field_count;
         const bool wave = modes[r].axis == 2 && modes[r].n == 1;
         SCOPED_TRACE(::testing::Message() << "axis " << modes[r].axis << ", n = " << modes[r].n);
-        const double expected[mode_field_count] = {0, 0, 0, wave ? -U : 0, 0, 0, 0, 0, wave ? B : 0, 0};
+        const double expected[mode_field_count] = {0, 0, 0, wave ? -U : 0, 0, 0, 0, 0, wave ? B : 0, 0, 0, wave ? -C : 0};
         for (std::size_t f = 0; f < mode_field_count; ++f)
             EXPECT_NEAR(a[f], expected[f], 1e-14) << mode_fields[f];
     }

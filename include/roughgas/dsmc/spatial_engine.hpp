@@ -311,6 +311,26 @@ template <class Policy, bool General = false> class SpatialEngine {
         return cell_tally_;
     }
 
+    // Per (cell, species), cells x fastest: the sum of |omega|^2 of the cell's grains, in store order
+    // (modes.csv's T_rot; a pass over the spins at the rows that need it, not at every step).
+    std::vector<double> cell_spin_sums() {
+        const std::size_t S = blocks_.size();
+        std::vector<double> sums(cells_ * S, 0.0);
+        const std::size_t units = (cells_ + cells_per_unit - 1) / cells_per_unit;
+        team_->for_each(units, [&](std::size_t u) {
+            const std::size_t end = std::min(cells_, (u + 1) * cells_per_unit);
+            for (std::size_t c = u * cells_per_unit; c < end; ++c)
+                for (std::size_t s = 0; s < S; ++s) {
+                    const auto [first, last] = cell_range(s, c);
+                    double w2 = 0;
+                    for (std::size_t i = first; i < last; ++i)
+                        w2 += norm2(w_[i]);
+                    sums[c * S + s] = w2;
+                }
+        });
+        return sums;
+    }
+
     // The largest local collision frequency per grain: over the profile bins (the slabs of
     // profiles.csv), the Maxwellian n_b pi sigma^2 <g> per pair type at the slab's densities and
     // species temperatures (m <|v - u_b|^2>/3 about the species' mean velocity in the slab). The

@@ -35,9 +35,12 @@
 // modes.csv: for the lowest `modes` wave numbers n = 1, 2, ... along each axis a (k = 2 pi n / L_a)
 // the amplitudes (2/N) sum_j q_j exp(-i k.x_j) with the cell centre for x_j, of q = 1 (density
 // relative to its mean), of the velocity (2/M) sum_j m_j c_j exp(-i k.x_j) (the flow's amplitude),
-// and of (e_j - e_s(j)) / e, e the mean of e_j (the kinetic temperature's, relative): a wave
-// A sin(k.x) sampled at the cell centres has the amplitude -i A (A cos(k.x): A); grains spread
-// through their cells see it through the window, -i A sinc(k Delta / 2).
+// of (e_j - e_s(j)) / e, e the mean of e_j (the kinetic temperature's, relative), and of
+// (r_j - r_s(j)) / r with the rotational energies r_j = J_j |omega_j|^2 / 2 (T_rot's, relative; 0
+// when no grain spins): a wave A sin(k.x) sampled at the cell centres has the amplitude -i A
+// (A cos(k.x): A); grains spread through their cells see it through the window, -i A sinc(k Delta / 2).
+// The rotational field enters no spectrum: its modes are sums over the cells' slabs along the axis,
+// without a transform of its own.
 //
 // The transforms: FFTW's real-to-complex 3-D transform of each field, planned once per run
 // (FFTW_ESTIMATE: the same plan, and so the same bits, in every run) for one thread; the five
@@ -57,10 +60,11 @@ namespace roughgas {
 inline constexpr const char* spectrum_fields[] = {"S", "E_perp", "E_par", "S_T"};
 inline constexpr std::size_t spectrum_field_count = std::size(spectrum_fields);
 inline constexpr std::size_t spectrum_S_T = 3; // index of S_T in spectrum_fields
-inline constexpr const char* mode_fields[] = {"n_re",   "n_im",   "u_x_re", "u_x_im", "u_y_re",
-                                              "u_y_im", "u_z_re", "u_z_im", "T_re",   "T_im"};
+inline constexpr const char* mode_fields[] = {"n_re",   "n_im",   "u_x_re", "u_x_im", "u_y_re",   "u_y_im",
+                                              "u_z_re", "u_z_im", "T_re",   "T_im",   "T_rot_re", "T_rot_im"};
 inline constexpr std::size_t mode_field_count = std::size(mode_fields);
-inline constexpr std::size_t mode_T_first = 8; // T_re, T_im
+inline constexpr std::size_t mode_T_first = 8;      // T_re, T_im
+inline constexpr std::size_t mode_T_rot_first = 10; // T_rot_re, T_rot_im
 
 struct SpectraGeometry {
     std::array<int, 3> grid{1, 1, 1};      // G_a: the collision cells
@@ -99,17 +103,19 @@ class Spectra {
     // Every spectrum bin's fields (spectrum_bins order, spectrum_field_count each), then every
     // mode's (mode_indices order, mode_field_count each). Grains outside the box are taken in
     // the nearest cell.
-    std::vector<double> compute(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+    // `w`: the angular velocities (T_rot's modes).
+    std::vector<double> compute(const std::vector<Vec3>& x, const std::vector<Vec3>& v, const std::vector<Vec3>& w,
                                 const std::vector<SpeciesBlock>& species, WorkerTeam& team);
 
     // The same from the box engine's sums per cell (SpatialEngine::cell_sums: per cell of the grid,
     // x fastest, and species, `fields` numbers of which the first five are the count of its
-    // grains, the sum of their velocities and the sum of |v|^2) and the velocities (for the
+    // grains, the sum of their velocities and the sum of |v|^2; SpatialEngine::cell_spin_sums: the
+    // sum of |omega|^2 per cell and species, needed only with modes) and the velocities (for the
     // variance of the energies): the grains counted in the cells the engine put them in, with no
     // pass over their positions. Equal to compute's results to round-off.
     std::vector<double> compute_from_cell_sums(const std::vector<double>& cell_sums, std::size_t fields,
-                                               const std::vector<Vec3>& v, const std::vector<SpeciesBlock>& species,
-                                               WorkerTeam& team);
+                                               const std::vector<double>& spin_sums, const std::vector<Vec3>& v,
+                                               const std::vector<SpeciesBlock>& species, WorkerTeam& team);
 
     // The five fields' transforms from the last compute (rho, p_x, p_y, p_z, h), each
     // G_x x G_y x (G_z/2 + 1) complex values (re, im), z fastest: for tests (Parseval).
@@ -119,13 +125,14 @@ class Spectra {
 
   private:
     // The transforms of fields_ and the rows from them.
-    std::vector<double> finish(double N, double M, double e_mean, double squares, WorkerTeam& team);
+    std::vector<double> finish(double N, double M, double e_mean, double squares, double r_mean, WorkerTeam& team);
     struct Plan;
     SpectraGeometry g_;
     std::vector<SpectrumBin> bins_;
     std::vector<ModeIndex> modes_;
     std::vector<int> shell_of_; // per stored wave vector: its shell (0: none)
     std::array<std::vector<double>, 5> fields_, transforms_;
+    std::vector<double> rotation_; // sum_j (r_j - r_s(j)) per cell, z fastest as fields_ (with modes only)
     std::unique_ptr<Plan> plan_;
 };
 
