@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "roughgas/dsmc/species.hpp"
+#include "roughgas/observables/theory.hpp"
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
@@ -955,6 +956,8 @@ class Builder {
         }
         if (c.run.kernel == CollisionKernel::maxwell)
             check_maxwell_kernel(c);
+        else if (c.run.kind == RunKind::cooling && use_ == CaseUse::run)
+            check_cooling_reach(c);
         if (c.run.histogram_every > c.run.end) {
             add("run.histogram_every",
                 fmt::format("run.histogram_every = {}: after the end of the run (must be <= run.end = {})",
@@ -1045,6 +1048,56 @@ class Builder {
 
     // The Maxwell kernel is the reference model with a known answer for constant alpha, beta
     // (docs/model.md); it is compiled for constant restitution only.
+    // A hard-sphere gas cooling with constant restitution loses the share zeta* of its translational
+    // temperature per collision per particle (the reduced cooling rate, docs/model.md §5): T_tr falls as
+    // exp(-zeta* s). Below about 1e-300 m (in the case's units) the squares of the velocities
+    // underflow and the run would stop with an error partway; refused before any work. zeta* is the
+    // cooling state's for one species (theta at its fixed point; smooth grains: T_rot plays no part),
+    // the start's for a mixture (an estimate).
+    void check_cooling_reach(const CaseConfig& c) {
+        const std::size_t S = c.species.size();
+        std::vector<HcsSpecies> species;
+        std::vector<ConstantRestitution> pairs(S * (S + 1) / 2);
+        HcsTemperatures T;
+        double T_over_m = HUGE_VAL;
+        for (std::size_t a = 0; a < S; ++a) {
+            const SpeciesConfig& s = c.species[a];
+            if (!(s.mass > 0 && s.radius > 0 && s.temperature > 0))
+                return; // refused elsewhere
+            species.push_back({s.mass, s.radius, s.inertia, s.fraction});
+            T.T_tr.push_back(s.temperature);
+            T.T_rot.push_back(s.rotational_temperature);
+            T_over_m = std::min(T_over_m, s.temperature / s.mass);
+            for (std::size_t b = a; b < S; ++b) {
+                const CollisionConfig& cc = collision_for(c, a, b);
+                if (cc.model != CollisionModel::constant || !cc.alpha || !cc.beta)
+                    return; // restitution that depends on the impact speed: the gas cools ever slower
+                pairs[pair_index(a, b, S)] = ConstantRestitution{*cc.alpha, *cc.beta};
+            }
+        }
+        if (S == 1 && pairs[0].beta > -1) {
+            const double theta = theta_fixed_point(pairs[0].alpha, pairs[0].beta, species[0].inertia);
+            if (std::isfinite(theta) && theta > 0)
+                T.T_rot[0] = theta * T.T_tr[0];
+        }
+        double zeta = 0;
+        try {
+            zeta = reduced_cooling_rate(HcsTheory(species, pairs, c.run.density), T);
+        } catch (const std::invalid_argument&) {
+            return; // refused elsewhere
+        }
+        if (!(zeta > 0))
+            return;
+        const double reach = std::log(T_over_m / 1e-300) / zeta;
+        if (c.run.end > reach)
+            add("run.end",
+                fmt::format("run.end = {}: a gas cooling at zeta* = {:.3g} per collision per particle (the reduced "
+                            "cooling rate of its constant restitution) reaches T_tr = 1e-300 m, where the squares "
+                            "of the velocities underflow, at about {:.4g} collisions per particle: end it before "
+                            "(run.end < {:.4g})",
+                            c.run.end, zeta, reach, reach));
+    }
+
     void check_maxwell_kernel(const CaseConfig& c) {
         for (std::size_t a = 0; a < c.species.size(); ++a) {
             for (std::size_t b = a; b < c.species.size(); ++b) {

@@ -101,6 +101,38 @@ TEST_P(InvalidInput, ExitsWithStatus2NamingFileKeyAndRangeAndWritesNothing) {
 INSTANTIATE_TEST_SUITE_P(Cli, InvalidInput, ::testing::ValuesIn(bad_inputs()),
                          [](const ::testing::TestParamInfo<BadInput>& info) { return info.param.name; });
 
+// A gas cooling with constant restitution loses a fixed share of T_tr per collision: a run.end past
+// the point where the squares of the velocities underflow is refused before any work (exit 2 naming
+// run.end and the reach). The reach is where the run fails, not far short of it: smooth grains at
+// alpha = 0.8 and rough ones at alpha = 0.9, beta = 0.4 (zeta* at their cooling state's theta) run
+// to 0.95 of it and end with a finite T_tr below 1e-200.
+TEST(Cli, CoolingRunsPastTheTemperaturesUnderflowAreRefused) {
+    const test::ScratchDir dir;
+    const std::string hcs = test::read_file(fs::path(ROUGHGAS_SOURCE_DIR) / "cases" / "hcs_smooth.toml");
+    for (const std::string sets : {std::string("--set collision.alpha=0.8"),
+                                   std::string("--set collision.alpha=0.9 --set collision.beta=0.4")}) {
+        const fs::path f = dir.write("cooling.toml", hcs);
+        const std::string base = "'" + f.string() + "' --set run.particles=2000 " + sets;
+        const test::CommandResult refused = run_roughgas("run " + base + " --set run.end=1e6 --out '" +
+                                                             (dir / "far").string() + "'", dir);
+        ASSERT_EQ(refused.status, 2) << refused.err;
+        EXPECT_NE(refused.err.find("run.end = 1000000"), std::string::npos) << refused.err;
+        EXPECT_FALSE(fs::exists(dir / "far"));
+        const std::size_t at = refused.err.find("(run.end < ");
+        ASSERT_NE(at, std::string::npos) << refused.err;
+        const double reach = std::stod(refused.err.substr(at + 11));
+        EXPECT_GT(reach, 2000.0) << sets;
+        const test::CommandResult near = run_roughgas("run " + base + " --quiet --set run.end=" +
+                                                          std::to_string(0.95 * reach) + " --out '" +
+                                                          (dir / "near").string() + "' --force", dir);
+        ASSERT_EQ(near.status, 0) << sets << "\n" << near.err;
+        const auto rows = test::read_csv(dir / "near" / "moments.csv");
+        EXPECT_NEAR(rows.at("coll_per_particle").back(), 0.95 * reach, 1.0) << sets;
+        EXPECT_GT(rows.at("T_tr").back(), 0.0) << sets;
+        EXPECT_LT(rows.at("T_tr").back(), 1e-200) << sets << ": the reach is near, not far off";
+    }
+}
+
 TEST(Cli, FileErrorsCarryLineAndColumn) {
     const test::ScratchDir dir;
     const fs::path f =
