@@ -40,9 +40,9 @@ TEST(ShearMode, QuasiElasticLimit) {
     EXPECT_NEAR(shear_mode_rate(t, 2 * std::numbers::pi / t.critical_length), 0.0, 1e-15);
 }
 
-// Against a separate evaluation of the same formulas (a Python script; its cooling rate and a2 also
-// re-derived there from exact collision integrals of the first Sonine distribution): a2, eta*,
-// the growth rate at k -> 0 per collision and L_c / lambda, to the 5 digits it printed.
+// Against a separate evaluation of the same formulas (scripts/linear_theory_reference.py; its
+// cooling rate and a2 also re-derived there from exact collision integrals of the first Sonine
+// distribution): a2, eta*, the growth rate at k -> 0 per collision and L_c / lambda, to 5 digits.
 TEST(ShearMode, CoefficientsOfTheFirstSonineTheory) {
     const struct {
         double alpha, a2, eta_star, growth, critical_length;
