@@ -12,12 +12,13 @@
 #   docs/box_cooling_slab_spectra.png  roughgas run cases/box_cooling_slab.toml, plot_spectra.py --times 5
 #   docs/box_cooling_slab_fields.png   the same run of box_cooling_slab.toml, plot_fields.py --from 140 --times 4
 #   docs/box_cooling_slab_{medium,strong}_roughness_fields.png  roughgas run of those cases, plot_fields.py
-#   docs/box_cooling_3d_{spectra,fields}.png  roughgas run cases/box_cooling_3d.toml, plot_spectra.py, plot_fields.py
 #                              --from 20 and --from 300, --times 4
+#   docs/box_cooling_3d_{spectra,fields}.png  roughgas run cases/box_cooling_3d.toml, plot_spectra.py, plot_fields.py
 # Not redrawn here (minutes of CPU each): docs/accuracy.png, the work-precision study of
 # docs/accuracy.md (scripts/bench_accuracy.py); docs/transport_errors.png, the study of
 # docs/validation.md (scripts/transport_errors.py --collisions 3000 --plot docs/transport_errors.png,
-# ten minutes on two cores); docs/instability_map.png, its instability map
+# ten minutes on two cores) and docs/conductivity_errors.png (transport_errors.py --flow fourier
+# --collisions 8000 --plot docs/conductivity_errors.png, forty minutes); docs/instability_map.png, its instability map
 # (scripts/instability_map.py --seeds 8 --plot docs/instability_map.png, eight minutes on two cores).
 # Usage: scripts/docs_figures.sh [WORK_DIR]   (default out/docs_figures; the build must exist)
 set -euo pipefail
