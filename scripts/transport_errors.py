@@ -24,9 +24,9 @@ Three series:
           (Hadjiconstantinou 2000), that is 1 + (4/75) s^2 for steps of s mean free times
           lambda/cbar.
 --flow fourier measures the conductivity instead: the same channel between diffuse walls at rest
-at T_w = 0.8 and 1.2, kappa = -q_y/(dT/dy) from the walls' energy flux and the slope of T_tr over
-the bulk, in units of the Chapman-Enskog value 1.025218 kappa_0, kappa_0 = (75/64) sqrt(T/(m pi))
-/sigma^2; the cells and steps series only, against the laws 1 + 32/(225 pi) (dy/lambda)^2 (the
+at T_w = 0.8 and 1.2, kappa = -q_y/(dT/dy) from the walls' energy flux and the bulk's T_tr (as
+kappa = kappa_1 sqrt(T), the slope of T_tr^(3/2) gives kappa_1 = -(3/2) q_y/(dT^(3/2)/dy)), in units
+of the Chapman-Enskog value 1.025218 kappa_0, kappa_0 = (75/64) sqrt(T/(m pi))/sigma^2; the cells and steps series only, against the laws 1 + 32/(225 pi) (dy/lambda)^2 (the
 Green-Kubo self term of the energy that a collision carries between grains a cell apart, the
 route by which Alexander, Garcia & Alder 1998 find the viscosity's; 2/5 of it, as kappa_0 is
 15/(4m) eta_0 and the transfers' ratio 3/(2m)) and 1 + 32/(225 pi) (c_0 dt/lambda)^2 = 1 + (8/225) s^2
@@ -105,13 +105,13 @@ def transport(flow, directory):
             us = u[bulk] / len(batch) if us is None else us + u[bulk] / len(batch)
             ts.append(T[bulk].mean())
             p += wall_flux[k] / len(batch)
-        slope = np.polyfit(ys, us, 1)[0]
-        T = float(np.mean(ts))
         if flow == "couette":
-            ce = 1.016034 * 5.0 / 16.0 * math.sqrt(T / math.pi)
+            slope = np.polyfit(ys, us, 1)[0]
+            ratios.append(-p / slope / (1.016034 * 5.0 / 16.0 * math.sqrt(float(np.mean(ts)) / math.pi)))
         else:
-            ce = 1.025218 * 75.0 / 64.0 * math.sqrt(T / math.pi)
-        ratios.append(-p / slope / ce)
+            # kappa = kappa_1 sqrt(T) makes T^(3/2), not T, linear in y: -q = (2/3) kappa_1 d(T^(3/2))/dy.
+            slope = np.polyfit(ys, np.asarray(us) ** 1.5, 1)[0]
+            ratios.append(-1.5 * p / slope / (1.025218 * 75.0 / 64.0 / math.sqrt(math.pi)))
     r = np.array(ratios)
     return r.mean(), r.std(ddof=1) / math.sqrt(len(r))
 

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 
 namespace roughgas {
@@ -439,8 +440,9 @@ TEST(BoxCli, WallsFileHasTheWallsPressureAndHitRate) {
 // boxes of 4.4 mean free paths and cells of 0.89. At the box's rows nearest 5, 10, 20 and 40
 // collisions per particle, theta, a20, a02 and a11 agree with the homogeneous gas's, taken between
 // its rows at the box row's collisions (linear), within 4 combined standard errors (8 replicas of
-// 5000 grains each) plus 1e-3 (the interpolation: theta moves by less than that over a row's
-// spacing beyond 5 collisions per particle).
+// 5000 grains each) plus 1e-3, above the error of the interpolation (both runs aim their rows at the
+// same collision counts, so the box row lies within a step, a quarter collision per particle, of a
+// homogeneous row, over which theta changes by at most 0.005 here, and linearly to 1e-4).
 TEST(BoxCli, SmallBoxCoolsAsTheHomogeneousGas) {
     const std::string constant = box_case(5000, 8, 40.0);
     const std::string coulomb = replaced(constant, "model = \"constant\"\nalpha = 0.9\nbeta = 0.4",
@@ -448,7 +450,8 @@ TEST(BoxCli, SmallBoxCoolsAsTheHomogeneousGas) {
     const auto shipped = [](const char* name, const std::vector<std::pair<std::string, std::string>>& edits) {
         std::string c = test::read_file(fs::path(ROUGHGAS_SOURCE_DIR) / "cases" / name);
         for (const auto& [from, to] : edits) {
-            EXPECT_NE(c.find(from), std::string::npos) << name << ": " << from;
+            if (c.find(from) == std::string::npos) // the shipped case as it is would run for hours
+                throw std::runtime_error(std::string(name) + " has no '" + from + "'");
             c = replaced(c, from, to);
         }
         // lambda = 1/(sqrt(2) pi n sigma^2) = 0.5627 m at n = 1000 m^-3, sigma = 0.02 m.

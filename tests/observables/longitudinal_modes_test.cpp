@@ -101,10 +101,10 @@ TEST(LongitudinalModes, SoundPairFormsAtAFiniteWaveNumber) {
     EXPECT_NEAR(below.sound[1].real(), above.sound[0].real(), 2e-3);
 }
 
-// Against an independent evaluation of the same formulas: scripts/linear_theory_reference.py, which works in
-// dimensional units (arbitrary n, sigma, m, T), forms the linearised equations per unit time, divides
-// by nu_c and calls numpy.linalg.eigvals; its L_par is the zero of the largest real part found by
-// root bracketing (scipy brentq), not the closed form. Printed to 15 digits.
+// Against an independent evaluation of the same formulas: scripts/linear_theory_reference.py, which
+// works in dimensional units (arbitrary n, sigma, m, T), forms the linearised equations per unit
+// time, divides by nu_c and calls numpy.linalg.eigvals; its L_par is the zero of the largest real
+// part found by bisection, not the closed form. Printed to 15 digits.
 TEST(LongitudinalModes, AgreesWithAnIndependentEvaluation) {
     const struct {
         double alpha, kappa_star, mu_star, critical_length;
