@@ -4,7 +4,8 @@
 // interrupted. Cases: a rough cooling run with 3 replicas on 2 threads (one replica waits for a
 // thread) and histograms, a shear run, a rough binary mixture with histograms, a spatially
 // resolved box (with its cell fields: every HDF5 file the same bytes, the XDMF sidecars the same
-// but for the directory they name). The kill moments
+// but for the directory they name), the box between walls, the box of smooth grains with its
+// spectra.csv and modes.csv, a sheared box. The kill moments
 // come from a seeded generator (printed on failure); no result depends on them.
 #include "../io/io_test_support.hpp"
 #include "child_process.hpp"
@@ -58,6 +59,12 @@ std::string box_walls() {
                         "[wall_upper]\nkind = \"rough\"\nvelocity = [0.5, 0.0, 0.0]\nalpha = 0.9\nbeta = 0.5\n");
 }
 
+// Smooth grains in the box (spins that never change but move with their grains), with the spectra
+// and modes (T_rot's amplitudes from the spins of each cell).
+std::string box_smooth_spectra() {
+    return test::replaced(box(), "beta = 0.3", "beta = -1.0") + "\n[spectra]\nmodes = 2\n";
+}
+
 // A sheared box (Lees-Edwards along y): the images' offset follows the time in the checkpoint.
 std::string box_shear() {
     return "[run]\nkind = \"shear\"\nparticles = 40000\nend = 30.0\noutput_every = 1.0\nreplicas = 2\n"
@@ -90,7 +97,8 @@ void run_to_end(const std::string& args, const test::ScratchDir& dir) {
 }
 
 void expect_same_outputs(const fs::path& reference, const fs::path& out, const std::string& context) {
-    for (const char* f : {"moments.csv", "histograms.csv", "steady.csv", "walls.csv", "profiles.csv"}) {
+    for (const char* f : {"moments.csv", "histograms.csv", "steady.csv", "walls.csv", "profiles.csv", "spectra.csv",
+                          "modes.csv"}) {
         ASSERT_EQ(fs::exists(reference / f), fs::exists(out / f)) << f << ", " << context;
         if (!fs::exists(reference / f))
             continue;
@@ -209,6 +217,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(Scenario{"RoughCooling3Replicas", rough_cooling(20000, 40.0), "1.5"},
                       Scenario{"Shear", shear(), "1"}, Scenario{"RoughMixture", rough_mixture(), "2"},
                       Scenario{"Box", box_fields(), "2"}, Scenario{"BoxWalls", box_walls(), "2"},
+                      Scenario{"BoxSmoothSpectra", box_smooth_spectra(), "2"},
                       Scenario{"BoxShear", box_shear(), "2"}),
     [](const ::testing::TestParamInfo<Scenario>& info) { return info.param.name; });
 
