@@ -1046,46 +1046,45 @@ class Builder {
                             d.cells[0], d.cells[1], d.cells[2], edge / lambda, edge, lambda, c.run.density));
     }
 
-    // A hard-sphere gas of one species cooling with constant restitution loses the share zeta* of its
-    // translational temperature per collision per particle (the reduced cooling rate of its cooling
-    // state, docs/model.md §5; theta at its fixed point, and for smooth grains T_rot plays no part):
-    // T_tr falls as exp(-zeta* s). Below about 1e-300 m (in the case's units) the squares of the
-    // velocities underflow and the run would stop with an error partway; refused before any work.
-    // Not for a mixture (its rate depends on how its temperatures settle, which the start does not
-    // tell) nor for a box whose walls drive the gas (a diffuse or moving wall holds it at a steady
-    // state); with initial.from the species' temperatures stand for the saved state's.
+    // A hard-sphere gas cooling with constant restitution loses the share zeta* of its translational
+    // temperature per collision per particle once its temperatures' ratios have settled (the reduced
+    // cooling rate of its cooling state, docs/model.md §5): T_tr falls as exp(-zeta* s). Below about
+    // 1e-300 m (in the case's units) the squares of the velocities underflow and the run would stop
+    // with an error partway; refused before any work (cooling_reach: the theory's trajectory from the
+    // species' temperatures). Not for a box whose walls drive the gas (a diffuse or moving wall holds
+    // it at a steady state); with initial.from the species' temperatures stand for the saved state's.
     void check_cooling_reach(const CaseConfig& c) {
-        if (c.species.size() != 1)
-            return;
-        const SpeciesConfig& s = c.species[0];
-        const CollisionConfig& cc = collision_for(c, 0, 0);
-        if (!(s.mass > 0 && s.radius > 0 && s.temperature > 0))
-            return; // refused elsewhere
-        if (cc.model != CollisionModel::constant || !cc.alpha || !cc.beta)
-            return; // restitution that depends on the impact speed: the gas cools ever slower
-        const ConstantRestitution pair{*cc.alpha, *cc.beta};
-        HcsTemperatures T{{s.temperature}, {s.rotational_temperature}};
-        if (pair.beta > -1) {
-            const double theta = theta_fixed_point(pair.alpha, pair.beta, s.inertia);
-            if (std::isfinite(theta) && theta > 0)
-                T.T_rot[0] = theta * s.temperature;
+        const std::size_t S = c.species.size();
+        std::vector<HcsSpecies> species;
+        std::vector<ConstantRestitution> pairs(S * (S + 1) / 2);
+        HcsTemperatures T;
+        for (std::size_t a = 0; a < S; ++a) {
+            const SpeciesConfig& s = c.species[a];
+            if (!(s.mass > 0 && s.radius > 0 && s.temperature > 0 && s.rotational_temperature >= 0))
+                return; // refused elsewhere
+            species.push_back({s.mass, s.radius, s.inertia, s.fraction});
+            T.T_tr.push_back(s.temperature);
+            T.T_rot.push_back(s.rotational_temperature);
+            for (std::size_t b = a; b < S; ++b) {
+                const CollisionConfig& cc = collision_for(c, a, b);
+                if (cc.model != CollisionModel::constant || !cc.alpha || !cc.beta)
+                    return; // restitution that depends on the impact speed: the gas cools ever slower
+                pairs[pair_index(a, b, S)] = ConstantRestitution{*cc.alpha, *cc.beta};
+            }
         }
-        double zeta = 0;
+        double reach = HUGE_VAL;
         try {
-            zeta = reduced_cooling_rate(HcsTheory({{s.mass, s.radius, s.inertia, 1.0}}, {pair}, c.run.density), T);
+            reach = cooling_reach(HcsTheory(species, pairs, c.run.density), T, 1e-300);
         } catch (const std::invalid_argument&) {
             return; // refused elsewhere
         }
-        if (!(zeta > 0))
-            return;
-        const double reach = std::log(s.temperature / s.mass / 1e-300) / zeta;
         if (c.run.end > reach)
             add("run.end",
-                fmt::format("run.end = {}: a gas cooling at zeta* = {:.3g} per collision per particle (the reduced "
-                            "cooling rate of its constant restitution) reaches T_tr = 1e-300 m, where the squares "
-                            "of the velocities underflow, at about {:.4g} collisions per particle: end it before "
+                fmt::format("run.end = {}: a gas cooling with constant restitution loses a fixed share of its "
+                            "temperature per collision and reaches T_tr = 1e-300 m, where the squares of the "
+                            "velocities underflow, at about {:.4g} collisions per particle: end it before "
                             "(run.end < {:.4g})",
-                            c.run.end, zeta, reach, reach));
+                            c.run.end, reach, reach));
     }
 
     // The Maxwell kernel is the reference model with a known answer for constant alpha, beta

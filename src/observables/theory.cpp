@@ -162,6 +162,48 @@ double reduced_cooling_rate(const HcsTheory& theory, const HcsTemperatures& T) {
     return -theory.mixture_T_tr(rate) / (theory.mixture_T_tr(T) * nu / x);
 }
 
+double cooling_reach(const HcsTheory& theory, const HcsTemperatures& initial, double floor) {
+    const std::size_t S = theory.species_count();
+    // Collisions per particle and unit time at T: each grain's, fraction-weighted.
+    const auto frequency = [&](const HcsTemperatures& T) {
+        double nu = 0, x = 0;
+        for (std::size_t a = 0; a < S; ++a) {
+            const double xa = theory.species()[a].fraction;
+            for (std::size_t b = 0; b < S; ++b)
+                nu += xa * theory.exchange(a, b, T.T_tr, T.T_rot).frequency;
+            x += xa;
+        }
+        return nu / x;
+    };
+    if (!(frequency(initial) > 0) || !(floor > 0))
+        return HUGE_VAL;
+    // Steps of about 5 collisions per particle at the current frequency (the gas's own clock: an
+    // elastic gas keeps it, a cooling one slows it), until zeta* settles to 1e-9 (or 1e-15 absolute:
+    // an elastic gas's tends to 0), or 4000 steps.
+    HcsTrajectory trajectory(theory, initial);
+    HcsTemperatures T = initial;
+    double t = 0, zeta = reduced_cooling_rate(theory, T), collisions = 0;
+    for (int k = 0; k < 4000; ++k) {
+        t += 5.0 / frequency(T);
+        const HcsTemperatures next = trajectory.at(t);
+        const double z = reduced_cooling_rate(theory, next);
+        const double mean = 0.5 * (zeta + z); // -d ln T_tr/ds, nearly constant over the step
+        if (mean > 0)
+            collisions += std::log(theory.mixture_T_tr(T) / theory.mixture_T_tr(next)) / mean;
+        const bool settled = std::abs(z - zeta) <= std::max(1e-9 * std::abs(z), 1e-15);
+        T = next;
+        zeta = z;
+        if (settled)
+            break;
+    }
+    if (!(zeta > 1e-12))
+        return HUGE_VAL;
+    double least = HUGE_VAL;
+    for (std::size_t s = 0; s < S; ++s)
+        least = std::min(least, T.T_tr[s] / theory.species()[s].mass);
+    return collisions + std::log(least / floor) / zeta;
+}
+
 // --- the trajectory ---
 
 HcsTrajectory::HcsTrajectory(HcsTheory theory, HcsTemperatures initial, double rel_tol, bool closed_form)

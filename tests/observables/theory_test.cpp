@@ -333,6 +333,27 @@ TEST(HcsTheory, LongTimeThetaIsTheClosedFormFixedPoint) {
     EXPECT_NEAR(c.B * star * star + (c.C - c.A) * star - c.B, 0.0, 1e-15);
 }
 
+// cooling_reach: smooth grains lose (1 - alpha^2)/3 of T_tr per collision from the start, so the
+// reach is ln(T0/(m floor)) over that; rough grains started at their fixed-point theta the same with
+// the cooling state's zeta*, and from theta = 0 within a percent (the relaxation, some tens of
+// collisions of the thousands); two equal species are the one; an elastic gas never gets there.
+TEST(HcsTheory, CoolingReach) {
+    const double floor = 1e-300;
+    const HcsTheory smooth = one_species(0.8, -1.0, 0.4, 1.5);
+    EXPECT_NEAR(cooling_reach(smooth, {{2.0}, {0.3}}, floor) / (std::log(2.0 / 1.5 / floor) / ((1 - 0.64) / 3)), 1.0,
+                1e-9);
+    const HcsTheory rough = one_species(0.9, 0.4);
+    const HcsTemperatures at_star{{1.0}, {theta_fixed_point(0.9, 0.4, 0.4)}};
+    const double expected = std::log(1.0 / floor) / reduced_cooling_rate(rough, at_star);
+    EXPECT_NEAR(cooling_reach(rough, at_star, floor) / expected, 1.0, 1e-6);
+    const double relaxed = cooling_reach(rough, {{1.0}, {0.0}}, floor);
+    EXPECT_NEAR(relaxed / expected, 1.0, 0.01);
+    EXPECT_NE(relaxed, expected);
+    const HcsTheory two({{1.0, 0.5, 0.4, 0.25}, {1.0, 0.5, 0.4, 0.75}}, {{0.9, 0.4}, {0.9, 0.4}, {0.9, 0.4}}, 1.0);
+    EXPECT_NEAR(cooling_reach(two, {{1.0, 1.0}, {0.0, 0.0}}, floor) / relaxed, 1.0, 1e-6);
+    EXPECT_TRUE(std::isinf(cooling_reach(one_species(1.0, 1.0), {{1.0}, {0.0}}, floor)));
+}
+
 TEST(HcsTheory, RejectsInvalidParameters) {
     EXPECT_THROW(one_species(-0.1, 0.0), std::invalid_argument);
     EXPECT_THROW(one_species(0.9, 1.5), std::invalid_argument);

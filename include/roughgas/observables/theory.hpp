@@ -158,6 +158,13 @@ class HcsTrajectory {
     std::size_t steps_ = 0;
 };
 
+// How many collisions per particle the gas of `theory`, started at `initial`, cools until the smallest
+// T_tr,s/m_s reaches `floor`: the trajectory followed in steps of a few collisions per particle until
+// its reduced cooling rate zeta* settles (the cooling state's ratios of the temperatures), the
+// collisions on the way counted as the fall of ln T_tr over zeta*; then ln(min T_tr,s/m_s / floor)/zeta*
+// more. +infinity if the settled zeta* is not > 0 (an elastic gas).
+double cooling_reach(const HcsTheory& theory, const HcsTemperatures& initial, double floor);
+
 // The theory of a run if every species pair has constant restitution, else nullopt.
 std::optional<HcsTheory> hcs_theory(const RunSpec& spec);
 HcsTemperatures initial_temperatures(const RunSpec& spec);
