@@ -147,35 +147,38 @@ double HcsTheory::mixture_T_rot(const HcsTemperatures& T) const {
     return fraction_weighted(T.T_rot);
 }
 
-double reduced_cooling_rate(const HcsTheory& theory, const HcsTemperatures& T) {
+namespace {
+// Collisions per particle and unit time at T, each grain's weighted by its fraction: the sum of
+// x_a nu_a and the sum of x_a (nu_c is their ratio).
+std::pair<double, double> weighted_frequency(const HcsTheory& theory, const HcsTemperatures& T) {
     const std::size_t S = theory.species_count();
-    std::vector<double> dT_tr(S), dT_rot(S);
-    theory.rates(T.T_tr, T.T_rot, dT_tr, dT_rot);
-    double nu = 0, x = 0; // collisions per particle and unit time: each grain's, fraction-weighted
+    double nu = 0, x = 0;
     for (std::size_t a = 0; a < S; ++a) {
         const double xa = theory.species()[a].fraction;
         for (std::size_t b = 0; b < S; ++b)
             nu += xa * theory.exchange(a, b, T.T_tr, T.T_rot).frequency;
         x += xa;
     }
+    return {nu, x};
+}
+double collision_frequency(const HcsTheory& theory, const HcsTemperatures& T) {
+    const auto [nu, x] = weighted_frequency(theory, T);
+    return nu / x;
+}
+} // namespace
+
+double reduced_cooling_rate(const HcsTheory& theory, const HcsTemperatures& T) {
+    const std::size_t S = theory.species_count();
+    std::vector<double> dT_tr(S), dT_rot(S);
+    theory.rates(T.T_tr, T.T_rot, dT_tr, dT_rot);
+    const auto [nu, x] = weighted_frequency(theory, T);
     const HcsTemperatures rate{dT_tr, dT_rot};
     return -theory.mixture_T_tr(rate) / (theory.mixture_T_tr(T) * nu / x);
 }
 
 double cooling_reach(const HcsTheory& theory, const HcsTemperatures& initial, double floor) {
     const std::size_t S = theory.species_count();
-    // Collisions per particle and unit time at T: each grain's, fraction-weighted.
-    const auto frequency = [&](const HcsTemperatures& T) {
-        double nu = 0, x = 0;
-        for (std::size_t a = 0; a < S; ++a) {
-            const double xa = theory.species()[a].fraction;
-            for (std::size_t b = 0; b < S; ++b)
-                nu += xa * theory.exchange(a, b, T.T_tr, T.T_rot).frequency;
-            x += xa;
-        }
-        return nu / x;
-    };
-    if (!(frequency(initial) > 0) || !(floor > 0))
+    if (!(collision_frequency(theory, initial) > 0) || !(floor > 0))
         return HUGE_VAL;
     // Steps of about 5 collisions per particle at the current frequency (the gas's own clock: an
     // elastic gas keeps it, a cooling one slows it), until zeta* settles to 1e-9 (or 1e-15 absolute:
@@ -184,7 +187,7 @@ double cooling_reach(const HcsTheory& theory, const HcsTemperatures& initial, do
     HcsTemperatures T = initial;
     double t = 0, zeta = reduced_cooling_rate(theory, T), collisions = 0;
     for (int k = 0; k < 4000; ++k) {
-        t += 5.0 / frequency(T);
+        t += 5.0 / collision_frequency(theory, T);
         const HcsTemperatures next = trajectory.at(t);
         const double z = reduced_cooling_rate(theory, next);
         const double mean = 0.5 * (zeta + z); // -d ln T_tr/ds, nearly constant over the step

@@ -300,12 +300,7 @@ template <class Policy, bool General = false> class SpatialEngine {
     static constexpr std::size_t cell_sum_fields = 5;
     const std::vector<double>& cell_sums() {
         if (!tallies_valid_) {
-            const std::size_t units = (cells_ + cells_per_unit - 1) / cells_per_unit;
-            team_->for_each(units, [&](std::size_t u) {
-                const std::size_t end = std::min(cells_, (u + 1) * cells_per_unit);
-                for (std::size_t c = u * cells_per_unit; c < end; ++c)
-                    tally_cell(c);
-            });
+            for_each_cell([&](std::size_t c) { tally_cell(c); });
             tallies_valid_ = true;
         }
         return cell_tally_;
@@ -316,19 +311,27 @@ template <class Policy, bool General = false> class SpatialEngine {
     std::vector<double> cell_spin_sums() {
         const std::size_t S = blocks_.size();
         std::vector<double> sums(cells_ * S, 0.0);
+        for_each_cell([&](std::size_t c) {
+            for (std::size_t s = 0; s < S; ++s) {
+                const auto [first, last] = cell_range(s, c);
+                double w2 = 0;
+                for (std::size_t i = first; i < last; ++i)
+                    w2 += norm2(w_[i]);
+                sums[c * S + s] = w2;
+            }
+        });
+        return sums;
+    }
+
+    // f(c) for every cell, in work units of cells_per_unit cells on the team (each cell by one
+    // worker: what f sums per cell does not depend on the threads).
+    template <class F> void for_each_cell(F&& f) {
         const std::size_t units = (cells_ + cells_per_unit - 1) / cells_per_unit;
         team_->for_each(units, [&](std::size_t u) {
             const std::size_t end = std::min(cells_, (u + 1) * cells_per_unit);
             for (std::size_t c = u * cells_per_unit; c < end; ++c)
-                for (std::size_t s = 0; s < S; ++s) {
-                    const auto [first, last] = cell_range(s, c);
-                    double w2 = 0;
-                    for (std::size_t i = first; i < last; ++i)
-                        w2 += norm2(w_[i]);
-                    sums[c * S + s] = w2;
-                }
+                f(c);
         });
-        return sums;
     }
 
     // The largest local collision frequency per grain: over the profile bins (the slabs of

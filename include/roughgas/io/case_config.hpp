@@ -264,12 +264,8 @@ inline std::vector<WallTable> wall_tables() {
             t.push_back({std::string(upper ? "wall_upper_" : "wall_lower_") + "xyz"[a], a, upper});
     return t;
 }
-inline std::optional<WallConfig>& wall_config(CaseConfig& c, const WallTable& t) {
-    if (t.axis < 0)
-        return t.upper ? c.wall_upper : c.wall_lower;
-    return (t.upper ? c.axis_wall_upper : c.axis_wall_lower)[static_cast<std::size_t>(t.axis)];
-}
-inline const std::optional<WallConfig>& wall_config(const CaseConfig& c, const WallTable& t) {
+// The table's WallConfig in `c` (CaseConfig or const CaseConfig).
+template <class Config> auto& wall_config(Config& c, const WallTable& t) {
     if (t.axis < 0)
         return t.upper ? c.wall_upper : c.wall_lower;
     return (t.upper ? c.axis_wall_upper : c.axis_wall_lower)[static_cast<std::size_t>(t.axis)];
