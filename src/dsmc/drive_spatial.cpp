@@ -323,7 +323,7 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
     if (io.summary) {
         ReplicaSummary& s = *io.summary;
         s.kernel = kernel;
-        s.bytes_per_particle = box_bytes_per_particle(domain);
+        s.bytes_per_particle = engine.bytes_per_particle();
         s.memory_per_particle = s.bytes_per_particle;
         s.collisions = engine.collisions();
         s.resumed_at = resumed_at;

@@ -84,8 +84,9 @@ std::vector<Column> replica_row_columns(const RunSpec& spec);
 // engine's index and sort arrays, a row's scratch): what a command checks against the machine's
 // free memory before any work (core/available_memory.hpp).
 std::size_t memory_per_particle_bound(const RunSpec& spec);
-// A box's store per grain (dsmc/spatial_engine.hpp): positions, velocities and spins twice (the
-// sort), the cell key, with nearest partners the identities and last partners twice.
+// A bound of a box's store per grain (dsmc/spatial_engine.hpp): positions, velocities and spins
+// twice (the sort; smooth grains keep one copy of their spins and an identity, 20 bytes less), the
+// cell key, with nearest partners the identities and last partners twice.
 std::size_t box_bytes_per_particle(const DomainSpec& d);
 // The same for what does not grow with the grains: a box's per-cell arrays and the rows it keeps
 // (its profiles: bins x fields per row) (0 without [domain]).

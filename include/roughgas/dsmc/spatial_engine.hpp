@@ -44,6 +44,13 @@
 // the cells per unit (fixed), never on the thread count. The flight runs over fixed chunks of
 // grains, the sort over chunks fixed by the grain and cell counts (sort_into_cells).
 //
+// Spins. Rough grains' spins move with them in the sort, beside positions and velocities, since
+// every collision reads and changes them. Smooth grains never change theirs (no collision, flight
+// or wall of a smooth gas acts on them): they stay where the start put them, indexed by the
+// grain's identity, and the sort moves the 4-byte identity instead of the 24-byte spin. The rows
+// that read the spins gather them into store order (angular_velocities()), so every output is the
+// same, bit for bit, as if the spins had moved with their grains.
+//
 // Compiled twice: `General` = false for a periodic box without gravity (a flight that only adds and
 // wraps), true for walls or gravity (the exact crossing times, the walls' random emission from the
 // stream (seed, wall_emission, replica, step, chunk) and their momentum and energy tallies).
@@ -203,6 +210,14 @@ template <class Policy, bool General = false> class SpatialEngine {
                 }
             }
         }
+        nearest_ = domain_.partners == PartnerSelection::nearest;
+        if (nearest_ || !rough) { // identities = initial store indices, so spin(i) = w_[i] until the first sort
+            id_.resize(particles_);
+            for (std::size_t i = 0; i < particles_; ++i)
+                id_[i] = static_cast<std::uint32_t>(i);
+        }
+        if (nearest_)
+            last_.assign(particles_, no_partner);
         if (domain_.initial_state) {
             std::copy(from.v.begin(), from.v.end(), v_.begin());
             std::copy(from.w.begin(), from.w.end(), w_.begin());
@@ -214,12 +229,6 @@ template <class Policy, bool General = false> class SpatialEngine {
             for (std::size_t i = 0; i < particles_; ++i)
                 v_[i].x += domain_.shear_rate * (x_[i].y - 0.5 * domain_.size[1]);
             remove_mean_velocity(*this, blocks_);
-        }
-        if (domain_.partners == PartnerSelection::nearest) {
-            id_.resize(particles_);
-            for (std::size_t i = 0; i < particles_; ++i)
-                id_[i] = static_cast<std::uint32_t>(i);
-            last_.assign(particles_, no_partner);
         }
         sort_into_cells();
     }
@@ -247,7 +256,7 @@ template <class Policy, bool General = false> class SpatialEngine {
     // The store interface of dsmc/init.hpp, for the initial state only: a velocity changed between
     // steps would not reach the cells' sums of collision_frequency(), taken in the last step.
     Vec3& v(std::size_t i) { return v_[i]; }
-    Vec3& w(std::size_t i) { return w_[i]; }
+    Vec3& w(std::size_t i) { return spin(i); }
 
     // One step of length dt: flight, sort, collisions. `obs(record, pair_type)` sees every collision
     // (ForkableObserver of dsmc/engine.hpp: a copy per work unit, merged in unit order).
@@ -258,7 +267,7 @@ template <class Policy, bool General = false> class SpatialEngine {
             stream(dt);
         sort_into_cells();
         const std::size_t units = (cells_ + cells_per_unit - 1) / cells_per_unit;
-        const bool nearest = domain_.partners == PartnerSelection::nearest;
+        const bool nearest = nearest_;
         // Each unit's observer and count in cache lines of their own (core/own_lines.hpp says why).
         struct alignas(64) Unit {
             Observer observer;
@@ -316,7 +325,7 @@ template <class Policy, bool General = false> class SpatialEngine {
                 const auto [first, last] = cell_range(s, c);
                 double w2 = 0;
                 for (std::size_t i = first; i < last; ++i)
-                    w2 += norm2(w_[i]);
+                    w2 += norm2(spin(i));
                 sums[c * S + s] = w2;
             }
         });
@@ -413,9 +422,29 @@ template <class Policy, bool General = false> class SpatialEngine {
     const DomainSpec& domain() const { return domain_; }
     const std::vector<SpeciesBlock>& species() const { return blocks_; }
     const std::vector<PairType>& pair_types() const { return types_; }
+    // The store's bytes per grain: positions and velocities twice (the sort), rough grains' spins
+    // twice or smooth grains' once with their identity twice, the cell key, with nearest partners
+    // the identities and last partners twice.
+    std::size_t bytes_per_particle() const {
+        return 4 * sizeof(Vec3) + (rough ? 2 * sizeof(Vec3) : sizeof(Vec3)) + sizeof(std::uint32_t) +
+               (id_.empty() ? 0 : 2 * sizeof(std::uint32_t)) + (last_.empty() ? 0 : 2 * sizeof(std::uint32_t));
+    }
     const std::vector<Vec3>& positions() const { return x_; }
     const std::vector<Vec3>& velocities() const { return v_; }
-    const std::vector<Vec3>& angular_velocities() const { return w_; }
+    // The spins in store order (smooth grains: gathered once per state into the positions' free
+    // second copy; valid until the next step).
+    const std::vector<Vec3>& angular_velocities() {
+        if constexpr (rough) {
+            return w_;
+        } else {
+            if (spins_gathered_ != steps_) {
+                for (std::size_t i = 0; i < particles_; ++i)
+                    x2_[i] = w_[id_[i]];
+                spins_gathered_ = steps_;
+            }
+            return x2_;
+        }
+    }
     WorkerTeam& team() { return *team_; }
     // Grains of species s in cell c: the store's range [first, last) (valid until the next step).
     std::pair<std::size_t, std::size_t> cell_range(std::size_t s, std::size_t c) const {
@@ -439,7 +468,9 @@ template <class Policy, bool General = false> class SpatialEngine {
         g.t = t_;
         g.x = x_;
         g.v = v_;
-        g.w = w_;
+        g.w.resize(particles_);
+        for (std::size_t i = 0; i < particles_; ++i)
+            g.w[i] = spin(i);
         if (domain_.lees_edwards())
             for (std::size_t i = 0; i < particles_; ++i)
                 g.v[i].x -= domain_.shear_rate * (x_[i].y - 0.5 * domain_.size[1]);
@@ -451,11 +482,13 @@ template <class Policy, bool General = false> class SpatialEngine {
     // continued from it draws the same numbers as one without the stop (the streams are keyed by
     // the step).
     void save(ByteWriter& out) const {
-        for (const std::vector<Vec3>* a : {&x_, &v_, &w_}) {
-            out.u64(a->size());
-            for (const Vec3& q : *a)
+        for (int a = 0; a < 3; ++a) { // positions, velocities, spins (in store order)
+            out.u64(particles_);
+            for (std::size_t i = 0; i < particles_; ++i) {
+                const Vec3& q = a == 0 ? x_[i] : a == 1 ? v_[i] : spin(i);
                 for (double c : {q.x, q.y, q.z})
                     out.f64(c);
+            }
         }
         out.f64(t_);
         out.put(steps_);
@@ -465,12 +498,14 @@ template <class Policy, bool General = false> class SpatialEngine {
         for (const Virial& b : bin_virial_)
             for (double c : b)
                 out.f64(c);
-        for (const std::vector<std::uint32_t>* a : {&id_, &last_})
-            for (std::uint32_t q : *a)
-                out.put(q);
+        if (nearest_)
+            for (const std::vector<std::uint32_t>* a : {&id_, &last_})
+                for (std::uint32_t q : *a)
+                    out.put(q);
     }
     void restore(ByteReader& in) {
-        for (std::vector<Vec3>* a : {&x_, &v_, &w_}) {
+        // Smooth grains' spins arrive in store order: into x2_ until the identities are known.
+        for (std::vector<Vec3>* a : {&x_, &v_, rough ? &w_ : &x2_}) {
             if (in.count(3 * sizeof(double)) != particles_)
                 throw std::runtime_error("the state has another number of particles");
             for (Vec3& q : *a) {
@@ -487,13 +522,35 @@ template <class Policy, bool General = false> class SpatialEngine {
         for (Virial& b : bin_virial_)
             for (double& c : b)
                 c = in.f64();
-        for (std::vector<std::uint32_t>* a : {&id_, &last_})
-            for (std::uint32_t& q : *a)
-                q = in.get<std::uint32_t>();
+        if (nearest_) {
+            for (std::vector<std::uint32_t>* a : {&id_, &last_})
+                for (std::uint32_t& q : *a)
+                    q = in.get<std::uint32_t>();
+        } else if constexpr (!rough) {
+            for (std::size_t i = 0; i < particles_; ++i)
+                id_[i] = static_cast<std::uint32_t>(i);
+        }
+        if constexpr (!rough)
+            for (std::size_t i = 0; i < particles_; ++i)
+                w_[id_[i]] = x2_[i];
         sort_into_cells();
     }
 
   private:
+    // The spin of the grain at store index i.
+    Vec3& spin(std::size_t i) {
+        if constexpr (rough)
+            return w_[i];
+        else
+            return w_[id_[i]];
+    }
+    const Vec3& spin(std::size_t i) const {
+        if constexpr (rough)
+            return w_[i];
+        else
+            return w_[id_[i]];
+    }
+
     double phase(const Vec3& x) const { return k_[0] * x.x + k_[1] * x.y + k_[2] * x.z; }
 
     Vec3 wave_direction() const {
@@ -540,7 +597,7 @@ template <class Policy, bool General = false> class SpatialEngine {
             if (wave.mode == Perturbation::temperature) {
                 const double f = std::sqrt(1 + wave.amplitude * s);
                 v_[i] = f * v_[i];
-                w_[i] = f * w_[i];
+                spin(i) = f * spin(i);
             } else {
                 v_[i] += (wave.amplitude * c * s) * e;
             }
@@ -709,7 +766,8 @@ template <class Policy, bool General = false> class SpatialEngine {
         const double sign = upper ? -1.0 : 1.0; // n = sign e_a, from the wall into the gas
         Vec3 U{wall.velocity[0], wall.velocity[1], wall.velocity[2]};
         component(U, a) = 0;
-        const Vec3 v0 = v, w0 = w_[i];
+        const Vec3 v0 = v;
+        [[maybe_unused]] const Vec3 w0 = rough ? w_[i] : Vec3{};
         const GrainProperties& grain = blocks_[s].grain;
         switch (wall.kind) {
         case WallKind::specular:
@@ -717,7 +775,7 @@ template <class Policy, bool General = false> class SpatialEngine {
             break;
         case WallKind::diffuse:
             emit_from_diffuse_wall<rough>(rng, wall.temperature, grain.mass, blocks_[s].moment_of_inertia(), U, a,
-                                          sign, v, w_[i]);
+                                          sign, v, spin(i)); // smooth grains: the spin is left as it is
             break;
         case WallKind::rough: {
             Vec3 n{};
@@ -781,9 +839,11 @@ template <class Policy, bool General = false> class SpatialEngine {
         const std::size_t S = blocks_.size();
         resize_on_huge_pages(key_, particles_);
         cell_start_.resize(S * (cells_ + 1));
-        for (std::vector<Vec3>* a : {&x2_, &v2_, &w2_})
+        spins_gathered_ = -1;
+        for (std::vector<Vec3>* a : {&x2_, &v2_})
             resize_on_huge_pages(*a, particles_);
-        const bool nearest = !id_.empty();
+        if constexpr (rough)
+            resize_on_huge_pages(w2_, particles_);
         id2_.resize(id_.size());
         last2_.resize(last_.size());
         for (std::size_t s = 0; s < S; ++s) {
@@ -814,23 +874,24 @@ template <class Policy, bool General = false> class SpatialEngine {
                 }
             }
             start[cells_] = next;
-            // Compiled twice, so that the loop of random partners has no test for the identities.
-            const auto scatter = [&]<bool Identities>(std::size_t p) {
+            // Compiled twice, so that the loop of random partners has no test for the last partners.
+            const auto scatter = [&]<bool Nearest>(std::size_t p) {
                 std::uint32_t* pos = counts_.data() + p * cells_;
                 const auto [first, last] = range(p);
                 for (std::size_t i = first; i < last; ++i) {
                     const std::uint32_t q = pos[key_[i]]++;
                     x2_[q] = x_[i];
                     v2_[q] = v_[i];
-                    w2_[q] = w_[i];
-                    if constexpr (Identities) {
+                    if constexpr (rough)
+                        w2_[q] = w_[i];
+                    if constexpr (Nearest || !rough)
                         id2_[q] = id_[i];
+                    if constexpr (Nearest)
                         last2_[q] = last_[i];
-                    }
                 }
             };
             team_->for_each(P, [&](std::size_t p) {
-                if (nearest)
+                if (nearest_)
                     scatter.template operator()<true>(p);
                 else
                     scatter.template operator()<false>(p);
@@ -838,7 +899,8 @@ template <class Policy, bool General = false> class SpatialEngine {
         }
         x_.swap(x2_);
         v_.swap(v2_);
-        w_.swap(w2_);
+        if constexpr (rough)
+            w_.swap(w2_);
         id_.swap(id2_);
         last_.swap(last2_);
     }
@@ -996,10 +1058,17 @@ template <class Policy, bool General = false> class SpatialEngine {
     // Per (cell, species): cell_sum_fields sums of tally_cell; valid since the last step's collisions.
     std::vector<double> cell_tally_;
     bool tallies_valid_ = false;
+    // Rough grains: w_[i] is the spin of the grain at store index i (sorted with it, w2_ its second
+    // copy). Smooth grains: w_[id_[i]] (never moved, w2_ unused).
     std::vector<Vec3> x_, v_, w_, x2_, v2_, w2_;
     std::vector<std::uint32_t> key_, cell_start_, counts_;
-    // Nearest partners only (else empty): each grain's identity and its most recent partner's.
+    // Each grain's identity (smooth grains, or nearest partners; else empty) and, with nearest
+    // partners only, its most recent partner's.
     std::vector<std::uint32_t> id_, last_, id2_, last2_;
+    bool nearest_ = false;
+    // Smooth grains: the step at which x2_ last received the spins in store order (-1: not since
+    // the last sort). Between sorts x2_, the positions' second copy, is free.
+    std::int64_t spins_gathered_ = -1;
     std::array<double, 3> cells_per_length_{};
     double t_ = 0;
     std::int64_t steps_ = 0, collisions_ = 0;
