@@ -188,13 +188,14 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
             // homogeneous shear runs' Strang steps report them (half a stream after the collisions:
             // V_x - a (h/2) V_y); the spins about their mean.
             Vec3 Omega{};
+            const std::vector<Vec3>& w_store = engine.angular_velocities(); // the spins in store order
             Vec3Column v_col = column_of(engine.velocities().data(), 0);
-            Vec3Column w_col = column_of(engine.angular_velocities().data(), 0);
+            Vec3Column w_col = column_of(w_store.data(), 0);
             if (sheared) {
                 Omega = mean_spin(w_col, slices);
                 for (std::size_t i = 0; i < engine.particles(); ++i) {
                     peculiar[i] = engine.peculiar_velocity(i, profile_geometry.half_flight);
-                    spin[i] = engine.angular_velocities()[i] - Omega;
+                    spin[i] = w_store[i] - Omega;
                 }
                 v_col = column_of(peculiar.data(), 0);
                 w_col = column_of(spin.data(), 0);

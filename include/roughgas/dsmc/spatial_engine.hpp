@@ -46,10 +46,10 @@
 //
 // Spins. Rough grains' spins move with them in the sort, beside positions and velocities, since
 // every collision reads and changes them. Smooth grains never change theirs (no collision, flight
-// or wall of a smooth gas acts on them): they stay where the start put them, indexed by the
-// grain's identity, and the sort moves the 4-byte identity instead of the 24-byte spin. The rows
-// that read the spins gather them into store order (angular_velocities()), so every output is the
-// same, bit for bit, as if the spins had moved with their grains.
+// or wall of a smooth gas acts on them): they stay in place, indexed by the grain's identity, and
+// the sort moves the 4-byte identity instead of the 24-byte spin. The rows that read the spins
+// gather them into store order (angular_velocities()), so every output is the same, bit for bit,
+// as if the spins had moved with their grains.
 //
 // Compiled twice: `General` = false for a periodic box without gravity (a flight that only adds and
 // wraps), true for walls or gravity (the exact crossing times, the walls' random emission from the
@@ -62,6 +62,7 @@
 #include "roughgas/core/bytes.hpp"
 #include "roughgas/core/huge_page_buffer.hpp"
 #include "roughgas/core/own_lines.hpp"
+#include "roughgas/core/prefetch.hpp"
 #include "roughgas/core/rng.hpp"
 #include "roughgas/core/vec.hpp"
 #include "roughgas/core/worker_team.hpp"
@@ -320,12 +321,13 @@ template <class Policy, bool General = false> class SpatialEngine {
     std::vector<double> cell_spin_sums() {
         const std::size_t S = blocks_.size();
         std::vector<double> sums(cells_ * S, 0.0);
+        const std::vector<Vec3>& w = angular_velocities();
         for_each_cell([&](std::size_t c) {
             for (std::size_t s = 0; s < S; ++s) {
                 const auto [first, last] = cell_range(s, c);
                 double w2 = 0;
                 for (std::size_t i = first; i < last; ++i)
-                    w2 += norm2(spin(i));
+                    w2 += norm2(w[i]);
                 sums[c * S + s] = w2;
             }
         });
@@ -431,18 +433,33 @@ template <class Policy, bool General = false> class SpatialEngine {
     }
     const std::vector<Vec3>& positions() const { return x_; }
     const std::vector<Vec3>& velocities() const { return v_; }
-    // The spins in store order (smooth grains: gathered once per state into the positions' free
-    // second copy; valid until the next step).
+    // The spins in store order (valid until the next step). Smooth grains': gathered once per state
+    // into the positions' free second copy. With random partners the identities mean nothing else,
+    // so the gathered copy becomes the spins and the identities are renumbered to the store's
+    // order: the next gather then follows only the grains' moves since this one (mostly to nearby
+    // cells, within the cache) instead of a random permutation of the whole store.
     const std::vector<Vec3>& angular_velocities() {
         if constexpr (rough) {
             return w_;
         } else {
             if (spins_gathered_ != steps_) {
-                for (std::size_t i = 0; i < particles_; ++i)
-                    x2_[i] = w_[id_[i]];
+                const std::size_t chunk = 65536, units = (particles_ + chunk - 1) / chunk;
+                team_->for_each(units, [&](std::size_t u) {
+                    const std::size_t end = std::min(particles_, (u + 1) * chunk);
+                    for (std::size_t i = u * chunk; i < end; ++i) {
+                        if (i + 16 < end)
+                            prefetch_line(&w_[id_[i + 16]]);
+                        x2_[i] = w_[id_[i]];
+                    }
+                });
+                if (!nearest_) {
+                    w_.swap(x2_);
+                    for (std::size_t i = 0; i < particles_; ++i)
+                        id_[i] = static_cast<std::uint32_t>(i);
+                }
                 spins_gathered_ = steps_;
             }
-            return x2_;
+            return nearest_ ? x2_ : w_;
         }
     }
     WorkerTeam& team() { return *team_; }
@@ -1059,15 +1076,15 @@ template <class Policy, bool General = false> class SpatialEngine {
     std::vector<double> cell_tally_;
     bool tallies_valid_ = false;
     // Rough grains: w_[i] is the spin of the grain at store index i (sorted with it, w2_ its second
-    // copy). Smooth grains: w_[id_[i]] (never moved, w2_ unused).
+    // copy). Smooth grains: w_[id_[i]] (not moved by the sort; w2_ unused).
     std::vector<Vec3> x_, v_, w_, x2_, v2_, w2_;
     std::vector<std::uint32_t> key_, cell_start_, counts_;
     // Each grain's identity (smooth grains, or nearest partners; else empty) and, with nearest
     // partners only, its most recent partner's.
     std::vector<std::uint32_t> id_, last_, id2_, last2_;
     bool nearest_ = false;
-    // Smooth grains: the step at which x2_ last received the spins in store order (-1: not since
-    // the last sort). Between sorts x2_, the positions' second copy, is free.
+    // Smooth grains: the step at which the spins were last gathered into store order (-1: not
+    // since the last sort). Between sorts x2_, the positions' second copy, is free to take them.
     std::int64_t spins_gathered_ = -1;
     std::array<double, 3> cells_per_length_{};
     double t_ = 0;
