@@ -956,8 +956,9 @@ class Builder {
         }
         if (c.run.kernel == CollisionKernel::maxwell)
             check_maxwell_kernel(c);
-        else if (c.run.kind == RunKind::cooling && use_ == CaseUse::run && !driven(c))
-            check_cooling_reach(c);
+        else if (c.run.kind == RunKind::cooling && use_ == CaseUse::run && !driven(c) &&
+                 !(c.initial && !c.initial->from.empty()))
+            check_cooling_reach(c); // from a saved state: its own temperatures (io/run_states.cpp)
         if (c.run.histogram_every > c.run.end) {
             add("run.histogram_every",
                 fmt::format("run.histogram_every = {}: after the end of the run (must be <= run.end = {})",
@@ -1052,7 +1053,7 @@ class Builder {
     // 1e-300 m (in the case's units) the squares of the velocities underflow and the run would stop
     // with an error partway; refused before any work (cooling_reach: the theory's trajectory from the
     // species' temperatures). Not for a box whose walls drive the gas (a diffuse or moving wall holds
-    // it at a steady state); with initial.from the species' temperatures stand for the saved state's.
+    // it at a steady state); with initial.from, run_states.cpp checks it from the saved state's.
     void check_cooling_reach(const CaseConfig& c) {
         const std::size_t S = c.species.size();
         std::vector<HcsSpecies> species;

@@ -7,9 +7,13 @@
 #include "roughgas/io/csv_writer.hpp"
 #include "roughgas/io/input_error.hpp"
 #include "roughgas/io/state_file.hpp"
+#include "roughgas/observables/theory.hpp"
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+#include <optional>
 #include <system_error>
 
 namespace roughgas {
@@ -32,6 +36,46 @@ std::vector<StateSpecies> case_species(const RunSpec& spec) {
 
 StateFile read_state(const fs::path& path) {
     return decode_state(read_checkpoint_bytes(path));
+}
+
+// A cooling run from a saved state: the state's temperatures, not the species', set where T_tr
+// reaches 1e-300 m (case_file.cpp checks the reach of a run from a Maxwellian at the species'
+// temperatures; an aged state is much colder and reaches it sooner). Replica 0's state stands for
+// the others'.
+void check_cooling_reach_from(const StateFile& state, const RunSpec& spec, const CaseConfig& cfg,
+                              const std::string& case_file, const std::string& dir) {
+    if (spec.shear || spec.kernel != CollisionKernel::hard_sphere || driven(cfg))
+        return;
+    const std::optional<HcsTheory> theory = hcs_theory(spec);
+    if (!theory)
+        return; // restitution that depends on the impact speed: the gas cools ever slower
+    const std::vector<SpeciesBlock> blocks = make_species_blocks(spec.species, spec.particles);
+    HcsTemperatures T;
+    for (const SpeciesBlock& b : blocks) {
+        double tr = 0, rot = 0;
+        for (std::size_t i = b.offset; i < b.offset + b.count; ++i) {
+            tr += norm2(state.grains.v[i]);
+            rot += norm2(state.grains.w[i]);
+        }
+        const double n = static_cast<double>(b.count);
+        T.T_tr.push_back(b.grain.mass * tr / (3 * n));
+        T.T_rot.push_back(b.moment_of_inertia() * rot / (3 * n));
+    }
+    if (!std::all_of(T.T_tr.begin(), T.T_tr.end(), [](double t) { return t > 0 && std::isfinite(t); }))
+        return; // a gas at rest does not cool
+    double reach = HUGE_VAL;
+    try {
+        reach = cooling_reach(*theory, T, 1e-300);
+    } catch (const std::invalid_argument&) {
+        return;
+    }
+    if (spec.end > reach)
+        throw InputError(case_file, "run.end",
+                         fmt::format("run.end = {}: the state of initial.from = \"{}\" (T_tr = {:.3g} for the first "
+                                     "species) cools with constant restitution and reaches T_tr = 1e-300 m, where "
+                                     "the squares of the velocities underflow, at about {:.4g} collisions per "
+                                     "particle from its start: end it before (run.end < {:.4g})",
+                                     spec.end, dir, T.T_tr[0], reach, reach));
 }
 
 } // namespace
@@ -66,6 +110,7 @@ std::string attach_initial_state(RunSpec& spec, const CaseConfig& cfg, const std
         throw refuse(fmt::format("{} holds {}; the case has {} (the species and run.particles must be the same)",
                                  state_file_path(dir, 0).string(), have, asked));
     }
+    check_cooling_reach_from(first, spec, cfg, case_file, dir);
     const bool placed = !first.grains.x.empty() && first.grains.box == spec.domain->size;
     if (placed && spec.domain->initial.mode == Perturbation::density)
         throw InputError(case_file, "initial.mode",

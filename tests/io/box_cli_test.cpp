@@ -566,5 +566,38 @@ TEST(BoxCli, StartsFromTheSavedStateOfAnEarlierRun) {
     EXPECT_TRUE(fs::exists(dir / "box" / "state" / "replica_0.bin"));
 }
 
+// A cooling run from a saved state reaches T_tr = 1e-300 m sooner than one from the species'
+// temperatures: it is refused from the state's own temperatures (replica 0's), before any work. A box
+// at alpha = 0.5 saved after 100 collisions per particle has about 100 fewer left than a fresh start
+// (within the Maxwellian cooling rate's few per cent of its 30 e-foldings: 10 collisions); a run.end
+// between the two reaches is refused from the state, accepted from a fresh start.
+TEST(BoxCli, ACoolingRunFromASavedStateIsRefusedPastTheStatesReach) {
+    const test::ScratchDir dir;
+    const std::string c = replaced(box_case(3000, 1, 100.0), "alpha = 0.9", "alpha = 0.5");
+    const fs::path aged = dir.write("aged.toml", replaced(c, "seed = 4", "seed = 4\nsave_state = true"));
+    ASSERT_EQ(test::run_roughgas("run " + q(aged) + " --quiet --out " + q(dir / "aged"), dir).status, 0);
+    const fs::path fresh = dir.write("fresh.toml", c);
+    const fs::path from = dir.write("from.toml", c + "\n[initial]\nfrom = " + q(dir / "aged") + "\n");
+    const auto reach_of = [&](const fs::path& f) {
+        const test::CommandResult r = test::run_roughgas("check " + q(f) + " --set run.end=1e6", dir);
+        EXPECT_EQ(r.status, 2) << r.err;
+        EXPECT_NE(r.err.find("run.end = 1000000"), std::string::npos) << r.err;
+        const std::size_t at = r.err.find("(run.end < ");
+        return at == std::string::npos ? 0.0 : std::stod(r.err.substr(at + 11));
+    };
+    const double fresh_reach = reach_of(fresh), state_reach = reach_of(from);
+    EXPECT_NEAR(fresh_reach - state_reach, 100.0, 10.0) << fresh_reach << " " << state_reach;
+    const std::string between = " --set run.end=" + std::to_string(state_reach + 20);
+    EXPECT_EQ(test::run_roughgas("check " + q(fresh) + between, dir).status, 0);
+    const test::CommandResult refused =
+        test::run_roughgas("run " + q(from) + between + " --out " + q(dir / "out"), dir);
+    EXPECT_EQ(refused.status, 2) << refused.err;
+    EXPECT_NE(refused.err.find("the state of initial.from"), std::string::npos) << refused.err;
+    EXPECT_FALSE(fs::exists(dir / "out"));
+    EXPECT_EQ(test::run_roughgas("check " + q(from) + " --set run.end=" + std::to_string(state_reach - 20), dir)
+                  .status,
+              0);
+}
+
 } // namespace
 } // namespace roughgas
