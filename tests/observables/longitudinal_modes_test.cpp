@@ -299,12 +299,13 @@ TEST(LongitudinalModes, RoughSmallWaveNumbersTendToTheCoolingRates) {
     }
 }
 
-// Rough grains against a separate evaluation: a numpy script that derives the collision integrals
-// symbolically (checked by Monte Carlo quadrature of the collision rule), forms the linearised
-// equations per unit time in dimensional units (arbitrary n, sigma, m, T) from the dimensional
-// transport coefficients, divides by the collision frequency at T_tr and calls numpy.linalg.eigvals;
-// its L_par is the zero of the largest real part found by root bracketing (scipy brentq), not the
-// closed form. Printed to 15 digits.
+// Rough grains against an independent evaluation: scripts/rough_linear_theory_reference.py, which
+// computes the collision integrals over the two-temperature Maxwellian by quadrature (checked there
+// by Monte Carlo quadrature of the collision rule), finds theta by bisection, solves the
+// Chapman-Enskog moment equations for the coefficients, forms the linearised equations per unit time
+// in dimensional units (arbitrary n, sigma, m, T), divides by the collision frequency at T_tr and
+// calls numpy.linalg.eigvals; its L_par is the zero of the largest real part found by bisection, not
+// the closed form. Printed to 15 digits.
 TEST(LongitudinalModes, RoughAgreesWithAnIndependentEvaluation) {
     const struct {
         double alpha, beta, q, theta, bulk, zeta_u, kappa_star, mu_star, critical_length;

@@ -76,24 +76,29 @@ TEST(ShearMode, RoughGrainsLimits) {
     EXPECT_THROW(rough_shear_mode(0.9, 1.5, 0.4), std::invalid_argument);
 }
 
-// Against the separate evaluation (a Python script whose cooling rates and viscosity were checked
-// there by Monte Carlo integration of the collision integrals): L_c / lambda and the growth rate at
-// k -> 0 to the 4 decimals it printed, for q = 2/5; and the "dual role" of roughness at alpha = 0.9:
-// medium roughness (beta = 0) more unstable than smooth grains, nearly perfect roughness less.
+// Against the independent evaluation of scripts/rough_linear_theory_reference.py (theta by
+// bisection on the two temperatures' cooling rates, the viscosity from its moment equation, both
+// from collision integrals by quadrature; L_c by bisection): theta, eta*, the growth rate at k -> 0
+// per collision and L_c / lambda for q = 2/5, printed there to 15 digits; and the "dual role" of
+// roughness at alpha = 0.9: medium roughness (beta = 0) more unstable than smooth grains, nearly
+// perfect roughness less.
 TEST(ShearMode, RoughGrainsCoefficients) {
     const struct {
         double alpha, beta, theta, eta_star, growth, critical_length;
     } rows[] = {
-        {0.9, -0.5, 0.3426, 1.10004, 0.07297, 17.092}, {0.9, 0.0, 0.5738, 1.13762, 0.09378, 15.332},
-        {0.9, 1.0, 1.1231, 1.03735, 0.01492, 36.712},  {0.8, 0.5, 1.0429, 1.12189, 0.09243, 15.337},
-        {0.7, 0.9, 1.3323, 1.04210, 0.05324, 19.475},  {0.5, -0.5, 8.5174, 1.15576, 0.09679, 15.212},
+        {0.9, -0.5, 0.342626873322036, 1.10004270765229, 0.072970859920731, 17.0920777142791},
+        {0.9, 0.0, 0.573791953697339, 1.13761954113892, 0.093782586608934, 15.3321209295584},
+        {0.9, 1.0, 1.12312379718081, 1.03734832265247, 0.0149151296352645, 36.7124701179501},
+        {0.8, 0.5, 1.04288161138069, 1.12189223950688, 0.0924325297412739, 15.3365604252327},
+        {0.7, 0.9, 1.33229945780165, 1.04210414201517, 0.0532448624944228, 19.4751819509379},
+        {0.5, -0.5, 8.51740662898457, 1.15576134811038, 0.0967907599576141, 15.2118470827122},
     };
     for (const auto& r : rows) {
         const ShearModeTheory t = rough_shear_mode(r.alpha, r.beta, 0.4);
-        EXPECT_NEAR(t.theta, r.theta, 6e-5) << r.alpha << " " << r.beta;
-        EXPECT_NEAR(t.eta_star, r.eta_star, 6e-6) << r.alpha << " " << r.beta;
-        EXPECT_NEAR(t.growth, r.growth, 6e-6) << r.alpha << " " << r.beta;
-        EXPECT_NEAR(t.critical_length, r.critical_length, 6e-4) << r.alpha << " " << r.beta;
+        EXPECT_NEAR(t.theta / r.theta, 1.0, 1e-12) << r.alpha << " " << r.beta;
+        EXPECT_NEAR(t.eta_star / r.eta_star, 1.0, 1e-12) << r.alpha << " " << r.beta;
+        EXPECT_NEAR(t.growth / r.growth, 1.0, 1e-12) << r.alpha << " " << r.beta;
+        EXPECT_NEAR(t.critical_length / r.critical_length, 1.0, 1e-11) << r.alpha << " " << r.beta;
     }
     const double smooth = smooth_shear_mode(0.9).critical_length;
     EXPECT_LT(rough_shear_mode(0.9, 0.0, 0.4).critical_length, 0.7 * smooth);
