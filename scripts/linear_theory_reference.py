@@ -297,6 +297,19 @@ def check_collision_integrals(alpha):
         print(f"//   alpha = {a}: {name:24s} quadrature {q:+.15e}  formula {lit:+.15e}  diff {q - lit:+.1e}")
 
 
+def bisect_sign(f, lo, hi, middle=lambda lo, hi: 0.5 * (lo + hi)):
+    """The point where f changes from > 0 (at lo) to <= 0 (at hi), bisected until the middle
+    (arithmetic, or any other) no longer lies strictly between the bounds."""
+    while True:
+        mid = middle(lo, hi)
+        if mid <= lo or mid >= hi:
+            return middle(lo, hi)
+        if f(mid) > 0:
+            lo = mid
+        else:
+            hi = mid
+
+
 def zero_by_bisection(f, x_hi_start=1e-3):
     """Zero of f with f > 0 below it and f < 0 above; returns inf if f stays positive up to
     k lambda = 1e6 and 0 if it is not positive at small x (no finite crossing)."""
@@ -309,15 +322,7 @@ def zero_by_bisection(f, x_hi_start=1e-3):
         hi *= 2
         if hi > 1e6:
             return math.inf
-    while True:
-        mid = 0.5 * (lo + hi)
-        if mid <= lo or mid >= hi:
-            break
-        if f(mid) > 0:
-            lo = mid
-        else:
-            hi = mid
-    return 0.5 * (lo + hi)
+    return bisect_sign(f, lo, hi)
 
 
 def critical_length(f, zeta):

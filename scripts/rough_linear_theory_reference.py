@@ -110,6 +110,9 @@ import numpy as np
 from numpy.polynomial.hermite_e import hermegauss
 from numpy.polynomial.legendre import leggauss
 
+# The root finding of the smooth grains' reference (a bisection on the sign; no physics).
+from linear_theory_reference import bisect_sign, critical_length
+
 PI = math.pi
 
 LONGITUDINAL_CASES = [(0.9, 0.0, 0.4), (0.8, 0.5, 0.4), (0.9, 1.0, 0.4), (0.7, -0.5, 0.5)]
@@ -341,15 +344,7 @@ def cooling_state_theta(alpha, beta, q, n, sigma, m, T):
     lo, hi = 1e-8, 1e8
     if not (f(lo) > 0 > f(hi)):
         raise ValueError(f"no cooling state with finite theta at alpha={alpha}, beta={beta}, q={q}")
-    while True:
-        mid = math.sqrt(lo * hi)
-        if mid <= lo or mid >= hi:
-            break
-        if f(mid) > 0:
-            lo = mid
-        else:
-            hi = mid
-    return math.sqrt(lo * hi)
+    return bisect_sign(f, lo, hi, lambda lo, hi: math.sqrt(lo * hi))
 
 
 class RoughGas:
@@ -454,40 +449,6 @@ class RoughGas:
         """Transverse wave u_y/sqrt(T_tr/m): [zeta/2 - eta k^2/(n m)]/nu_c at k lambda = x."""
         k = x / self.lam
         return (self.zeta / 2 - self.eta * k ** 2 / (self.n * self.m)) / self.nu_c
-
-
-def zero_by_bisection(f, x_hi_start=1e-3):
-    """Zero of f with f > 0 below it and f < 0 above; inf if f stays positive up to k lambda = 1e6,
-    0 if it is not positive at small x (no finite crossing)."""
-    lo = 1e-9
-    if not f(lo) > 0:
-        return 0.0
-    hi = x_hi_start
-    while f(hi) > 0:
-        lo = hi
-        hi *= 2
-        if hi > 1e6:
-            return math.inf
-    while True:
-        mid = 0.5 * (lo + hi)
-        if mid <= lo or mid >= hi:
-            break
-        if f(mid) > 0:
-            lo = mid
-        else:
-            hi = mid
-    return 0.5 * (lo + hi)
-
-
-def critical_length(f, zeta):
-    """2 pi/x0 (in units of lambda) for the zero x0 of f; inf without cooling or if f is not
-    positive at small k, 0 if f stays positive at every k."""
-    if zeta == 0.0:
-        return math.inf
-    x = zero_by_bisection(f)
-    if x == 0.0:
-        return math.inf
-    return 2 * PI / x
 
 
 # ---------------------------------------------------------------------------------------------
