@@ -110,7 +110,34 @@ def sonine_factor(p, a2):
     return 1 + 2 * a2 * corr
 
 
-class Gas:
+class LinearModes:
+    """The modes of a gas's Navier-Stokes matrix, per collision per particle, and their labels:
+    needs longitudinal_matrix(k) (per unit time), lam, nu_c, zeta, eta, n and m."""
+
+    def longitudinal_rates(self, x):
+        """(heat, sound0, sound1) per collision per particle at k lambda = x."""
+        k = x / self.lam
+        ev = np.linalg.eigvals(self.longitudinal_matrix(k) / self.nu_c)
+        real = [e for e in ev if e.imag == 0.0]
+        if len(real) == 3:
+            heat, s0, s1 = sorted((e.real for e in ev), reverse=True)
+            return complex(heat), complex(s0), complex(s1)
+        assert len(real) == 1, ev
+        pair = [e for e in ev if e.imag != 0.0]
+        s0 = pair[0] if pair[0].imag > 0 else pair[1]
+        s1 = pair[1] if pair[0].imag > 0 else pair[0]
+        return complex(real[0].real), complex(s0), complex(s1)
+
+    def longitudinal_max_rate(self, x):
+        return max(np.linalg.eigvals(self.longitudinal_matrix(x / self.lam) / self.nu_c).real)
+
+    def shear_rate(self, x):
+        """Transverse wave u_y/sqrt(T_tr/m) (T_tr = T for smooth grains): [zeta/2 - eta k^2/(n m)]/nu_c at k lambda = x."""
+        k = x / self.lam
+        return (self.zeta / 2 - self.eta * k ** 2 / (self.n * self.m)) / self.nu_c
+
+
+class Gas(LinearModes):
     """Dimensional HCS of smooth inelastic hard spheres and its Navier-Stokes coefficients."""
 
     def __init__(self, alpha, n, sigma, m, T):
@@ -188,28 +215,6 @@ class Gas:
             [-(z + 2 * self.mu * k ** 2 / (3 * T)), -(z / 2 + 2 * self.kappa * k ** 2 / (3 * n)), -2j / 3 * k * v],
             [-1j * k * v, -1j * k * v, z / 2 - 4 * self.eta * k ** 2 / (3 * m * n)],
         ], dtype=complex)
-
-    def longitudinal_rates(self, x):
-        """(heat, sound0, sound1) per collision per particle at k lambda = x."""
-        k = x / self.lam
-        ev = np.linalg.eigvals(self.longitudinal_matrix(k) / self.nu_c)
-        real = [e for e in ev if e.imag == 0.0]
-        if len(real) == 3:
-            heat, s0, s1 = sorted((e.real for e in ev), reverse=True)
-            return complex(heat), complex(s0), complex(s1)
-        assert len(real) == 1, ev
-        pair = [e for e in ev if e.imag != 0.0]
-        s0 = pair[0] if pair[0].imag > 0 else pair[1]
-        s1 = pair[1] if pair[0].imag > 0 else pair[0]
-        return complex(real[0].real), complex(s0), complex(s1)
-
-    def longitudinal_max_rate(self, x):
-        return max(np.linalg.eigvals(self.longitudinal_matrix(x / self.lam) / self.nu_c).real)
-
-    def shear_rate(self, x):
-        """Transverse wave u_y/sqrt(T/m): [zeta/2 - eta k^2/(n m)]/nu_c at k lambda = x."""
-        k = x / self.lam
-        return (self.zeta / 2 - self.eta * k ** 2 / (self.n * self.m)) / self.nu_c
 
 
 # ---------------------------------------------------------------------------------------------

@@ -110,8 +110,9 @@ import numpy as np
 from numpy.polynomial.hermite_e import hermegauss
 from numpy.polynomial.legendre import leggauss
 
-# The root finding of the smooth grains' reference (a bisection on the sign; no physics).
-from linear_theory_reference import bisect_sign, critical_length
+# The smooth grains' reference's root finding and the labels of a mode matrix's eigenvalues (no
+# physics: the matrix is this script's own).
+from linear_theory_reference import LinearModes, bisect_sign, critical_length
 
 PI = math.pi
 
@@ -347,7 +348,7 @@ def cooling_state_theta(alpha, beta, q, n, sigma, m, T):
     return bisect_sign(f, lo, hi, lambda lo, hi: math.sqrt(lo * hi))
 
 
-class RoughGas:
+class RoughGas(LinearModes):
     """Dimensional HCS of rough inelastic hard spheres and its Navier-Stokes coefficients."""
 
     def __init__(self, alpha, beta, q, n, sigma, m, T, orders=ORDERS, theta=None):
@@ -428,27 +429,6 @@ class RoughGas:
         M[2, 0] *= -1j
         M[2, 1] *= -1j
         return M
-
-    def longitudinal_rates(self, x):
-        """(heat, sound0, sound1) per collision per particle at k lambda = x."""
-        ev = np.linalg.eigvals(self.longitudinal_matrix(x / self.lam) / self.nu_c)
-        real = [e for e in ev if e.imag == 0.0]
-        if len(real) == 3:
-            heat, s0, s1 = sorted((e.real for e in ev), reverse=True)
-            return complex(heat), complex(s0), complex(s1)
-        assert len(real) == 1, ev
-        pair = [e for e in ev if e.imag != 0.0]
-        s0 = pair[0] if pair[0].imag > 0 else pair[1]
-        s1 = pair[1] if pair[0].imag > 0 else pair[0]
-        return complex(real[0].real), complex(s0), complex(s1)
-
-    def longitudinal_max_rate(self, x):
-        return max(np.linalg.eigvals(self.longitudinal_matrix(x / self.lam) / self.nu_c).real)
-
-    def shear_rate(self, x):
-        """Transverse wave u_y/sqrt(T_tr/m): [zeta/2 - eta k^2/(n m)]/nu_c at k lambda = x."""
-        k = x / self.lam
-        return (self.zeta / 2 - self.eta * k ** 2 / (self.n * self.m)) / self.nu_c
 
 
 # ---------------------------------------------------------------------------------------------
