@@ -131,9 +131,7 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
                       std::max(1, spec.threads)});
 
     const std::size_t S = blocks.size();
-    std::vector<SpeciesSlice> slices(S);
-    for (std::size_t s = 0; s < S; ++s)
-        slices[s] = {blocks[s].offset, blocks[s].count, blocks[s].grain.mass, blocks[s].moment_of_inertia()};
+    const std::vector<SpeciesSlice> slices = species_slices(blocks);
     const auto& types = engine.pair_types();
     const bool clamp_column = has_brilliantov(spec);
     const std::size_t columns = dsmc_columns(spec).size();

@@ -61,9 +61,7 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
                                           spec.kernel);
     const double N = static_cast<double>(engine.particles());
     const std::size_t S = blocks.size();
-    std::vector<SpeciesSlice> slices(S);
-    for (std::size_t s = 0; s < S; ++s)
-        slices[s] = {blocks[s].offset, blocks[s].count, blocks[s].grain.mass, blocks[s].moment_of_inertia()};
+    const std::vector<SpeciesSlice> slices = species_slices(blocks);
     const std::vector<PairType>& types = engine.pair_types();
     const bool clamp_column = has_brilliantov(spec);
     const std::size_t columns = replica_row_columns(spec).size();

@@ -1075,7 +1075,7 @@ class Builder {
         }
         double reach = HUGE_VAL;
         try {
-            reach = cooling_reach(HcsTheory(species, pairs, c.run.density), T, 1e-300);
+            reach = cooling_reach(HcsTheory(species, pairs, c.run.density), T, underflow_temperature_per_mass);
         } catch (const std::invalid_argument&) {
             return; // refused elsewhere
         }

@@ -7,6 +7,7 @@
 #include "roughgas/io/csv_writer.hpp"
 #include "roughgas/io/input_error.hpp"
 #include "roughgas/io/state_file.hpp"
+#include "roughgas/observables/moments.hpp"
 #include "roughgas/observables/theory.hpp"
 
 #include <fmt/format.h>
@@ -49,23 +50,19 @@ void check_cooling_reach_from(const StateFile& state, const RunSpec& spec, const
     const std::optional<HcsTheory> theory = hcs_theory(spec);
     if (!theory)
         return; // restitution that depends on the impact speed: the gas cools ever slower
-    const std::vector<SpeciesBlock> blocks = make_species_blocks(spec.species, spec.particles);
+    // The species' temperatures as the run's rows define them.
+    const Moments m = compute_moments(column_of(state.grains.v.data(), 0), column_of(state.grains.w.data(), 0),
+                                      species_slices(make_species_blocks(spec.species, spec.particles)));
     HcsTemperatures T;
-    for (const SpeciesBlock& b : blocks) {
-        double tr = 0, rot = 0;
-        for (std::size_t i = b.offset; i < b.offset + b.count; ++i) {
-            tr += norm2(state.grains.v[i]);
-            rot += norm2(state.grains.w[i]);
-        }
-        const double n = static_cast<double>(b.count);
-        T.T_tr.push_back(b.grain.mass * tr / (3 * n));
-        T.T_rot.push_back(b.moment_of_inertia() * rot / (3 * n));
+    for (const GroupMoments& g : m.species) {
+        T.T_tr.push_back(g.T_tr);
+        T.T_rot.push_back(g.T_rot);
     }
     if (!std::all_of(T.T_tr.begin(), T.T_tr.end(), [](double t) { return t > 0 && std::isfinite(t); }))
         return; // a gas at rest does not cool
     double reach = HUGE_VAL;
     try {
-        reach = cooling_reach(*theory, T, 1e-300);
+        reach = cooling_reach(*theory, T, underflow_temperature_per_mass);
     } catch (const std::invalid_argument&) {
         return;
     }

@@ -3,6 +3,7 @@
 // collision sampling runs one candidate process for.
 #include "roughgas/collision/pair_constants.hpp"
 #include "roughgas/dsmc/run_spec.hpp"
+#include "roughgas/observables/moments.hpp"
 
 #include <cmath>
 #include <cstddef>
@@ -27,6 +28,14 @@ struct SpeciesBlock {
 // `particles` exactly and each is within 1 of particles x fraction (fractions normalised).
 std::vector<SpeciesBlock> make_species_blocks(const std::vector<SpeciesSpec>& species,
                                               std::int64_t particles);
+
+// The blocks as the moments see them (observables/moments.hpp): each species' range, m and J.
+inline std::vector<SpeciesSlice> species_slices(const std::vector<SpeciesBlock>& blocks) {
+    std::vector<SpeciesSlice> slices;
+    for (const SpeciesBlock& b : blocks)
+        slices.push_back({b.offset, b.count, b.grain.mass, b.moment_of_inertia()});
+    return slices;
+}
 
 // Species pair (a, b), a <= b, at index pair_index(a, b, n_species) (run_spec.hpp).
 struct PairType {

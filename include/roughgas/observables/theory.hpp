@@ -164,6 +164,9 @@ class HcsTrajectory {
 // collisions on the way counted as the fall of ln T_tr over zeta*; then ln(min T_tr,s/m_s / floor)/zeta*
 // more. +infinity if the settled zeta* is not > 0 (an elastic gas).
 double cooling_reach(const HcsTheory& theory, const HcsTemperatures& initial, double floor);
+// The floor a run checks its reach against: below T_tr,s/m_s = 1e-300 (in the case's units) the
+// squares of the velocities underflow.
+inline constexpr double underflow_temperature_per_mass = 1e-300;
 
 // The theory of a run if every species pair has constant restitution, else nullopt.
 std::optional<HcsTheory> hcs_theory(const RunSpec& spec);
