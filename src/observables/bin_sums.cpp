@@ -3,15 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <utility>
 
 namespace roughgas::detail {
-namespace {
-
-double& component(Vec3& q, std::size_t a) { return a == 0 ? q.x : a == 1 ? q.y : q.z; }
-
-} // namespace
-
 std::vector<BinSums> bin_sums(const FlightSampling& s, const BinGrid& g, const std::vector<Vec3>& x,
                               const std::vector<Vec3>& v, const std::vector<Vec3>& w,
                               const std::vector<SpeciesBlock>& species) {
@@ -25,14 +20,34 @@ const std::vector<BinSums>& bin_sums(const FlightSampling& s, const BinGrid& g, 
                                      const std::vector<SpeciesBlock>& species, BinSumsBuffers& buffers) {
     const double tau = s.half_flight;
     const Vec3 dv = tau * s.gravity;
-    // The axes a grain's bin or mid-flight velocity depends on: binned ones, walled ones (a
-    // reflection reverses the velocity) and, for the Lees-Edwards image, y.
-    std::array<bool, 3> track{};
-    std::array<double, 3> per_length{}; // B/L: bins per unit length (no division per grain)
-    for (std::size_t a = 0; a < 3; ++a) {
-        track[a] = g.bins[a] > 1 || g.walled[a];
-        per_length[a] = g.bins[a] / g.length[a];
-    }
+    // Each axis's bins: walled ones reflect (a reflection reverses the velocity); an axis of one
+    // periodic bin needs no coordinate (its index is 0).
+    struct AxisBins {
+        double length, per_length; // per_length = B/L: bins per unit length (no division per grain)
+        int bins;
+        bool walled, tracked;
+    };
+    std::array<AxisBins, 3> axes{};
+    for (std::size_t a = 0; a < 3; ++a)
+        axes[a] = {g.length[a], g.bins[a] / g.length[a], g.bins[a], g.walled[a], g.bins[a] > 1 || g.walled[a]};
+    // The Lees-Edwards image's shift along x at the middle of the flight, the same for every grain.
+    const double image_shift = s.shear_rate != 0 ? std::fmod(s.shear_rate * s.box[1] * (s.time + tau), s.box[0]) : 0.0;
+    // Coordinate c's bin along one axis; along a walled axis a grain past a wall is mirrored into
+    // the box and its velocity component `u` reversed.
+    const auto index = [](const AxisBins& ax, double c, double& u) -> std::size_t {
+        if (!ax.tracked)
+            return 0;
+        const double L = ax.length;
+        if (!ax.walled) {
+            if (c < 0 || c >= L) // most grains stay in the box: no division for them
+                c -= L * std::floor(c / L);
+        } else if (c < 0 || c > L) {
+            c = c < 0 ? -c : 2 * L - c;
+            u = -u;
+        }
+        const int k = static_cast<int>(std::clamp(c, 0.0, L) * ax.per_length);
+        return static_cast<std::size_t>(std::clamp(k, 0, ax.bins - 1));
+    };
     // A grain's bin and velocity in the middle of the flight (profiles.hpp). Along a walled axis a
     // grain that would pass a wall in that half flight is reflected specularly (position mirrored,
     // normal velocity reversed): without it, the grains flying into a wall would pile up in the
@@ -41,32 +56,16 @@ const std::vector<BinSums>& bin_sums(const FlightSampling& s, const BinGrid& g, 
         Vec3 u = v[i] + dv;
         Vec3 q = x[i] + tau * v[i] + (0.5 * tau) * dv;
         if (s.shear_rate != 0) { // Lees-Edwards: the image's grain after a crossing of y
-            const double Lx = s.box[0], Ly = s.box[1];
+            const double Ly = s.box[1];
             const double k = q.y >= 0 && q.y < Ly ? 0.0 : std::floor(q.y / Ly);
             if (k != 0) {
                 u.x -= k * s.shear_rate * Ly;
-                q.x -= k * std::fmod(s.shear_rate * Ly * (s.time + tau), Lx);
+                q.x -= k * image_shift;
             }
         }
-        std::size_t bin = 0; // z, y, x: i_x + B_x (i_y + B_y i_z); an untracked axis has one bin
-        for (std::size_t a = 3; a-- > 0;) {
-            if (!track[a]) {
-                continue;
-            }
-            const double L = g.length[a];
-            double c = component(q, a);
-            if (!g.walled[a]) {
-                if (c < 0 || c >= L) // most grains stay in the box: no division for them
-                    c -= L * std::floor(c / L);
-            } else if (c < 0 || c > L) {
-                c = c < 0 ? -c : 2 * L - c;
-                component(u, a) = -component(u, a);
-            }
-            const int B = g.bins[a];
-            const int k = std::clamp(static_cast<int>(std::clamp(c, 0.0, L) * per_length[a]), 0, B - 1);
-            bin = bin * static_cast<std::size_t>(B) + static_cast<std::size_t>(k);
-        }
-        return {bin, u};
+        // z, y, x: i_x + B_x (i_y + B_y i_z)
+        const std::size_t kz = index(axes[2], q.z, u.z), ky = index(axes[1], q.y, u.y), kx = index(axes[0], q.x, u.x);
+        return {(kz * static_cast<std::size_t>(axes[1].bins) + ky) * static_cast<std::size_t>(axes[0].bins) + kx, u};
     };
 
     // One pass: each bin's moments about a velocity r_b of its own, its first grain's (d = u - r_b),
@@ -79,30 +78,42 @@ const std::vector<BinSums>& bin_sums(const FlightSampling& s, const BinGrid& g, 
     std::vector<BinMoments>& acc = buffers.moments;
     if (acc.size() != g.size())
         acc.assign(g.size(), BinMoments{});
+    // The grains in chunks: first every grain's bin and velocity, then their sums. The bins known
+    // before the sums start, the loads of a bin's running sums need not wait for the locating of
+    // the grain before (whose bin is most often the same).
+    constexpr std::size_t chunk = 256;
+    std::array<std::size_t, chunk> bins;
+    std::array<Vec3, chunk> us;
     for (const SpeciesBlock& sp : species) {
         const double m = sp.grain.mass, J = sp.moment_of_inertia();
-        for (std::size_t i = sp.offset; i < sp.offset + sp.count; ++i) {
-            const auto [bin, u] = locate(i);
-            BinMoments& b = acc[bin];
-            if (b.count == 0)
-                b.ref = u;
-            const double e_rot = J * norm2(w[i]);
-            b.count += 1;
-            b.mass += m;
-            b.momentum += m * u;
-            b.spin += w[i];
-            b.rot += e_rot;
-            const Vec3 d = u - b.ref, md = m * d;
-            b.md += md;
-            b.a[0] += md.x * d.x;
-            b.a[1] += md.y * d.y;
-            b.a[2] += md.z * d.z;
-            b.a[3] += md.x * d.y;
-            b.a[4] += md.x * d.z;
-            b.a[5] += md.y * d.z;
-            b.q += (0.5 * dot(md, d)) * d;
-            if (s.rotation)
-                b.r += (0.5 * e_rot) * d;
+        for (std::size_t i0 = sp.offset; i0 < sp.offset + sp.count; i0 += chunk) {
+            const std::size_t n = std::min(chunk, sp.offset + sp.count - i0);
+            for (std::size_t k = 0; k < n; ++k)
+                std::tie(bins[k], us[k]) = locate(i0 + k);
+            for (std::size_t k = 0; k < n; ++k) {
+                const std::size_t i = i0 + k;
+                const Vec3 u = us[k];
+                BinMoments& b = acc[bins[k]];
+                if (b.count == 0)
+                    b.ref = u;
+                const double e_rot = J * norm2(w[i]);
+                b.count += 1;
+                b.mass += m;
+                b.momentum += m * u;
+                b.spin += w[i];
+                b.rot += e_rot;
+                const Vec3 d = u - b.ref, md = m * d;
+                b.md += md;
+                b.a[0] += md.x * d.x;
+                b.a[1] += md.y * d.y;
+                b.a[2] += md.z * d.z;
+                b.a[3] += md.x * d.y;
+                b.a[4] += md.x * d.z;
+                b.a[5] += md.y * d.z;
+                b.q += (0.5 * dot(md, d)) * d;
+                if (s.rotation)
+                    b.r += (0.5 * e_rot) * d;
+            }
         }
     }
     std::vector<BinSums>& sums = buffers.sums;

@@ -64,46 +64,60 @@ void fields_from_sums(const FlightSampling& s, const detail::BinGrid& grid, cons
     out.cells = cells;
     out.quantities = quantities;
     out.values.resize(quantities.size());
+    // An empty cell's fields are NaN (n: 0).
+    const auto T_tr = [&](const detail::BinSums& b) {
+        return b.count == 0 ? nan : (b.cc[0] + b.cc[1] + b.cc[2]) / (3 * b.count);
+    };
+    const auto T_rot = [&](const detail::BinSums& b) { return b.count == 0 ? nan : b.rot / (3 * b.count); };
+    const auto vector = [&](const detail::BinSums& b, Vec3 q) { return b.count == 0 ? Vec3{nan, nan, nan} : q; };
+    // Quantity by quantity, cell by cell: each array written in order, no branch per value.
     for (std::size_t k = 0; k < quantities.size(); ++k) {
-        out.values[k].clear();
-        out.values[k].reserve(sums.size() * static_cast<std::size_t>(field_components(quantities[k])));
-    }
-    for (const detail::BinSums& b : sums) {
-        const bool empty = b.count == 0;
-        const double T_tr = empty ? nan : (b.cc[0] + b.cc[1] + b.cc[2]) / (3 * b.count);
-        const double T_rot = empty ? nan : b.rot / (3 * b.count);
-        const Vec3 u = empty ? Vec3{nan, nan, nan} : b.flow();
-        const Vec3 spin = empty ? Vec3{nan, nan, nan} : (1.0 / b.count) * b.spin;
-        const Vec3 heat = empty ? Vec3{nan, nan, nan} : f * b.heat;
-        for (std::size_t k = 0; k < quantities.size(); ++k) {
-            std::vector<double>& values = out.values[k];
-            switch (quantities[k]) {
-            case FieldQuantity::n:
-                values.push_back(f * b.count);
-                break;
-            case FieldQuantity::u:
-                values.insert(values.end(), {u.x, u.y, u.z});
-                break;
-            case FieldQuantity::T_tr:
-                values.push_back(T_tr);
-                break;
-            case FieldQuantity::T_rot:
-                values.push_back(T_rot);
-                break;
-            case FieldQuantity::theta:
-                values.push_back(T_tr > 0 ? T_rot / T_tr : nan);
-                break;
-            case FieldQuantity::omega:
-                values.insert(values.end(), {spin.x, spin.y, spin.z});
-                break;
-            case FieldQuantity::P: // Tensor6: xx, xy, xz, yy, yz, zz from cc's xx, yy, zz, xy, xz, yz
-                for (int c : {0, 3, 4, 1, 5, 2})
-                    values.push_back(empty ? nan : f * b.cc[c]);
-                break;
-            case FieldQuantity::q:
-                values.insert(values.end(), {heat.x, heat.y, heat.z});
-                break;
+        std::vector<double>& values = out.values[k];
+        const auto C = static_cast<std::size_t>(field_components(quantities[k]));
+        values.resize(sums.size() * C);
+        double* o = values.data();
+        const auto put = [&](Vec3 q) {
+            o[0] = q.x;
+            o[1] = q.y;
+            o[2] = q.z;
+            o += 3;
+        };
+        switch (quantities[k]) {
+        case FieldQuantity::n:
+            for (const detail::BinSums& b : sums)
+                *o++ = f * b.count;
+            break;
+        case FieldQuantity::u:
+            for (const detail::BinSums& b : sums)
+                put(vector(b, b.flow()));
+            break;
+        case FieldQuantity::T_tr:
+            for (const detail::BinSums& b : sums)
+                *o++ = T_tr(b);
+            break;
+        case FieldQuantity::T_rot:
+            for (const detail::BinSums& b : sums)
+                *o++ = T_rot(b);
+            break;
+        case FieldQuantity::theta:
+            for (const detail::BinSums& b : sums) {
+                const double t = T_tr(b);
+                *o++ = t > 0 ? T_rot(b) / t : nan;
             }
+            break;
+        case FieldQuantity::omega:
+            for (const detail::BinSums& b : sums)
+                put(vector(b, (1.0 / b.count) * b.spin));
+            break;
+        case FieldQuantity::P: // Tensor6: xx, xy, xz, yy, yz, zz from cc's xx, yy, zz, xy, xz, yz
+            for (const detail::BinSums& b : sums)
+                for (int c : {0, 3, 4, 1, 5, 2})
+                    *o++ = b.count == 0 ? nan : f * b.cc[c];
+            break;
+        case FieldQuantity::q:
+            for (const detail::BinSums& b : sums)
+                put(vector(b, f * b.heat));
+            break;
         }
     }
 }
