@@ -550,8 +550,9 @@ int run_run(const RunOptions& o, const Communicator& comm) {
     };
     // The file is rewritten (atomically: temporary, fsync, rename) at every output time whose row
     // is complete, so a crash keeps every row computed; only when rewriting would take more than a
-    // tenth of the run's time (a large file and dense outputs: each rewrite costs O(file size)) are
-    // rows batched, the next rewrite waiting until 10x the last one's duration has passed.
+    // fiftieth of the run's time (a large file and dense outputs: each rewrite costs O(file size),
+    // and its syncs slow the run's own threads on a virtual machine) are rows batched, the next
+    // rewrite waiting until 50x the last one's duration has passed.
     auto last_write = std::chrono::steady_clock::now() - std::chrono::hours(1);
     std::chrono::steady_clock::duration write_cost{};
     const auto flush = [&](bool now) { // under `mutex`; rank 0 alone writes
@@ -582,7 +583,7 @@ int run_run(const RunOptions& o, const Communicator& comm) {
                     mcsv->add_row(r);
         }
         const auto t = std::chrono::steady_clock::now();
-        if (csv.rows() > on_disk && (now || t - last_write >= 10 * write_cost)) {
+        if (csv.rows() > on_disk && (now || t - last_write >= 50 * write_cost)) {
             csv.write(path);
             write_box_csvs();
             on_disk = csv.rows();
