@@ -180,7 +180,7 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
                                                        engine.velocities(), engine.angular_velocities(), blocks,
                                                        virial, profile_dt, field_buffer(), fields_scratch)
                     : compute_profiles(profile_geometry, engine.positions(), engine.velocities(),
-                                       engine.angular_velocities(), blocks, virial, profile_dt);
+                                       engine.angular_velocities(), blocks, virial, profile_dt, &engine.team());
             // A sheared box: the moments of the peculiar velocities (about the images' flow) in the
             // middle of the next flight, as the profiles (observables/profiles.hpp) and as the
             // homogeneous shear runs' Strang steps report them (half a stream after the collisions:

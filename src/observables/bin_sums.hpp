@@ -2,6 +2,7 @@
 // The sums over the grains of each bin of a grid, taken in the middle of a flight
 // (observables/profiles.hpp): what the profiles (slabs along one axis) and the cell fields (every
 // collision cell) are computed from, with the same sampling.
+#include "roughgas/core/worker_team.hpp"
 #include "roughgas/observables/profiles.hpp"
 
 #include <array>
@@ -46,13 +47,17 @@ struct BinSumsBuffers {
 
 // Bin i_x + B_x (i_y + B_y i_z) of each grain in the middle of its flight; grain order within a bin
 // (a deterministic sum). The result lives in `buffers.sums`, valid until the next call with them.
+// With a team, a grid of a few bins (the profiles' slabs) is summed in parallel: in fixed units of
+// grains, each unit's sums about its own flows, added in unit order with the parallel-axis
+// identities of layer_sums (the same result on any team, to round-off the serial one's).
 const std::vector<BinSums>& bin_sums(const FlightSampling& s, const BinGrid& g, const std::vector<Vec3>& x,
                                      const std::vector<Vec3>& v, const std::vector<Vec3>& w,
-                                     const std::vector<SpeciesBlock>& species, BinSumsBuffers& buffers);
+                                     const std::vector<SpeciesBlock>& species, BinSumsBuffers& buffers,
+                                     WorkerTeam* team = nullptr);
 // The same with buffers of its own (a few bins: the profiles' slabs).
 std::vector<BinSums> bin_sums(const FlightSampling& s, const BinGrid& g, const std::vector<Vec3>& x,
                               const std::vector<Vec3>& v, const std::vector<Vec3>& w,
-                              const std::vector<SpeciesBlock>& species);
+                              const std::vector<SpeciesBlock>& species, WorkerTeam* team = nullptr);
 
 // The sums of the layers of cells along `axis` (cells: bin_sums over a grid of every cell; the
 // layers: what bin_sums over that axis's bins alone would give, to round-off): the counts, masses,

@@ -28,7 +28,7 @@ std::vector<Column> profile_field_columns() {
 
 std::vector<double> compute_profiles(const ProfileGeometry& g, const std::vector<Vec3>& x, const std::vector<Vec3>& v,
                                      const std::vector<Vec3>& w, const std::vector<SpeciesBlock>& species,
-                                     const std::vector<Virial>& virial, double dt) {
+                                     const std::vector<Virial>& virial, double dt, WorkerTeam* team) {
     if (g.bins < 1 || virial.size() != static_cast<std::size_t>(g.bins))
         throw std::invalid_argument("compute_profiles: one virial per bin needed");
     detail::BinGrid grid;
@@ -37,7 +37,7 @@ std::vector<double> compute_profiles(const ProfileGeometry& g, const std::vector
     grid.bins[axis] = g.bins;
     grid.length[axis] = g.length;
     grid.walled[axis] = !g.periodic;
-    return detail::profiles_from_sums(g, detail::bin_sums(g, grid, x, v, w, species), virial, dt);
+    return detail::profiles_from_sums(g, detail::bin_sums(g, grid, x, v, w, species, team), virial, dt);
 }
 
 namespace detail {

@@ -37,6 +37,8 @@
 
 namespace roughgas {
 
+class WorkerTeam; // core/worker_team.hpp
+
 inline constexpr const char* profile_fields[] = {
     "n",     "u_x",   "u_y",   "u_z",   "T_tr",  "T_rot", "theta", "P_xx", "P_yy", "P_zz", "P_xy",
     "P_xz",  "P_yz",  "Pc_xx", "Pc_yy", "Pc_zz", "Pc_xy", "Pc_xz", "Pc_yz", "q_x", "q_y",  "q_z",
@@ -73,8 +75,9 @@ struct ProfileGeometry : FlightSampling {
 
 // The fields of every bin, bin after bin (profile_field_count each). `virial[b]` are bin b's sums
 // over an interval of length `dt` (NaN: no interval, the collisional fields are NaN).
+// With a team the pass over the grains runs on it (the same profiles on any team).
 std::vector<double> compute_profiles(const ProfileGeometry& g, const std::vector<Vec3>& x, const std::vector<Vec3>& v,
                                      const std::vector<Vec3>& w, const std::vector<SpeciesBlock>& species,
-                                     const std::vector<Virial>& virial, double dt);
+                                     const std::vector<Virial>& virial, double dt, WorkerTeam* team = nullptr);
 
 } // namespace roughgas
