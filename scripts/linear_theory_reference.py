@@ -341,12 +341,18 @@ def critical_length(f, zeta):
     return 2 * PI / x  # x = inf (f > 0 up to k lambda = 1e6) gives 0
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def add_gas_unit_arguments(ap):
+    """--n, --sigma, --m, --T: the dimensional units the reference scripts work in (arbitrary: the
+    reduced results do not depend on them)."""
     ap.add_argument("--n", type=float, default=0.37)
     ap.add_argument("--sigma", type=float, default=1.3)
     ap.add_argument("--m", type=float, default=2.1)
     ap.add_argument("--T", type=float, default=0.8)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    add_gas_unit_arguments(ap)
     ap.add_argument("--check-collision-integrals", action="store_true",
                     help="also re-derive a2, zeta, nu_c, nu_eta*, nu_kappa* by quadrature (slow)")
     args = ap.parse_args()

@@ -112,7 +112,7 @@ from numpy.polynomial.legendre import leggauss
 
 # The smooth grains' reference's root finding and the labels of a mode matrix's eigenvalues (no
 # physics: the matrix is this script's own).
-from linear_theory_reference import LinearModes, bisect_sign, critical_length
+from linear_theory_reference import LinearModes, add_gas_unit_arguments, bisect_sign, critical_length
 
 PI = math.pi
 
@@ -519,10 +519,7 @@ def check_collision_integrals(args, samples):
 # ---------------------------------------------------------------------------------------------
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--n", type=float, default=0.37)
-    ap.add_argument("--sigma", type=float, default=1.3)
-    ap.add_argument("--m", type=float, default=2.1)
-    ap.add_argument("--T", type=float, default=0.8)
+    add_gas_unit_arguments(ap)
     ap.add_argument("--check-collision-integrals", action="store_true",
                     help="also check the collision rule and the quadrature of every collision integral"
                          " (one more node in every variable, and Monte Carlo over the whole sphere; slow)")
