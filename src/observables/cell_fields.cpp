@@ -69,8 +69,8 @@ void fields_from_sums(const FlightSampling& s, const detail::BinGrid& grid, cons
         return b.count == 0 ? nan : (b.cc[0] + b.cc[1] + b.cc[2]) / (3 * b.count);
     };
     const auto T_rot = [&](const detail::BinSums& b) { return b.count == 0 ? nan : b.rot / (3 * b.count); };
-    const auto vector = [&](const detail::BinSums& b, Vec3 q) { return b.count == 0 ? Vec3{nan, nan, nan} : q; };
-    // Quantity by quantity, cell by cell: each array written in order, no branch per value.
+    const auto or_nan = [&](const detail::BinSums& b, Vec3 q) { return b.count == 0 ? Vec3{nan, nan, nan} : q; };
+    // Quantity by quantity, cell by cell: each array written in order, no switch per value.
     for (std::size_t k = 0; k < quantities.size(); ++k) {
         std::vector<double>& values = out.values[k];
         const auto C = static_cast<std::size_t>(field_components(quantities[k]));
@@ -89,7 +89,7 @@ void fields_from_sums(const FlightSampling& s, const detail::BinGrid& grid, cons
             break;
         case FieldQuantity::u:
             for (const detail::BinSums& b : sums)
-                put(vector(b, b.flow()));
+                put(or_nan(b, b.flow()));
             break;
         case FieldQuantity::T_tr:
             for (const detail::BinSums& b : sums)
@@ -107,7 +107,7 @@ void fields_from_sums(const FlightSampling& s, const detail::BinGrid& grid, cons
             break;
         case FieldQuantity::omega:
             for (const detail::BinSums& b : sums)
-                put(vector(b, (1.0 / b.count) * b.spin));
+                put(or_nan(b, (1.0 / b.count) * b.spin));
             break;
         case FieldQuantity::P: // Tensor6: xx, xy, xz, yy, yz, zz from cc's xx, yy, zz, xy, xz, yz
             for (const detail::BinSums& b : sums)
@@ -116,7 +116,7 @@ void fields_from_sums(const FlightSampling& s, const detail::BinGrid& grid, cons
             break;
         case FieldQuantity::q:
             for (const detail::BinSums& b : sums)
-                put(vector(b, f * b.heat));
+                put(or_nan(b, f * b.heat));
             break;
         }
     }
