@@ -10,11 +10,13 @@ each N: smooth grains on 1 thread, rough grains (alpha = 1, beta = 1: energy-con
 spins) on 1 thread, smooth grains on 2 threads, smooth grains with nearest partners
 (domain.partners) on 1 thread, and the ice grains of cases/hcs_brilliantov.toml (eps^N and eps^T
 from cached tables, cooling: 120 steps, the case's 60 collisions per particle) on the same deck
-on 1 thread, run alternately for --rounds rounds in that order with rough grains first (so that
-smooth grains on 1 thread run right before or after each of rough grains and 2 threads), the order
-reversed every other round, so that a drift of the machine's speed hits all alike.
-Reported per variant: the median and range of the wall time per particle and step (ns), and of the
-ratios rough/smooth, 1 thread/2 threads, nearest/random partners and brilliantov/smooth, twice:
+on 1 thread. A round runs rough grains, smooth grains, 2 threads, nearest partners, smooth grains
+again and ice grains, the order reversed every other round, for --rounds rounds: every ratio to
+smooth grains on 1 thread takes the smooth run right before or after it, so that the two sides of
+a ratio run within a minute of each other and a drift of the machine's speed hits both alike.
+Reported per variant: the median and range of the wall time per particle and step (ns, smooth
+grains over both of their runs per round), and of the ratios rough/smooth, 1 thread/2 threads,
+nearest/random partners and brilliantov/smooth (one per round, its two sides adjacent), twice:
 for whole runs (the process's start and the initial state included, which the ice deck's 120
 steps share out less than the others' 300), and for the steps alone: each variant also runs its
 first SHORT_STEPS steps right after its whole run, and the difference of the two runs' times is
@@ -93,28 +95,41 @@ def main():
             f.write(brilliantov_deck(n, os.path.abspath(os.path.join(a.out, "ice_tables.bin"))))
         timed([roughgas, "run", ice, "--out", os.path.join(a.out, "run"), "--force", "--quiet", "--threads", "2",
                "--set", "run.particles=2000"], "bench_box")  # builds the tables' cache file: the timed runs load it
-        # Smooth grains on 1 thread run between rough grains and 2 threads: the sides of those two
-        # ratios follow each other, in one order and then the reverse.
-        variants = [("rough, 1 thread", cases[True], "1"), ("smooth, 1 thread", cases[False], "1"),
-                    ("smooth, 2 threads", cases[False], "2"), ("smooth, nearest, 1 thread", nearest, "1"),
-                    ("brilliantov, 1 thread", ice, "1")]
+        # Each ratio's sides run next to each other: the smooth runs at positions 1 and 4 are the
+        # partners of rough grains and 2 threads, and of nearest partners and ice grains.
+        smooth = ("smooth, 1 thread", cases[False], "1")
+        variants = [("rough, 1 thread", cases[True], "1"), smooth, ("smooth, 2 threads", cases[False], "2"),
+                    ("smooth, nearest, 1 thread", nearest, "1"), smooth, ("brilliantov, 1 thread", ice, "1")]
+        partner = {0: 1, 2: 1, 3: 4, 5: 4}  # a variant's position: its smooth run's
         times = {v[0]: [] for v in variants}
         steps_alone = {v[0]: [] for v in variants}
+        ratios = {name: [] for name in RATIOS}
+        ratios_steps = {name: [] for name in RATIOS}
         short = [f"run.end={SHORT_STEPS * TIME_STEP}", f"run.output_every={SHORT_STEPS * TIME_STEP}"]
         for r in range(a.rounds):
-            order = variants if r % 2 == 0 else variants[::-1]
-            for name, case, threads in order:
+            order = list(range(len(variants))) if r % 2 == 0 else list(range(len(variants)))[::-1]
+            whole, alone = {}, {}
+            for k in order:
+                name, case, threads = variants[k]
                 run = [roughgas, "run", case, "--out", os.path.join(a.out, "run"), "--force", "--quiet",
                        "--threads", threads]
                 steps = ICE_STEPS if case == ice else STEPS
                 t = timed(run, "bench_box")
                 t_short = timed(run + [arg for s in short for arg in ("--set", s)], "bench_box")
-                times[name].append(t / (n * steps) * 1e9)
-                steps_alone[name].append((t - t_short) / (n * (steps - SHORT_STEPS)) * 1e9)
-                print(f"  N = {n:.0e}, {name}, round {r + 1}: {times[name][-1]:.1f} ns, steps alone "
-                      f"{steps_alone[name][-1]:.1f} ns", file=sys.stderr)
-        for table, ns in ((rows, times), (rows_steps, steps_alone)):
-            table.append(row(n, ns))
+                whole[k] = t / (n * steps) * 1e9
+                alone[k] = (t - t_short) / (n * (steps - SHORT_STEPS)) * 1e9
+                times[name].append(whole[k])
+                steps_alone[name].append(alone[k])
+                print(f"  N = {n:.0e}, {name}, round {r + 1}: {whole[k]:.1f} ns, steps alone {alone[k]:.1f} ns",
+                      file=sys.stderr)
+            for k, k_smooth in partner.items():
+                name = RATIO_OF[variants[k][0]]
+                # 1 thread/2 threads is the smooth run over the 2-thread one; the others, the variant over smooth
+                flip = variants[k][2] == "2"
+                for store, ns in ((ratios, whole), (ratios_steps, alone)):
+                    store[name].append(ns[k_smooth] / ns[k] if flip else ns[k] / ns[k_smooth])
+        for table, ns, rs in ((rows, times, ratios), (rows_steps, steps_alone, ratios_steps)):
+            table.append(row(n, ns, rs))
     print(measured_line(a.rounds, "wall ns per particle and step (whole runs: start, initial state, 300 "
                                   "steps, one row): median (min-max)", load0, steal0))
     for title, table in (("whole runs", rows), (f"the steps alone (whole runs less their first {SHORT_STEPS} "
@@ -127,19 +142,23 @@ def main():
             print(r)
 
 
-def row(n, times):
+RATIOS = ("rough/smooth", "1 thread/2 threads", "nearest/random partners", "brilliantov/smooth")
+RATIO_OF = {"rough, 1 thread": "rough/smooth", "smooth, 2 threads": "1 thread/2 threads",
+            "smooth, nearest, 1 thread": "nearest/random partners", "brilliantov, 1 thread": "brilliantov/smooth"}
+
+
+def row(n, times, ratios):
     """A table row: the variants' ns per particle and step and their ratios, medians and ranges."""
     def fmt(x):
         return f"{statistics.median(x):.1f} ({min(x):.1f}-{max(x):.1f})"
 
-    def ratio(p, q):
-        rs = [x / y for x, y in zip(times[p], times[q])]
+    def ratio(name):
+        rs = ratios[name]
         return f"{statistics.median(rs):.2f} ({min(rs):.2f}-{max(rs):.2f})"
     return (f"| {n:.0e} | {fmt(times['smooth, 1 thread'])} | {fmt(times['rough, 1 thread'])} | "
-            f"{fmt(times['smooth, 2 threads'])} | {ratio('rough, 1 thread', 'smooth, 1 thread')} | "
-            f"{ratio('smooth, 1 thread', 'smooth, 2 threads')} | "
-            f"{ratio('smooth, nearest, 1 thread', 'smooth, 1 thread')} | "
-            f"{fmt(times['brilliantov, 1 thread'])} | {ratio('brilliantov, 1 thread', 'smooth, 1 thread')} |")
+            f"{fmt(times['smooth, 2 threads'])} | {ratio('rough/smooth')} | {ratio('1 thread/2 threads')} | "
+            f"{ratio('nearest/random partners')} | {fmt(times['brilliantov, 1 thread'])} | "
+            f"{ratio('brilliantov/smooth')} |")
 
 
 if __name__ == "__main__":

@@ -46,7 +46,7 @@ struct ConstantNormal {
 struct TableNormal {
     const NormalTable* table = nullptr;
     double w_per_speed = 0; // ContactPair::w_per_speed() of the pair
-    double operator()(double g_n) const { return table->eps_n(w_per_speed * g_n); }
+    [[gnu::always_inline]] double operator()(double g_n) const { return table->eps_n(w_per_speed * g_n); }
 };
 
 // The same, integrating the contact at every collision (the reference for the table).
@@ -97,7 +97,7 @@ struct TableTangential {
     static constexpr bool needs_rotation = true;
     static constexpr bool needs_g_t = true;
     const TangentialTable* table = nullptr;
-    Coefficients operator()(double g_n, double g_t, double alpha) const {
+    [[gnu::always_inline]] Coefficients operator()(double g_n, double g_t, double alpha) const {
         if (!(g_n > 0))
             return {alpha, -1.0, false}; // no normal force, no friction (probability 0)
         return clamp_beta(alpha, -table->eps_t(g_n, g_t));
@@ -111,7 +111,7 @@ template <class Normal, class Tangential> struct Restitution {
     static constexpr bool needs_g_t = Tangential::needs_g_t;
     Normal normal{};
     Tangential tangential{};
-    Coefficients operator()(double g_n, double g_t) const { return tangential(g_n, g_t, normal(g_n)); }
+    [[gnu::always_inline]] Coefficients operator()(double g_n, double g_t) const { return tangential(g_n, g_t, normal(g_n)); }
 };
 
 struct SmoothConstant : Restitution<ConstantNormal, SmoothTangential> {

@@ -91,7 +91,7 @@ public:
     // The same at x = pseudo_log2(g) (g > 0), with the cell and its coordinate read off the bits of g:
     // no conversion waits for g. Needs whole binades (integral x_lo) cut into a power of two of flat
     // cells each (binade_bits() >= 0); else it converts g.
-    double at_speed(double g) const {
+    [[gnu::always_inline]] double at_speed(double g) const {
         if (binade_bits_ < 0) [[unlikely]]
             return (*this)(pseudo_log2(g));
         const std::uint64_t bits = std::bit_cast<std::uint64_t>(g);
@@ -134,12 +134,13 @@ private:
     double cell_t_scale_ = 0;
     void build_flat_index();
 
-    double in_cell(std::size_t i, double t, double x) const {
+    [[gnu::always_inline]] double in_cell(std::size_t i, double t, double x) const {
         const double v = quartic_at(cells_[i].c, t);
         if (std::isnan(v)) [[unlikely]]
-            return tree(x); // a deeper leaf (or a direct one: NaN again)
+            return tree_cold(x); // a deeper leaf (or a direct one: NaN again)
         return v;
     }
+    [[gnu::noinline, gnu::cold]] double tree_cold(double x) const { return tree(x); }
     double walk(std::size_t i, double tf) const {
         const FlatEntry e = flat_[i];
         double t = node_coordinate(i, tf, e.depth());
@@ -165,7 +166,7 @@ public:
     // direct ones) hold NaN and go down the tree. The corners are floats: a rounding of at most
     // 2^-24 of |eps^T| <= 1.3 (6e-8 absolute), 400 times below the table's tolerance, for a quarter
     // of the cache a double would take (the look-up's latency is the collision loop's).
-    double operator()(double x, double y) const {
+    [[gnu::always_inline]] double operator()(double x, double y) const {
         const double Fx = (x - x_lo_) * flat_inv_x_, Fy = (y - y_lo_) * flat_inv_y_;
         if (!(Fx >= 0.0) || Fx >= flat_nx_d_ || !(Fy >= 0.0) || Fy > flat_ny_d_)
             return std::numeric_limits<double>::quiet_NaN();
@@ -175,7 +176,7 @@ public:
         const double tx = Fx - static_cast<double>(ix), ty = Fy - static_cast<double>(iy); // ty = 1 at the top edge
         const double v = bilinear_at(c.v[0], c.v[1], c.v[2], c.v[3], tx, ty);
         if (std::isnan(v)) [[unlikely]]
-            return tree(x, y); // a deeper leaf (or a direct one: NaN again)
+            return tree_cold(x, y); // a deeper leaf (or a direct one: NaN again)
         return v;
     }
     // The tree walk alone (the flat index down to the leaf): the reference for the flat cells.
@@ -218,6 +219,7 @@ private:
     std::size_t flat_nx_ = 0, flat_ny_ = 0;
     double flat_scale_ = 1, flat_inv_x_ = 1, flat_inv_y_ = 1, flat_nx_d_ = 0, flat_ny_d_ = 0;
     void build_flat_index();
+    [[gnu::noinline, gnu::cold]] double tree_cold(double x, double y) const { return tree(x, y); }
 };
 
 } // namespace roughgas

@@ -50,7 +50,7 @@ public:
     // not monotone (which would mean an integration failure).
     static NormalTable build(ContactModel model, NormalTableOptions opt = {});
 
-    double eps_n(double w) const {
+    [[gnu::always_inline]] double eps_n(double w) const {
         if (!(w >= w_min_)) return below(w); // also w <= 0 and NaN go to the series branch
         if (w >= w_max_) return above(w);
         const std::uint64_t bits = std::bit_cast<std::uint64_t>(w);

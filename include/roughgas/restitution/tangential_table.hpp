@@ -52,10 +52,14 @@ class TangentialTable {
 public:
     static TangentialTable build(const ContactPair& pair, TangentialTableOptions opt = {});
 
-    // g_n > 0, any g_t (eps^T is even in g_t).
-    double eps_t(double g_n, double g_t) const {
+    // g_n > 0, any g_t (eps^T is even in g_t). Inlined into the collision loop, as are the look-ups
+    // below it (a call would spill the loop's live registers around every collision); the rare
+    // fallbacks, the tree walks and the direct integration, are kept out of it (cold, not inlined).
+    [[gnu::always_inline]] double eps_t(double g_n, double g_t) const {
         const double v = lookup(g_n, std::abs(g_t));
-        return std::isnan(v) ? direct_.eps_t(g_n, g_t) : v;
+        if (std::isnan(v)) [[unlikely]]
+            return direct(g_n, g_t);
+        return v;
     }
     // NaN where the look-up would fall back to the direct integrator.
     // The collision loop waits for this result (its latency is the loop's), so the
@@ -63,7 +67,7 @@ public:
     // c (g_N/g_T), and the band tests compare y (g_T < g_T,cr (1 - band) <=> y > 1/(1 - band)).
     // The 1-D tables read their cell off the bits of g_N (AdaptiveTable1D::at_speed): the critical
     // look-up starts as soon as g_N is known; x is only converted for the 2-D table, beside it.
-    double lookup(double g_n, double g_t) const {
+    [[gnu::always_inline]] double lookup(double g_n, double g_t) const {
         const double x = pseudo_log2(g_n);
         const double r = g_n / g_t; // +inf for g_t = 0: below the onset
         const double c = critical_.at_speed(g_n);
@@ -94,6 +98,7 @@ public:
     static TangentialTable deserialize(const ContactPair& pair, TangentialTableOptions opt, const std::vector<double>& data);
 
 private:
+    [[gnu::noinline, gnu::cold]] double direct(double g_n, double g_t) const { return direct_.eps_t(g_n, g_t); }
     TangentialTableOptions opt_{};
     DirectTangential direct_{};
     AdaptiveTable1D critical_, unbroken_;
