@@ -204,6 +204,7 @@ void AdaptiveTable2D::build_flat_index() {
     flat_scale_ = double(per_root);
     flat_inv_x_ = inv_x_ * flat_scale_;
     flat_inv_y_ = inv_y_ * flat_scale_;
+    fy_offset_ = -y_lo_ * flat_inv_y_;
     flat_nx_d_ = double(flat_nx_);
     flat_ny_d_ = double(flat_ny_);
     flat_.resize(flat_nx_ * flat_ny_);
@@ -218,16 +219,18 @@ void AdaptiveTable2D::build_flat_index() {
             }
             flat_[iy * flat_nx_ + ix] = FlatEntry::make(k, depth);
             Cell& cell = cells_[iy * flat_nx_ + ix];
-            std::fill(std::begin(cell.v), std::end(cell.v), std::numeric_limits<float>::quiet_NaN());
-            if (nodes_[k].child < 0) { // a leaf covers the cell: its interpolant at the cell's corners
+            const double nan = std::numeric_limits<double>::quiet_NaN();
+            cell = {nan, nan, nan, nan};
+            if (nodes_[k].child < 0) { // a leaf covers the cell: its interpolant in the cell's coordinates
                 const std::size_t span = std::size_t{1} << (flat_bits - depth);
                 const double* v = nodes_[k].v;
                 const double x0 = double(ix & (span - 1)) / double(span), y0 = double(iy & (span - 1)) / double(span);
                 const double h = 1.0 / double(span);
-                int q = 0;
-                for (double ty : {y0, y0 + h})
-                    for (double tx : {x0, x0 + h})
-                        cell.v[q++] = float(bilinear_at(v[0], v[1], v[2], v[3], tx, ty));
+                const double v00 = bilinear_at(v[0], v[1], v[2], v[3], x0, y0);
+                const double v10 = bilinear_at(v[0], v[1], v[2], v[3], x0 + h, y0);
+                const double v01 = bilinear_at(v[0], v[1], v[2], v[3], x0, y0 + h);
+                const double v11 = bilinear_at(v[0], v[1], v[2], v[3], x0 + h, y0 + h);
+                cell = {v00, v10 - v00, v01 - v00, (v11 - v01) - (v10 - v00)};
             }
         }
 }

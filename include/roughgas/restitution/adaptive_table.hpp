@@ -161,20 +161,21 @@ public:
                                  const BatchFunction& f);
 
     // NaN outside the table and in direct cells. As in 1-D, the flat cell covering (x, y) holds
-    // the bilinear interpolant of its leaf restricted to the cell (its four corner values), so a
-    // look-up is one 16-byte load and the cell's own coordinates; cells of deeper leaves (and
-    // direct ones) hold NaN and go down the tree. The corners are floats: a rounding of at most
-    // 2^-24 of |eps^T| <= 1.3 (6e-8 absolute), 400 times below the table's tolerance, for a quarter
-    // of the cache a double would take (the look-up's latency is the collision loop's).
+    // the bilinear interpolant of its leaf restricted to the cell, so a look-up is one 32-byte load
+    // and the cell's own coordinates; cells of deeper leaves (and direct ones) hold NaN and go down
+    // the tree. The interpolant is kept as a + b tx + ty (c + d tx): two products in parallel and
+    // one after them, where the corners would take three in a row; and (y - y_lo) k is taken as
+    // y k - y_lo k in one fused product (the same for y_lo = 0): the look-up's latency is the
+    // collision loop's.
     [[gnu::always_inline]] double operator()(double x, double y) const {
-        const double Fx = (x - x_lo_) * flat_inv_x_, Fy = (y - y_lo_) * flat_inv_y_;
+        const double Fx = (x - x_lo_) * flat_inv_x_, Fy = std::fma(y, flat_inv_y_, fy_offset_);
         if (!(Fx >= 0.0) || Fx >= flat_nx_d_ || !(Fy >= 0.0) || Fy > flat_ny_d_)
             return std::numeric_limits<double>::quiet_NaN();
         const auto ix = static_cast<std::size_t>(Fx);
         const auto iy = std::min(static_cast<std::size_t>(Fy), flat_ny_ - 1); // Fy = flat_ny: the top edge
         const Cell& c = cells_[iy * flat_nx_ + ix];
         const double tx = Fx - static_cast<double>(ix), ty = Fy - static_cast<double>(iy); // ty = 1 at the top edge
-        const double v = bilinear_at(c.v[0], c.v[1], c.v[2], c.v[3], tx, ty);
+        const double v = std::fma(ty, std::fma(c.d, tx, c.c), std::fma(c.b, tx, c.a));
         if (std::isnan(v)) [[unlikely]]
             return tree_cold(x, y); // a deeper leaf (or a direct one: NaN again)
         return v;
@@ -209,7 +210,7 @@ public:
 
 private:
     struct Node { double v[4]; std::int32_t child; };
-    struct alignas(16) Cell { float v[4]; }; // corners (0,0) (1,0) (0,1) (1,1) of the flat cell
+    struct alignas(32) Cell { double a, b, c, d; }; // a + b tx + c ty + d tx ty on the flat cell
     double x_lo_ = 0, y_lo_ = 0, inv_x_ = 1, inv_y_ = 1;
     int nx_ = 0, ny_ = 0;
     std::vector<Node> nodes_; // nx_*ny_ root cells (row-major in y), children in blocks of 4
@@ -218,6 +219,7 @@ private:
     std::vector<Cell> cells_;     // the same cells: their leaf's interpolant on the cell, or NaN
     std::size_t flat_nx_ = 0, flat_ny_ = 0;
     double flat_scale_ = 1, flat_inv_x_ = 1, flat_inv_y_ = 1, flat_nx_d_ = 0, flat_ny_d_ = 0;
+    double fy_offset_ = 0; // -y_lo flat_inv_y
     void build_flat_index();
     [[gnu::noinline, gnu::cold]] double tree_cold(double x, double y) const { return tree(x, y); }
 };
