@@ -1,10 +1,12 @@
-// roughgas check CASE.toml [--set KEY=VALUE]... : parse and validate only.
+// roughgas check CASE.toml [--set KEY=VALUE]... : parse and validate only, writing nothing. For a
+// run, the same planning as `roughgas run` (run/setup.hpp: the spec, initial.from's state files, the
+// memory of the replicas held at a time on this machine's threads), so that check refuses what run
+// would refuse before any work; the output directory and the tables are run's alone.
 #include "commands.hpp"
 #include "linear_stability.hpp"
+#include "run/setup.hpp"
 
 #include "roughgas/io/case_file.hpp"
-#include "roughgas/io/run_spec_from_case.hpp"
-#include "roughgas/io/run_states.hpp"
 
 #include <iostream>
 #include <map>
@@ -25,10 +27,8 @@ int run_check(const CheckOptions& o) {
     const CaseConfig cfg = load_case(o.case_file, o.sets, o.use); // throws InputError: exit 2
     std::optional<std::string> stability;
     if (o.use == CaseUse::run) {
-        RunSpec spec = run_spec_from_case(cfg);
-        if (cfg.initial && !cfg.initial->from.empty()) // its state files too
-            attach_initial_state(spec, cfg, o.case_file);
-        stability = linear_stability_note(spec);
+        const CasePlan plan = plan_run(cfg, o.case_file, 0, cfg.run.replicas);
+        stability = linear_stability_note(plan.spec);
     }
     for (const std::string& u : cfg.unused)
         std::cerr << o.case_file << ": warning: " << u << '\n';

@@ -11,7 +11,7 @@
 // replica's final state (run.save_state) and cell fields come from its range's directory: the
 // same files, the fields' XDMF sidecar naming the HDF5 files by their new absolute paths.
 #include "commands.hpp"
-#include "replica_files.hpp"
+#include "run/replica_files.hpp"
 
 #include "output_dir_lock.hpp"
 

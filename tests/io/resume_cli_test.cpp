@@ -1,4 +1,4 @@
-// `roughgas run --checkpoint-every` and `--resume` (src/cli/run_command.cpp, run_checkpoints.cpp):
+// `roughgas run --checkpoint-every` and `--resume` (src/cli/run_command.cpp, run/checkpoints.cpp):
 // checkpoints change no output byte; a checkpoint that is truncated, damaged, of another format or
 // program version, of another case, seed or particle count, of another replica, or missing is
 // refused with exit 2, naming the file and the reason, and nothing is written; an earlier run's

@@ -510,10 +510,8 @@ TEST(RunCli, PrintsThetaDeviationForOtherAlphaBeta) {
 namespace roughgas {
 namespace {
 
-// Every N >= 2 runs, also with log-spaced rows denser than one collision (N = 20: 0.1 collisions per
-// particle is one collision): rows that would repeat the previous row's collision count are
-// dropped, so every row after the first has collisions since the one before and finite rates.
-// A run larger than the machine's free memory is refused before any work, with its estimate.
+// A run larger than the machine's free memory is refused before any work, with its estimate; `check`
+// plans the case as `run` does and refuses it with the same message.
 TEST(RunCli, RefusesARunLargerThanTheMemory) {
     const test::ScratchDir dir;
     const fs::path f = dir.write("big.toml", "[run]\nparticles = 1000000000000\nend = 1.0\n\n[[species]]\nmass = 1.0\n"
@@ -523,6 +521,13 @@ TEST(RunCli, RefusesARunLargerThanTheMemory) {
     EXPECT_NE(r.err.find("run.particles = 1000000000000: needs about"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("GB this process may use"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir / "out"));
+    const test::CommandResult c = test::run_roughgas("check '" + f.string() + "'", dir);
+    EXPECT_EQ(c.status, 2) << c.err;
+    EXPECT_EQ(c.err, r.err);
+    EXPECT_EQ(c.out.find("valid"), std::string::npos) << c.out;
+    // The same case at a size the machine holds is valid.
+    const test::CommandResult small = test::run_roughgas("check '" + f.string() + "' --set run.particles=1000", dir);
+    EXPECT_EQ(small.status, 0) << small.err;
 }
 
 // An address-space limit (ulimit -v: 1 GB here) is memory the process may not exceed, whatever the
@@ -555,6 +560,9 @@ TEST(RunCli, RefusesARunLargerThanItsAddressSpaceLimit) {
     EXPECT_EQ(small_status, 0) << small_err;
 }
 
+// Every N >= 2 runs, also with log-spaced rows denser than one collision (N = 20: 0.1 collisions per
+// particle is one collision): rows that would repeat the previous row's collision count are
+// dropped, so every row after the first has collisions since the one before and finite rates.
 TEST(RunCli, FewGrainsWithDenseRowsRun) {
     const test::ScratchDir dir;
     for (int n : {2, 3, 5, 20, 50}) {

@@ -121,7 +121,7 @@ struct ReplicaSummary {
 };
 
 // Checkpoints of one replica: its complete resumable state as opaque bytes (the caller stores them,
-// cli/run_command.cpp and io/checkpoint_file.hpp). States are taken at boundaries where the run can
+// cli/run/checkpoints.hpp and io/checkpoint_file.hpp). States are taken at boundaries where the run can
 // stop without changing its trajectory: cooling runs after every chunk of the collision loop
 // (max(65536, N/2) collisions, and at every row and histogram time), shear runs after every Strang
 // step (the end of its collision part, before the merged stream: dsmc/shear.hpp). No pause is

@@ -160,7 +160,7 @@ struct RunSpec {
     int histogram_bins = 50;
     double histogram_max = 5.0;
     // OpenMP threads of one replica (the groups of a step run in parallel): no influence on the
-    // results. The command line shares --threads between replicas and groups (cli/run_command.cpp).
+    // results. The command line shares --threads between replicas and groups (cli/run/replica_scheduler.cpp).
     int threads = 1;
     // Random groups per DSMC step (dsmc/engine.hpp, "Groups"); 0: automatic, auto_groups(particles).
     int groups = 0;

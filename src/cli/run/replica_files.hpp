@@ -7,7 +7,7 @@
 // duration), with the warnings of its own cells' resolution (resolution_watch.hpp), kept when the
 // run ends, and the same bytes after --resume: the rows come from the checkpoints. Replica r's file is touched by one thread at a time (add for r from r's thread only;
 // write_all outside the replicas' threads), so it needs no lock.
-#include "resolution_watch.hpp"
+#include "run/resolution_watch.hpp"
 #include "roughgas/dsmc/run_spec.hpp"
 #include "roughgas/io/csv_writer.hpp"
 #include "roughgas/io/moments_csv.hpp"

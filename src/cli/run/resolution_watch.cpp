@@ -1,4 +1,4 @@
-#include "resolution_watch.hpp"
+#include "run/resolution_watch.hpp"
 
 #include <fmt/format.h>
 

@@ -1,7 +1,7 @@
-// Reading, checking and writing DIR/checkpoint for `roughgas run` (see run_checkpoints.hpp).
-#include "run_checkpoints.hpp"
+// Reading, checking and writing DIR/checkpoint for `roughgas run` (see checkpoints.hpp).
+#include "run/checkpoints.hpp"
 
-#include "replica_files.hpp"
+#include "run/replica_files.hpp"
 
 #include "roughgas/io/atomic_file.hpp"
 #include "roughgas/io/case_file.hpp"

@@ -1,4 +1,4 @@
-#include "replica_files.hpp"
+#include "run/replica_files.hpp"
 
 #include <fmt/format.h>
 
