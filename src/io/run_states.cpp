@@ -40,7 +40,7 @@ StateFile read_state(const fs::path& path) {
 }
 
 // A cooling run from a saved state: the state's temperatures, not the species', set where T_tr
-// reaches 1e-300 m (case_file.cpp checks the reach of a run from a Maxwellian at the species'
+// reaches 1e-300 m (case_file/run_table.cpp checks the reach of a run from a Maxwellian at the species'
 // temperatures; an aged state is much colder and reaches it sooner). Replica 0's state stands for
 // the others'.
 void check_cooling_reach_from(const StateFile& state, const RunSpec& spec, const CaseConfig& cfg,

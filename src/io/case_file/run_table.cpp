@@ -1,0 +1,128 @@
+// [run]: its build, the checks of run.kernel, run.end and run.histogram_every, and its emission.
+#include "run_table.hpp"
+
+#include "roughgas/dsmc/species.hpp"
+#include "roughgas/observables/theory.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace roughgas::case_file {
+namespace {
+
+// A hard-sphere gas cooling with constant restitution loses the share zeta* of its translational
+// temperature per collision per particle once its temperatures' ratios have settled (the reduced
+// cooling rate of its cooling state, docs/model.md §5): T_tr falls as exp(-zeta* s). Below about
+// 1e-300 m (in the case's units) the squares of the velocities underflow and the run would stop
+// with an error partway; refused before any work (cooling_reach: the theory's trajectory from the
+// species' temperatures). Not for a box whose walls drive the gas (a diffuse or moving wall holds
+// it at a steady state); with initial.from, run_states.cpp checks it from the saved state's.
+void check_cooling_reach(BuildContext& ctx, const CaseConfig& c) {
+    const std::size_t S = c.species.size();
+    std::vector<HcsSpecies> species;
+    std::vector<ConstantRestitution> pairs(S * (S + 1) / 2);
+    HcsTemperatures T;
+    for (std::size_t a = 0; a < S; ++a) {
+        const SpeciesConfig& s = c.species[a];
+        if (!(s.mass > 0 && s.radius > 0 && s.temperature > 0 && s.rotational_temperature >= 0))
+            return; // refused elsewhere
+        species.push_back({s.mass, s.radius, s.inertia, s.fraction});
+        T.T_tr.push_back(s.temperature);
+        T.T_rot.push_back(s.rotational_temperature);
+        for (std::size_t b = a; b < S; ++b) {
+            const CollisionConfig& cc = collision_for(c, a, b);
+            if (cc.model != CollisionModel::constant || !cc.alpha || !cc.beta)
+                return; // restitution that depends on the impact speed: the gas cools ever slower
+            pairs[pair_index(a, b, S)] = ConstantRestitution{*cc.alpha, *cc.beta};
+        }
+    }
+    double reach = HUGE_VAL;
+    try {
+        reach = cooling_reach(HcsTheory(species, pairs, c.run.density), T, underflow_temperature_per_mass);
+    } catch (const std::invalid_argument&) {
+        return; // refused elsewhere
+    }
+    if (c.run.end > reach)
+        ctx.add("run.end",
+                fmt::format("run.end = {}: a gas cooling with constant restitution loses a fixed share of its "
+                            "temperature per collision and reaches T_tr = 1e-300 m, where the squares of the "
+                            "velocities underflow, at about {:.4g} collisions per particle: end it before "
+                            "(run.end < {:.4g})",
+                            c.run.end, reach, reach));
+}
+
+// The Maxwell kernel is the reference model with a known answer for constant alpha, beta
+// (docs/model.md); it is compiled for constant restitution only.
+void check_maxwell_kernel(BuildContext& ctx, const CaseConfig& c) {
+    for (std::size_t a = 0; a < c.species.size(); ++a) {
+        for (std::size_t b = a; b < c.species.size(); ++b) {
+            const CollisionModel m = collision_for(c, a, b).model;
+            if (m == CollisionModel::constant)
+                continue;
+            ctx.add("run.kernel",
+                    fmt::format("run.kernel = \"maxwell\": needs model = \"constant\" for every pair, but "
+                                "species \"{}\" and \"{}\" collide with model = \"{}\" (the Maxwell kernel is "
+                                "the reference model of constant restitution; must be \"hard_sphere\" here)",
+                                c.species[a].name, c.species[b].name, name(m)));
+            return; // one message
+        }
+    }
+}
+
+} // namespace
+
+RunConfig build_run(const Reader& r) {
+    RunConfig c;
+    c.kind = r.choice<RunKind>("kind", run_kind_names);
+    c.particles = r.integer("particles");
+    c.density = r.real("density");
+    c.replicas = r.integer("replicas");
+    c.groups = r.integer("groups");
+    c.kernel = r.choice<CollisionKernel>("kernel", kernel_names);
+    c.seed = static_cast<std::uint64_t>(r.integer("seed"));
+    c.end = r.real("end");
+    c.output_every = r.real("output_every");
+    c.output_spacing = r.choice<OutputSpacing>("output_spacing", output_spacing_names);
+    c.histogram_every = r.real("histogram_every");
+    c.histogram_spacing = r.choice<OutputSpacing>("histogram_spacing", output_spacing_names);
+    c.histogram_bins = r.integer("histogram_bins");
+    c.histogram_max = r.real("histogram_max");
+    c.save_state = r.boolean("save_state");
+    return c;
+}
+
+void check_run(BuildContext& ctx, const CaseConfig& c) {
+    if (c.run.kernel == CollisionKernel::maxwell)
+        check_maxwell_kernel(ctx, c);
+    else if (c.run.kind == RunKind::cooling && ctx.use() == CaseUse::run && !driven(c) &&
+             !(c.initial && !c.initial->from.empty()))
+        check_cooling_reach(ctx, c); // from a saved state: its own temperatures (io/run_states.cpp)
+    if (c.run.histogram_every > c.run.end) {
+        ctx.add("run.histogram_every",
+                fmt::format("run.histogram_every = {}: after the end of the run (must be <= run.end = {})",
+                            c.run.histogram_every, c.run.end));
+    }
+}
+
+void emit_run(Emitter& e, const RunConfig& r) {
+    e.header("[run]");
+    e.put("kind", name(r.kind));
+    e.put("particles", r.particles);
+    e.put("density", r.density);
+    e.put("replicas", r.replicas);
+    e.put("groups", r.groups);
+    e.put("kernel", kernel_names[static_cast<int>(r.kernel)]);
+    e.put("seed", r.seed);
+    e.put("end", r.end);
+    e.put("output_every", r.output_every);
+    e.put("output_spacing", name(r.output_spacing));
+    e.put("histogram_every", r.histogram_every);
+    e.put("histogram_spacing", name(r.histogram_spacing));
+    e.put("histogram_bins", r.histogram_bins);
+    e.put("histogram_max", r.histogram_max);
+    e.put("save_state", r.save_state);
+}
+
+} // namespace roughgas::case_file
