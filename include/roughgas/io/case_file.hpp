@@ -1,5 +1,5 @@
 #pragma once
-// Case files: TOML text -> validated CaseConfig (toml++ stays inside src/io/case_file.cpp).
+// Case files: TOML text -> validated CaseConfig (toml++ stays inside src/io/case_file.cpp and src/io/case_file/).
 //
 // Order of work: parse the TOML, apply `--set KEY=VALUE` overrides, validate everything against
 // io/case_schema.hpp and the cross-key rules, and only then return; any problem throws
