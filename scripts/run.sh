@@ -3,8 +3,9 @@
 #  - cases with a contact model ([material]): `roughgas restitution` tabulates it and
 #    scripts/plot_restitution.py draws it (the paper's Figs. 1 and 2; the ice cases add the measured
 #    ice law their dissipation was fitted to);
-#  - every case: `roughgas run` (the DSMC, cooling or shear) writes moments.csv (and steady.csv for
-#    shear) and scripts/plot.py (cooling) or scripts/plot_shear.py (shear) draws it.
+#  - every case: `roughgas run` (the DSMC) writes moments.csv and the files of its kind of run, and
+#    scripts/plot_run.py draws what the run is: the cooling panels (plot.py), uniform shear flow
+#    (plot_shear.py), and for a box its profiles, spectra and fields.
 # Results go to out/<case>/ (or $ROUGHGAS_OUT); earlier results there are replaced.
 # Usage: scripts/run.sh [CASE]
 set -euo pipefail
@@ -29,9 +30,5 @@ else
   cache=()
 fi
 "$roughgas" run "$case_file" --out "$out" --force "${cache[@]}"
-if grep -q '^kind *= *"shear"' "$case_file"; then
-  "$root/scripts/python3" "$root/scripts/plot_shear.py" "$out"
-else
-  "$root/scripts/python3" "$root/scripts/plot.py" "$out"
-fi
+"$root/scripts/python3" "$root/scripts/plot_run.py" "$out"
 echo "run: results in $out"

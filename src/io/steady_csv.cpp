@@ -3,12 +3,20 @@
 #include <algorithm>
 
 namespace roughgas {
+namespace {
+
+// A theory column is a function of the row's t, not a measurement: its window mean has no
+// statistical error, so it gets no X_err column.
+bool has_error(const std::string& name) { return name.find("_theory") == std::string::npos; }
+
+} // namespace
 
 std::vector<std::string> steady_csv_columns(const SteadyResult& r) {
     std::vector<std::string> c = {"steady", "steady_from", "steady_rows"};
     for (const SteadyValue& v : r.values) {
         c.push_back(v.name);
-        c.push_back(v.name + "_err");
+        if (has_error(v.name))
+            c.push_back(v.name + "_err");
     }
     return c;
 }
@@ -23,7 +31,8 @@ std::vector<std::string> steady_csv_units(const SteadyResult& r, const std::vect
                 ? units[static_cast<std::size_t>(it - names.begin())]
                 : "-";
         u.push_back(unit);
-        u.push_back(unit);
+        if (has_error(v.name))
+            u.push_back(unit);
     }
     return u;
 }
@@ -36,7 +45,8 @@ std::vector<double> steady_csv_row(const SteadyResult& r, const std::vector<std:
     std::vector<double> out = {r.reached ? 1.0 : 0.0, from, static_cast<double>(r.rows)};
     for (const SteadyValue& v : r.values) {
         out.push_back(v.mean);
-        out.push_back(v.err);
+        if (has_error(v.name))
+            out.push_back(v.err);
     }
     return out;
 }

@@ -2,12 +2,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace roughgas {
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// "zeta_star from 0.0626 to 0.0217": the means of the window's halves.
+std::string fmt_drift(const std::string& name, double first, double second) {
+    char text[160];
+    std::snprintf(text, sizeof text, "%s from %.3g to %.3g", name.c_str(), first, second);
+    return text;
+}
 
 std::size_t index_of(const std::vector<std::string>& names, const std::string& n) {
     return static_cast<std::size_t>(std::find(names.begin(), names.end(), n) - names.begin());
@@ -43,6 +51,41 @@ SteadyValue batch_mean(std::span<const double> x, int batches) {
     return v;
 }
 
+double trend_in_errors(std::span<const double> x, int batches) {
+    const std::size_t B = std::min(static_cast<std::size_t>(std::max(batches, 1)), x.size());
+    if (B < 3)
+        return nan;
+    const std::size_t len = x.size() / B, skip = x.size() - len * B;
+    std::vector<double> m(B, 0.0);
+    for (std::size_t b = 0; b < B; ++b) {
+        for (std::size_t k = 0; k < len; ++k)
+            m[b] += x[skip + b * len + k];
+        m[b] /= static_cast<double>(len);
+    }
+    // Least squares against the batch index b - (B - 1)/2 (centred: slope and mean independent).
+    const double centre = 0.5 * static_cast<double>(B - 1);
+    double mean = 0, sxx = 0, sxy = 0;
+    for (double y : m)
+        mean += y;
+    mean /= static_cast<double>(B);
+    for (std::size_t b = 0; b < B; ++b) {
+        const double u = static_cast<double>(b) - centre;
+        sxx += u * u;
+        sxy += u * (m[b] - mean);
+    }
+    const double slope = sxy / sxx;
+    double rss = 0;
+    for (std::size_t b = 0; b < B; ++b) {
+        const double r = m[b] - mean - slope * (static_cast<double>(b) - centre);
+        rss += r * r;
+    }
+    // A constant series (T_rot of smooth grains) has no trend, whatever round-off leaves in rss.
+    if (!(std::abs(slope) * static_cast<double>(B) > 1e-12 * std::abs(mean)))
+        return 0.0;
+    const double se = std::sqrt(rss / static_cast<double>(B - 2) / sxx);
+    return se > 0 ? slope / se : std::copysign(std::numeric_limits<double>::infinity(), slope);
+}
+
 SteadyResult find_steady_state(const std::vector<std::string>& names,
                                const std::vector<std::vector<double>>& rows, const SteadyOptions& o,
                                const std::vector<std::string>& skip) {
@@ -61,16 +104,24 @@ SteadyResult find_steady_state(const std::vector<std::string>& names,
     const int half_batches = std::max(2, o.batches / 2);
     // Row 0 is the initial state (its rates are undefined): never part of the window.
     std::size_t k0 = std::min<std::size_t>(1, n);
+    std::string drift; // of the window tried last, the quantity that failed
     const std::size_t stride = std::max<std::size_t>(1, n / 100);
     const auto last_start = static_cast<std::size_t>(o.max_start * static_cast<double>(n));
     for (; k0 + std::max<std::size_t>(o.min_rows, 4) <= n && k0 <= last_start; k0 += stride) {
         const std::size_t mid = k0 + (n - k0) / 2;
         bool steady = true;
+        drift.clear();
         for (std::size_t j : mon) {
             const std::vector<double> a = series(j, k0, mid), b = series(j, mid, n);
             const SteadyValue A = batch_mean(a, half_batches), B = batch_mean(b, half_batches);
             if (!std::isfinite(A.mean) && !std::isfinite(B.mean))
                 continue; // undefined throughout (e.g. T_rot of smooth grains started without spin)
+            drift = fmt_drift(names[j], A.mean, B.mean);
+            // A drift through the whole window (it inflates B.err, which the halves' test divides by).
+            if (const double t = trend_in_errors(series(j, k0, n), o.batches); std::abs(t) > o.trend_threshold) {
+                steady = false;
+                break;
+            }
             // The error of both means from the second half's batches (a transient inside the first
             // half would inflate its own batch error and hide itself); the 1e-12 relative slack:
             // a constant column, e.g. T_rot of smooth grains, has err = 0.
@@ -105,9 +156,11 @@ SteadyResult find_steady_state(const std::vector<std::string>& names,
         }
         if (steady) {
             r.reached = true;
+            drift.clear();
             break;
         }
     }
+    r.drift = drift;
     if (!r.reached)
         k0 = std::min(k0, n > 0 ? n / 2 : 0);
     r.first_row = k0;

@@ -1,11 +1,13 @@
 // The steady-state detector and batch means (observables/steady_state.hpp) on synthetic series
-// with known statistics: a relaxation plus noise, stationary noise, and a drift.
+// with known statistics: a relaxation plus noise, stationary noise, and drifts.
 #include "roughgas/core/rng.hpp"
 #include "roughgas/observables/steady_state.hpp"
+#include "roughgas/observables/uniformity.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -140,6 +142,96 @@ TEST(SteadyMonitored, ShearWatchesThetaA20AndTheSpecies) {
                                                "P_xy_star", "theta", "a20",       "theta.a",       "T_tr.a/T_tr.b",
                                                "T_rot.a/T_rot.b"};
     EXPECT_EQ(steady_monitored(names, true), expected);
+}
+
+} // namespace
+} // namespace roughgas
+
+namespace roughgas {
+namespace {
+
+// The trend statistic on exact series: no trend in a constant, an enormous one on a line,
+// and for a line plus a known alternating perturbation its closed form. Ten batches of one value
+// each: x_b = 0.1 b + 0.01 (-1)^b; the fit's slope is 0.1 + 0.01 sum u_b (-1)^b / sum u_b^2 and its
+// residuals' scatter gives the error.
+TEST(TrendInErrors, ExactSeries) {
+    EXPECT_EQ(trend_in_errors(std::vector<double>(10, 2.5), 10), 0.0);
+    std::vector<double> line(10), wiggle(10);
+    for (std::size_t b = 0; b < 10; ++b) {
+        line[b] = 1 + 0.1 * static_cast<double>(b);
+        wiggle[b] = line[b] + 0.01 * (b % 2 == 0 ? 1.0 : -1.0);
+    }
+    EXPECT_GT(trend_in_errors(line, 10), 1e9); // only round-off about the line
+    double sxx = 0, sxe = 0;
+    for (std::size_t b = 0; b < 10; ++b) {
+        const double u = static_cast<double>(b) - 4.5, e = b % 2 == 0 ? 0.01 : -0.01;
+        sxx += u * u;
+        sxe += u * e;
+    }
+    const double slope = 0.1 + sxe / sxx;
+    double rss = 0;
+    // Residuals about the fitted line (mean of wiggle = 1.45: the perturbations cancel).
+    for (std::size_t b = 0; b < 10; ++b) {
+        const double u = static_cast<double>(b) - 4.5;
+        const double r = wiggle[b] - 1.45 - slope * u;
+        rss += r * r;
+    }
+    EXPECT_NEAR(trend_in_errors(wiggle, 10), slope / std::sqrt(rss / 8 / sxx), 1e-9);
+    EXPECT_TRUE(std::isnan(trend_in_errors(std::vector<double>{1.0, 2.0}, 10)));
+}
+
+// A cooling box that starts to cluster: its reduced cooling rate flat for the first half of the
+// rows, then falling steadily to a third of it (22 rows, noise 0.0003, as the clustering slab of
+// cases/box_cooling_slab.toml shows). The falling half's batch means spread widely, so the halves'
+// test, dividing by their scatter, finds no drift; the trend test resolves it in every seed.
+TEST(SteadyState, ADriftThroughTheWindowIsNotSteady) {
+    for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+        Rng r = make_stream(seed, Stream::test, 2, 0);
+        std::vector<std::vector<double>> rows;
+        for (std::size_t k = 0; k < 23; ++k) {
+            const double fall = k < 12 ? 0.0 : 0.04 * static_cast<double>(k - 12) / 10.0;
+            rows.push_back({static_cast<double>(k), 10.0 * static_cast<double>(k), 0.0625 - fall + 0.0003 * gauss(r)});
+        }
+        SteadyOptions o = options();
+        o.min_rows = 10;
+        o.max_start = 1.0;
+        o.trend_threshold = std::numeric_limits<double>::infinity(); // the halves' test alone
+        EXPECT_TRUE(find_steady_state(names, rows, o).reached) << seed;
+        o.trend_threshold = SteadyOptions{}.trend_threshold;
+        const SteadyResult s = find_steady_state(names, rows, o);
+        EXPECT_FALSE(s.reached) << seed;
+        EXPECT_EQ(s.drift.rfind("T_tr from ", 0), 0u) << s.drift;
+    }
+}
+
+} // namespace
+} // namespace roughgas
+
+
+namespace roughgas {
+namespace {
+
+// The uniform gas's bound on S: for one independent mode S is exponential, P(S > x) = exp(-x), so
+// the bound at p is -ln p; many modes bring it towards the mean 1. A uniform box's rows (S drawn
+// as the mean of a unit exponentials) stay below it; a row of S = 40 (a cluster) is the first above.
+TEST(Uniformity, BoundAndFirstNonUniformRow) {
+    EXPECT_NEAR(uniform_structure_factor_bound(1, 1e-6), -std::log(1e-6), 1e-9);
+    EXPECT_LT(uniform_structure_factor_bound(400, 1e-6), 1.4);
+    Rng r = make_stream(7, Stream::test, 3, 0);
+    std::vector<double> S, modes;
+    for (int k = 0; k < 300; ++k) {
+        double sum = 0;
+        for (int i = 0; i < 4; ++i)
+            sum += -std::log(uniform01_open0(r));
+        S.push_back(sum / 4);
+        modes.push_back(8); // 4 independent modes, one replica
+    }
+    EXPECT_FALSE(first_non_uniform_row(S, modes, 1).has_value());
+    S[200] = 40;
+    const std::optional<NonUniformity> u = first_non_uniform_row(S, modes, 1);
+    ASSERT_TRUE(u.has_value());
+    EXPECT_EQ(u->row, 200u);
+    EXPECT_NEAR(u->bound, uniform_structure_factor_bound(4, 1e-6), 1e-12);
 }
 
 } // namespace

@@ -9,8 +9,13 @@
 // The window is steady when, for every monitored X,
 //     |mean_2(X) - mean_1(X)| <= threshold se_2 sqrt(1 + n_2/n_1),
 // i.e. no drift of X is resolved by the data (with `head_rows` > 0, the same test for the mean of
-// the window's first `head_rows` rows against the second half's). The steady start is the first such k0 (scanned
-// upwards, over the first `max_start` of the rows, with at least `min_rows` rows in the window).
+// the window's first `head_rows` rows against the second half's). A drift that goes on through the
+// window spreads the second half's batch means and so inflates se_2, the error it is compared with:
+// the window is also cut into `batches` batches, a straight line fitted to their means, and the
+// window is steady only if, for every X, the line's slope lies within `trend_threshold` of its
+// standard error (from the batch means' scatter about the line: a trend does not inflate it). The
+// steady start is the first such k0 (scanned upwards, over the first `max_start` of the rows, with
+// at least `min_rows` rows in the window).
 // Monitored (steady_monitored): T_tr, T_rot, P*_xx, P*_yy, P*_zz, P*_xy, theta, a20 (and a
 // mixture's species' theta and temperature ratios) for shear runs; the scale-free ratios for
 // cooling runs, whose steady state is the scaled (homogeneous cooling) state.
@@ -34,6 +39,9 @@ struct SteadyOptions {
     std::size_t min_rows = 20;
     // The window's first row among the first `max_start` of the rows (a fraction).
     double max_start = 0.5;
+    // The trend test's bound on |slope|/se(slope): with 10 batches the ratio of a stationary series
+    // follows Student's t with 8 degrees of freedom, beyond 4 with probability 0.4 %.
+    double trend_threshold = 4;
     // > 0: also the mean of the window's first `head_rows` rows against the second half's, so that
     // a transient of a few rows at the window's start, diluted in the first half's mean, is seen.
     std::size_t head_rows = 0;
@@ -49,6 +57,9 @@ struct SteadyValue {
 
 struct SteadyResult {
     bool reached = false;
+    // Not reached: the monitored quantity that drifted over the last window tried, and by how much
+    // ("zeta_star from 0.0626 to 0.0217"); empty when reached.
+    std::string drift;
     std::size_t first_row = 0;       // the window's first row (reached or not: the last candidate tried)
     std::size_t rows = 0;            // rows in the window
     std::vector<SteadyValue> values; // every column but the skipped ones, in column order
@@ -59,6 +70,12 @@ struct SteadyResult {
 // are left out, so every batch has the same weight; fewer than B values: one per batch). err is NaN
 // with fewer than 2 values, mean too with none.
 SteadyValue batch_mean(std::span<const double> x, int batches);
+
+// The slope of x against its index, in units of its standard error: a straight line fitted to the
+// means of B consecutive batches of equal length (the first len % B values left out, as batch_mean
+// does), the error from their scatter about the line. NaN with fewer than 3 batches; 0 when x is
+// constant; +-inf when the means lie on the line exactly (round-off aside).
+double trend_in_errors(std::span<const double> x, int batches);
 
 // `names`: the columns of `rows`; columns named in `skip` (and every X_err column) are not averaged.
 SteadyResult find_steady_state(const std::vector<std::string>& names,

@@ -77,9 +77,11 @@ void MomentsFiles::update(const std::vector<std::vector<std::vector<double>>>& r
             for (const std::vector<double>& r : profile_blocks_.back())
                 profiles_->add_row(r);
         }
-        if (spectra_)
-            for (const std::vector<double>& r : table_.combine_spectra(spans))
+        if (spectra_) {
+            spectra_blocks_.push_back(table_.combine_spectra(spans));
+            for (const std::vector<double>& r : spectra_blocks_.back())
                 spectra_->add_row(r);
+        }
         if (modes_)
             for (const std::vector<double>& r : table_.combine_modes(spans))
                 modes_->add_row(r);
