@@ -148,6 +148,23 @@ TEST(BoxCli, RefusesWhatTheBoxCannotRunBeforeAnyWork) {
     EXPECT_NE(r.err.find("warning: cells of up to 2.22 mean free paths"), std::string::npos) << r.err;
 }
 
+// Walls on y of a sheared box: one error, the conflict, and none asking for or checking the walls'
+// tables (which walls on z would need).
+TEST(BoxCli, AShearedBoxWithWallsOnYIsOneError) {
+    const test::ScratchDir dir;
+    const std::string sheared =
+        replaced(replaced(box_case(), "seed = 4", "seed = 4\nkind = \"shear\""), "cells = [5, 5, 5]",
+                 "cells = [5, 5, 5]\nboundary = [\"periodic\", \"walls\", \"periodic\"]") +
+        "\n[shear]\nrate = 0.01\n";
+    for (const std::string walls : {"", "[wall_lower]\nkind = \"diffuse\"\nvelocity = [0.0, 0.1, 0.0]\n"}) {
+        const fs::path f = dir.write("sheared.toml", sheared + walls);
+        const test::CommandResult r = test::run_roughgas("check " + q(f), dir);
+        EXPECT_EQ(r.status, 2) << r.err;
+        EXPECT_NE(r.err.find("domain.boundary[1] = \"walls\" with run.kind = \"shear\""), std::string::npos) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+}
+
 // [spectra] with a transverse wave u_y = A sqrt(T/m) sin(2 pi 2 x / L) (A = 0.3, T = 1: two
 // wavelengths on 8 cells along x, so that the cells' window sinc(k dx/2) = sinc(pi/4) = 0.900 is
 // seen): at t = 0 modes.csv has, at n = 2 along x, the flow amplitude u_y = -i A sqrt(T/m) sinc(pi/4),
