@@ -102,7 +102,10 @@ TEST(BoxCli, RefusesWhatTheBoxCannotRunBeforeAnyWork) {
         {base.substr(0, base.find("[domain]")) + "[initial]\nmode = \"transverse\"\n", "initial.mode",
          "without [domain]"},
         {base + "\n[initial]\nmode = \"density\"\nwave = [0, 0, 0]\n", "initial.wave", "other than 0"},
-        {base + "\n[initial]\nmode = \"density\"\namplitude = 1.0\n", "initial.amplitude", "in (-1, 1)"},
+        {base + "\n[initial]\nmode = \"density\"\namplitude = 1.0\n", "initial.amplitude",
+         "initial.amplitude = 1: must be in (-1, 1) (A in units of sqrt(T/m) for a velocity wave, of the mean for a "
+         "density or temperature wave: |A| < 1 keeps the flow below the thermal speed sqrt(T/m) and the density and "
+         "temperature positive)"},
         {base + "\n[initial]\nmode = \"transverse\"\nwave = [3, 0, 0]\n", "initial.wave",
          "spans fewer than two cells"},
         {replaced(base, "particles = 4000", "particles = 4000000000000"), "run.particles", "GB"},
