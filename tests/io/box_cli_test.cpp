@@ -587,7 +587,7 @@ TEST(BoxCli, StartsFromTheSavedStateOfAnEarlierRun) {
     EXPECT_TRUE(fs::exists(dir / "box" / "state" / "replica_0.bin"));
 }
 
-// A cooling run from a saved state reaches T_tr = 1e-300 m sooner than one from the species'
+// A cooling run from a saved state reaches T_tr/m = 1e-300 sooner than one from the species'
 // temperatures: it is refused from the state's own temperatures (replica 0's), before any work. A box
 // at alpha = 0.5 saved after 100 collisions per particle has about 100 fewer left than a fresh start
 // (within the Maxwellian cooling rate's few per cent of its 30 e-foldings: 10 collisions); a run.end
@@ -614,6 +614,8 @@ TEST(BoxCli, ACoolingRunFromASavedStateIsRefusedPastTheStatesReach) {
         test::run_roughgas("run " + q(from) + between + " --out " + q(dir / "out"), dir);
     EXPECT_EQ(refused.status, 2) << refused.err;
     EXPECT_NE(refused.err.find("the state of initial.from"), std::string::npos) << refused.err;
+    EXPECT_NE(refused.err.find("reaches T_tr/m = 1e-300 (velocities squared underflow)"), std::string::npos)
+        << refused.err;
     EXPECT_FALSE(fs::exists(dir / "out"));
     EXPECT_EQ(test::run_roughgas("check " + q(from) + " --set run.end=" + std::to_string(state_reach - 20), dir)
                   .status,
