@@ -13,8 +13,6 @@ both trees hold the same paths), then compares the two trees: the same set of fi
 same bytes: the CSVs, checkpoint/, state/, the cell fields' HDF5 files, the table cache file. A
 text file that differs is reported with its first differing line (and a CSV row with the column),
 any other file with its first differing byte. Compared after a substitution:
-  *.xmf          the XDMF sidecars of a box's cell fields name their HDF5 files by absolute path:
-                 each tree's root is replaced by "<root>";
   RGTCACHE files the restitution table cache (contact.cache_file) stores each table's build time
                  in seconds: those doubles and the checksum over them are zeroed, once the checksum
                  has been verified.
@@ -579,9 +577,9 @@ def files_under(d):
     return found
 
 
-def compare_trees(a_dir, b_dir, a_root, b_root, label_a, label_b, shown):
+def compare_trees(a_dir, b_dir, label_a, label_b, shown):
     """The differences between the files under a_dir and b_dir, as lines; `shown` prefixes the
-    relative paths. XDMF files are compared with their tree's root (a_root, b_root) replaced."""
+    relative paths."""
     diffs = []
     fa, fb = files_under(a_dir), files_under(b_dir)
     for f in sorted(fa - fb):
@@ -592,9 +590,6 @@ def compare_trees(a_dir, b_dir, a_root, b_root, label_a, label_b, shown):
         pa, pb = os.path.join(a_dir, f), os.path.join(b_dir, f)
         with open(pa, "rb") as x, open(pb, "rb") as y:
             da, db = x.read(), y.read()
-        if f.endswith(".xmf"):
-            da = da.replace(a_root.encode(), b"<root>")
-            db = db.replace(b_root.encode(), b"<root>")
         if da[:8] == b"RGTCACHE" and db[:8] == b"RGTCACHE":
             (ma, why_a), (mb, why_b) = table_cache_masked(da), table_cache_masked(db)
             if ma is None or mb is None:
@@ -680,7 +675,7 @@ def run_scenario(sc, work, binaries, mpi_skip):
     try:
         roots = {side: os.path.join(work, side, sc.name) for side in ("old", "new", "cross")}
         got = {side: run_steps(sc.steps, binaries, roots[side], work, side, sc) for side in ("old", "new")}
-        diffs = compare_trees(roots["old"], roots["new"], roots["old"], roots["new"], "old", "new", "")
+        diffs = compare_trees(roots["old"], roots["new"], "old", "new", "")
         diffs += compare_transcripts(got["old"], got["new"], roots["old"], roots["new"], binaries["old"],
                                      binaries["new"])
         problems = status_problems(got["old"], "old") + status_problems(got["new"], "new")
@@ -688,8 +683,8 @@ def run_scenario(sc, work, binaries, mpi_skip):
             cross = run_steps(sc.cross, binaries, roots["cross"], work, "cross", sc)
             problems += status_problems(cross, "cross")
             for a, b in sc.cross_pairs:
-                diffs += compare_trees(os.path.join(roots["old"], a), os.path.join(roots["cross"], b), roots["old"],
-                                       roots["cross"], "old", "cross", f"old {a} vs cross {b}: ")
+                diffs += compare_trees(os.path.join(roots["old"], a), os.path.join(roots["cross"], b), "old", "cross",
+                                       f"old {a} vs cross {b}: ")
     except KeyboardInterrupt:
         raise
     except Exception as e:  # a fault of this script or of the machine (a full disk), reported with the scenario

@@ -30,9 +30,9 @@ it: without moments.csv every axis counts as bounded, with one-sided differences
 Each column's title gives t, collisions per particle, the block in cells and its mean grains.
 Writes PNG (default: RUN_DIR/fields_replica_R.png) atomically.
 --check: also verify what ParaView's XDMF reader will read: every HDF5 file the sidecar names
-exists, holds the dataset, and the dataset's shape is the sidecar's Dimensions (cells along z, y, x,
-then the components); each file's row and t are its grid's; exit 1 on any mismatch or if no
-panel was drawn.
+(relative to the sidecar's folder, or absolute) exists, holds the dataset, and the dataset's
+shape is the sidecar's Dimensions (cells along z, y, x, then the components); each file's row and
+t are its grid's; exit 1 on any mismatch or if no panel was drawn.
 """
 import argparse
 import os
@@ -55,7 +55,9 @@ GRAINS_PER_BLOCK = 100  # the default block holds at least this many grains on a
 
 
 def read_sidecar(path):
-    """The sidecar's snapshots: [(name, time, {attribute: (file, dataset, dimensions)})]."""
+    """The sidecar's snapshots: [(name, time, {attribute: (file, dataset, dimensions)})], each file
+    resolved against the sidecar's folder, as ParaView's reader resolves it (an absolute name stays)."""
+    folder = os.path.dirname(os.path.abspath(path))
     root = ET.parse(path).getroot()
     series = root.find("Domain/Grid")
     snapshots = []
@@ -66,6 +68,7 @@ def read_sidecar(path):
         for attribute in grid.findall("Attribute"):
             item = attribute.find("DataItem")
             file, dataset = item.text.strip().rsplit(":", 1)
+            file = os.path.join(folder, file)
             dims = tuple(int(d) for d in item.get("Dimensions").split())
             items[attribute.get("Name")] = (file, dataset, dims, attribute.get("AttributeType"))
         snapshots.append((grid.get("Name"), time, nodes, items))
@@ -77,8 +80,6 @@ def check(snapshots):
     problems = []
     for name, time, nodes, items in snapshots:
         for attr, (file, dataset, dims, kind) in items.items():
-            if not os.path.isabs(file):
-                problems.append(f"{name}/{attr}: {file} is not an absolute path")
             if not os.path.exists(file):
                 problems.append(f"{name}/{attr}: {file} does not exist")
                 continue

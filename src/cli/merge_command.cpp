@@ -9,7 +9,7 @@
 // `roughgas run --resume OUT` writes them for a run whose replicas have all finished (the rows of
 // each replica, combined in replica order: the same bytes as the run in one process). Each
 // replica's final state (run.save_state) and cell fields come from its range's directory: the
-// same files, the fields' XDMF sidecar naming the HDF5 files by their new absolute paths.
+// same files (the fields' XDMF sidecar names its HDF5 files relative to its own folder).
 #include "commands.hpp"
 #include "run/replica_files.hpp"
 
@@ -24,8 +24,6 @@
 #include <fmt/format.h>
 
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -54,13 +52,6 @@ RunCheckpoint read_run(const fs::path& dir) {
     }
 }
 
-std::string read_bytes(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in)
-        throw std::runtime_error("cannot read " + file.string());
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 // `from` copied to `to` through a temporary next to it (complete or absent, as every output), without
 // holding the file in memory (a snapshot of every cell of a large box is hundreds of megabytes).
 void copy_atomically(const fs::path& from, const fs::path& to) {
@@ -79,13 +70,13 @@ void copy_replica_files(const fs::path& range, const fs::path& out, std::uint64_
     const fs::path from = fields_replica_dir(range, replica);
     if (!fs::is_directory(from))
         return;
-    const fs::path to = fs::absolute(fields_replica_dir(out, replica));
+    const fs::path to = fields_replica_dir(out, replica);
     fs::create_directories(to);
     for (const auto& e : fs::directory_iterator(from))
         if (e.is_regular_file() && e.path().extension() == ".h5")
             copy_atomically(e.path(), to / e.path().filename());
     if (const fs::path xdmf = fields_xdmf_path(range, replica); fs::exists(xdmf))
-        write_file_atomically(fields_xdmf_path(out, replica), fields_xdmf_moved(read_bytes(xdmf), to));
+        copy_atomically(xdmf, fields_xdmf_path(out, replica));
 }
 
 int run_merge(const MergeOptions& o) {

@@ -67,6 +67,10 @@ class Key {
         spec_.description = std::move(d);
         return *this;
     }
+    Key& because(std::string r) {
+        spec_.range_reason = std::move(r);
+        return *this;
+    }
     KeySpec spec() const { return spec_; }
 
   private:
@@ -358,6 +362,9 @@ std::vector<Key> keys() {
             .fallback(0.1)
             .gt(-1)
             .lt(1)
+            .because("A in units of sqrt(T/m) for a velocity wave, of the mean for a density or temperature wave: "
+                     "|A| < 1 keeps the flow below the thermal speed sqrt(T/m) and the density and temperature "
+                     "positive")
             .doc("A: of the velocity in units of sqrt(T/m), of the density or temperature relative to its mean"),
         Key("initial.wave", T::integer3)
             .when("[1, 0, 0]")

@@ -41,25 +41,6 @@ fs::path fields_xdmf_path(const fs::path& run_dir, int replica) {
     return fields_dir(run_dir) / ("replica_" + std::to_string(replica) + ".xmf");
 }
 
-std::string fields_xdmf_moved(const std::string& text, const fs::path& dir) {
-    static const std::string open = "Format=\"HDF\">", close = "</DataItem>";
-    std::string out;
-    std::size_t at = 0;
-    for (std::size_t p; (p = text.find(open, at)) != std::string::npos;) {
-        const std::size_t path = p + open.size(), end = text.find(close, path);
-        const std::size_t colon = end == std::string::npos ? end : text.rfind(":/", end); // PATH:/DATASET
-        if (colon == std::string::npos || colon < path)
-            break;
-        const std::size_t slash = text.rfind('/', colon - 1);
-        const std::size_t name = slash == std::string::npos || slash < path ? path : slash + 1;
-        out.append(text, at, path - at);
-        out += escaped((dir / text.substr(name, colon - name)).string());
-        at = colon;
-    }
-    out.append(text, at, std::string::npos);
-    return out;
-}
-
 std::string fields_xdmf(const std::vector<FieldsEntry>& entries, const std::array<int, 3>& cells,
                         const std::array<double, 3>& box, const std::vector<FieldQuantity>& quantities, int replica) {
     // Xdmf2 lists every dimension slowest first: z, y, x (the datasets' order, fields_file.hpp).
@@ -67,6 +48,9 @@ std::string fields_xdmf(const std::vector<FieldsEntry>& entries, const std::arra
     const std::string nodes_zyx = fmt::format("{} {} {}", cells[2] + 1, cells[1] + 1, cells[0] + 1);
     const std::string spacing_zyx =
         fmt::format("{} {} {}", box[2] / cells[2], box[1] / cells[1], box[0] / cells[0]);
+    // Each file by its path from the sidecar's folder (replica_R/row_NNNNNN.h5), so that the run
+    // directory opens wherever it is copied or moved to.
+    const fs::path folder = fields_replica_dir(fs::path(), replica).filename();
     std::string x = "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"2.0\">\n"
                     "  <Domain>\n";
     x += fmt::format("    <Grid Name=\"replica {}\" GridType=\"Collection\" CollectionType=\"Temporal\">\n", replica);
@@ -87,7 +71,8 @@ std::string fields_xdmf(const std::vector<FieldsEntry>& entries, const std::arra
                              C == 1 ? "Scalar" : C == 3 ? "Vector" : "Tensor6");
             x += fmt::format("          <DataItem Dimensions=\"{}{}\" NumberType=\"Float\" Precision=\"8\" "
                              "Format=\"HDF\">{}:/{}</DataItem>\n        </Attribute>\n",
-                             cells_zyx, C == 1 ? std::string() : fmt::format(" {}", C), escaped(e.file.string()), name);
+                             cells_zyx, C == 1 ? std::string() : fmt::format(" {}", C),
+                             escaped((folder / e.file.filename()).generic_string()), name);
         }
         x += "      </Grid>\n";
     }
@@ -96,7 +81,7 @@ std::string fields_xdmf(const std::vector<FieldsEntry>& entries, const std::arra
 }
 
 FieldsSeries::FieldsSeries(const fs::path& run_dir, int replica, const DomainSpec& domain, bool resuming)
-    : dir_(fs::absolute(fields_replica_dir(run_dir, replica))), xdmf_(fields_xdmf_path(run_dir, replica)),
+    : dir_(fields_replica_dir(run_dir, replica)), xdmf_(fields_xdmf_path(run_dir, replica)),
       replica_(replica), box_(domain.size) {
     fs::create_directories(dir_);
     if (!resuming)

@@ -39,8 +39,8 @@ StateFile read_state(const fs::path& path) {
     return decode_state(read_checkpoint_bytes(path));
 }
 
-// A cooling run from a saved state: the state's temperatures, not the species', set where T_tr
-// reaches 1e-300 m (case_file/run_table.cpp checks the reach of a run from a Maxwellian at the species'
+// A cooling run from a saved state: the state's temperatures, not the species', set where T_tr/m
+// reaches 1e-300 (case_file/run_table.cpp checks the reach of a run from a Maxwellian at the species'
 // temperatures; an aged state is much colder and reaches it sooner). Replica 0's state stands for
 // the others'.
 void check_cooling_reach_from(const StateFile& state, const RunSpec& spec, const CaseConfig& cfg,
@@ -69,9 +69,9 @@ void check_cooling_reach_from(const StateFile& state, const RunSpec& spec, const
     if (spec.end > reach)
         throw InputError(case_file, "run.end",
                          fmt::format("run.end = {}: the state of initial.from = \"{}\" (T_tr = {:.3g} for the first "
-                                     "species) cools with constant restitution and reaches T_tr = 1e-300 m, where "
-                                     "the squares of the velocities underflow, at about {:.4g} collisions per "
-                                     "particle from its start: end it before (run.end < {:.4g})",
+                                     "species) cools with constant restitution and reaches T_tr/m = 1e-300 "
+                                     "(velocities squared underflow) at about {:.4g} collisions per particle from "
+                                     "its start: end it before (run.end < {:.4g})",
                                      spec.end, dir, T.T_tr[0], reach, reach));
 }
 

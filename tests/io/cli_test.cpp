@@ -123,6 +123,9 @@ TEST(Cli, CoolingRunsPastTheTemperaturesUnderflowAreRefused) {
         run_roughgas(walls + " --set wall_lower.kind=specular --set wall_upper.kind=specular", dir);
     EXPECT_EQ(closed.status, 2);
     EXPECT_NE(closed.err.find("run.end = 1000000"), std::string::npos) << closed.err;
+    // 1e-300 times the mass, in the case's units: not a length.
+    EXPECT_NE(closed.err.find("reaches T_tr/m = 1e-300 (velocities squared underflow) at about"), std::string::npos)
+        << closed.err;
     const struct {
         std::string file, sets;
         std::vector<std::pair<std::string, double>> species; // T_tr column, mass

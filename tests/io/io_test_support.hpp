@@ -155,11 +155,4 @@ inline std::string replaced(std::string text, const std::string& from, const std
     return text;
 }
 
-// `text` with every occurrence of `from` replaced by `to`.
-inline std::string replaced_all(std::string text, const std::string& from, const std::string& to) {
-    for (std::size_t at = text.find(from); !from.empty() && at != std::string::npos; at = text.find(from, at + to.size()))
-        text.replace(at, from.size(), to);
-    return text;
-}
-
 } // namespace roughgas::test

@@ -44,6 +44,7 @@ struct KeySpec {
     Limit lower, upper;
     std::vector<std::string> choices; // allowed strings (empty: any)
     std::string description;
+    std::string range_reason; // what the value measures and why its range, told with a value outside it
 
     std::string_view table() const; // "material"
     std::string_view name() const;  // "young_modulus"

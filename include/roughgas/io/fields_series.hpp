@@ -3,9 +3,10 @@
 // DIR/fields/replica_R/row_NNNNNN.h5 (NNNNNN: the row of moments.csv), and the XDMF sidecar
 // DIR/fields/replica_R.xmf that ParaView opens as a time series (its "XDMF Reader", the Xdmf2
 // format: a temporal collection of uniform grids, 3DCoRectMesh with ORIGIN_DXDYDZ, every value
-// in z, y, x order, the fields cell-centred). The sidecar names the HDF5 files by absolute path,
-// as ParaView's reader resolves them; it is rewritten, atomically, after every snapshot, so that
-// it lists every file written so far (a run stopped at any point opens as far as it went).
+// in z, y, x order, the fields cell-centred). The sidecar names each HDF5 file relative to its own
+// folder (replica_R/row_NNNNNN.h5), as ParaView's reader resolves it, so that a run directory
+// opens wherever it is copied to; it is rewritten, atomically, after every snapshot, so that it
+// lists every file written so far (a run stopped at any point opens as far as it went).
 // The files are written on a thread of the series' own, one snapshot behind the run: building the
 // HDF5 image, writing it and syncing it to disk overlap the steps that follow, and a run that
 // writes every quantity of every cell at every row waits for the disk only when the disk is slower
@@ -28,15 +29,11 @@ std::filesystem::path fields_xdmf_path(const std::filesystem::path& run_dir, int
 struct FieldsEntry {
     std::size_t row = 0;
     double t = 0;
-    std::filesystem::path file; // absolute
+    std::filesystem::path file; // in the replica's directory, fields_replica_dir
 };
 
-// A sidecar's text with every HDF5 file it names moved into `dir` (absolute; the same file names):
-// `roughgas merge` copies a range's fields into the merged directory, whose paths the range's
-// sidecar does not know.
-std::string fields_xdmf_moved(const std::string& text, const std::filesystem::path& dir);
-
-// The sidecar's text for these snapshots of one replica's cells.
+// The sidecar's text for these snapshots of one replica's cells, each named by the file name of
+// its `file` in the replica's directory.
 std::string fields_xdmf(const std::vector<FieldsEntry>& entries, const std::array<int, 3>& cells,
                         const std::array<double, 3>& box, const std::vector<FieldQuantity>& quantities, int replica);
 

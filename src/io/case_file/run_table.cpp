@@ -15,7 +15,7 @@ namespace {
 // A hard-sphere gas cooling with constant restitution loses the share zeta* of its translational
 // temperature per collision per particle once its temperatures' ratios have settled (the reduced
 // cooling rate of its cooling state, docs/model.md §5): T_tr falls as exp(-zeta* s). Below about
-// 1e-300 m (in the case's units) the squares of the velocities underflow and the run would stop
+// T_tr/m = 1e-300 (in the case's units) the squares of the velocities underflow and the run would stop
 // with an error partway; refused before any work (cooling_reach: the theory's trajectory from the
 // species' temperatures). Not for a box whose walls drive the gas (a diffuse or moving wall holds
 // it at a steady state); with initial.from, run_states.cpp checks it from the saved state's.
@@ -47,8 +47,8 @@ void check_cooling_reach(BuildContext& ctx, const CaseConfig& c) {
     if (c.run.end > reach)
         ctx.add("run.end",
                 fmt::format("run.end = {}: a gas cooling with constant restitution loses a fixed share of its "
-                            "temperature per collision and reaches T_tr = 1e-300 m, where the squares of the "
-                            "velocities underflow, at about {:.4g} collisions per particle: end it before "
+                            "temperature per collision and reaches T_tr/m = 1e-300 (velocities squared "
+                            "underflow) at about {:.4g} collisions per particle: end it before "
                             "(run.end < {:.4g})",
                             c.run.end, reach, reach));
 }

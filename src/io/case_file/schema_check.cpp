@@ -123,7 +123,10 @@ class SchemaCheck {
             if (!x || !std::isfinite(*x)) {
                 d_.add(key, fmt::format("{}: must be {}", shown, expectation(s)), &n);
             } else if (!s.allows(*x)) {
-                d_.add(key, fmt::format("{}: must be {}{}", shown, s.allowed(), unit_suffix(s)), &n);
+                d_.add(key,
+                       fmt::format("{}: must be {}{}{}", shown, s.allowed(), unit_suffix(s),
+                                   s.range_reason.empty() ? std::string() : " (" + s.range_reason + ")"),
+                       &n);
             }
             return;
         }
