@@ -36,6 +36,7 @@ std::string constant_case(double alpha, double beta, int particles = 2000, doubl
 std::string mixture_case() {
     return R"([run]
 particles = 2000
+density = 0.01
 end = 3.0
 replicas = 2
 
