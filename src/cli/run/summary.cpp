@@ -68,7 +68,7 @@ void write_summary_csv(const fs::path& dir, bool steady, const SteadyResult& st,
 }
 
 RunSummary summarize_run(const fs::path& dir, const RunSpec& spec, bool steady, const MomentsFiles& files,
-                         const RunProvenance& provenance, bool quiet) {
+                         const RunProvenance& provenance) {
     const MomentsTable& table = files.table();
     const std::vector<std::string> names = table.names();
     const std::vector<std::vector<double>>& rows = files.combined();
@@ -99,7 +99,7 @@ RunSummary summarize_run(const fs::path& dir, const RunSpec& spec, bool steady, 
                                       (dir / file).string())
                         : fmt::format("; {}{} (a drift of {} resolved); {} holds the second half's averages", what,
                                       not_reached, fmt::join(st.monitored, ", "), (dir / file).string());
-    if (!steady && !quiet) { // the headline numbers of the scaled state, last on stderr
+    if (!steady) { // the headline numbers of the scaled state, last on stderr
         std::vector<std::string> parts;
         for (const SteadyValue& v : st.values)
             if (std::find(st.monitored.begin(), st.monitored.end(), v.name) != st.monitored.end())
