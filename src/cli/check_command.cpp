@@ -1,10 +1,12 @@
 // roughgas check CASE.toml [--set KEY=VALUE]... : parse and validate only, writing nothing. For a
 // run, the same planning as `roughgas run` (run/setup.hpp: the spec, initial.from's state files, the
 // memory of the replicas held at a time on this machine's threads), so that check refuses what run
-// would refuse before any work; the output directory and the tables are run's alone.
+// would refuse before any work, and the warnings run would give at its set-up (run/setup_warnings.hpp)
+// on stderr; the output directory and the tables are run's alone.
 #include "commands.hpp"
 #include "linear_stability.hpp"
 #include "run/setup.hpp"
+#include "run/setup_warnings.hpp"
 
 #include "roughgas/io/case_file.hpp"
 
@@ -26,12 +28,14 @@ struct CheckOptions {
 int run_check(const CheckOptions& o) {
     const CaseConfig cfg = load_case(o.case_file, o.sets, o.use); // throws InputError: exit 2
     std::optional<std::string> stability;
+    std::vector<std::string> warnings = cfg.unused;
     if (o.use == CaseUse::run) {
         const CasePlan plan = plan_run(cfg, o.case_file, 0, cfg.run.replicas);
         stability = linear_stability_note(plan.spec);
+        warnings = setup_warnings(cfg, plan.spec);
     }
-    for (const std::string& u : cfg.unused)
-        std::cerr << o.case_file << ": warning: " << u << '\n';
+    for (const std::string& w : warnings)
+        std::cerr << o.case_file << ": warning: " << w << '\n';
     if (o.print) {
         std::cout << emit_case(cfg);
     } else {

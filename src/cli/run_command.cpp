@@ -60,25 +60,27 @@ int run_run(const RunOptions& o, const Communicator& comm) {
                                   : "stopping at the next step, writing a checkpoint and the CSV so far",
                               !comm.under_launcher());
     const bool root = comm.is_root();
-    const bool quiet = o.quiet || !root; // the progress and the report are rank 0's
+    // The messages are rank 0's; --quiet leaves out the progress line alone, never a warning or the
+    // headline of the result.
+    const bool quiet = o.quiet || !root;
 
     // 1. Set-up: the case or checkpoint, the spec, the output directory, the memory, the tables.
     const std::unique_ptr<RunSetup> setup = set_up_run(o, comm);
     const RunSpec& spec = setup->spec;
     const ReplicaRange& range = setup->replicas;
-    if (!quiet)
+    if (root)
         report_contact_range(setup->cfg);
 
     // 2. Outputs: what the files say of the run, and their writers.
     const MomentsTable table(spec);
-    const RunProvenance provenance = run_provenance(*setup, table, quiet, root);
+    const RunProvenance provenance = run_provenance(*setup, table, root);
     RunFiles files;
     if (root) {
-        files.moments.emplace(setup->dir, spec, provenance, quiet);
+        files.moments.emplace(setup->dir, spec, provenance);
         if (!spec.histogram_times.empty())
             files.histograms.emplace(setup->dir, spec, provenance);
     }
-    if (!quiet)
+    if (root)
         report_tables(*setup);
     // Rank 0 prepares the directory; the other ranks' replica files come after its run.bin (several
     // ranks write one at a stop even without --checkpoint-every: theirs must belong to a resumable run).
@@ -139,7 +141,7 @@ int run_run(const RunOptions& o, const Communicator& comm) {
 
     // 5. The summary and the report.
     const RunSummary summary =
-        summarize_run(setup->dir, spec, driven(setup->cfg), *files.moments, provenance, quiet);
+        summarize_run(setup->dir, spec, driven(setup->cfg), *files.moments, provenance);
     report_run(files, records, table, spec, scheduler.seconds(), summary);
     return exit_ok;
 }
@@ -159,7 +161,7 @@ Subcommand add_run_command(CLI::App& parent, const Communicator& comm) {
            "--threads", o->threads,
            "threads for the replicas and within each replica (default: the CPUs this process may use; results do not depend on it)")
         ->check(positive());
-    app->add_flag("--quiet", o->quiet, "no progress output");
+    app->add_flag("--quiet", o->quiet, "no progress line (warnings and the result's lines still print)");
     CLI::Option* force = app->add_flag(
         "--force", o->force, "overwrite the CSVs and checkpoint of an earlier run in the output directory");
     app->add_option("--checkpoint-every", o->checkpoint_every,

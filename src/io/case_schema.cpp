@@ -130,7 +130,9 @@ std::vector<Key> keys() {
             .unit("1/length^3")
             .fallback(1.0)
             .gt(0)
-            .doc("number density n of the gas (sets the time scale)"),
+            .doc("number density n of all the grains (species s: its fraction x n; sets the time scale); their solid "
+                 "fraction phi = sum_s x_s n (pi/6) (2 R_s)^3 must be below pi/sqrt(18) = 0.7405 (dilute: phi "
+                 "below 0.0193, else a warning)"),
         Key("run.replicas", T::integer)
             .fallback(std::int64_t{1})
             .ge(1)

@@ -82,7 +82,7 @@ std::string shear() {
 std::string rough_mixture() {
     return "[run]\nparticles = 10000\nend = 30.0\noutput_every = 0.5\noutput_spacing = \"log\"\nreplicas = "
            "2\n"
-           "seed = 2\nhistogram_every = 10.0\nhistogram_bins = 16\n\n"
+           "seed = 2\ndensity = 0.002\nhistogram_every = 10.0\nhistogram_bins = 16\n\n"
            "[[species]]\nname = \"small\"\nmass = 1.0\nradius = 0.5\nfraction = 0.5\n\n"
            "[[species]]\nname = \"large\"\nmass = 8.0\nradius = 1.0\nfraction = 0.5\n\n"
            "[collision]\nmodel = \"constant\"\nalpha = 0.9\nbeta = 0.5\n\n"

@@ -36,6 +36,7 @@ std::string constant_case(double alpha, double beta, int particles = 2000, doubl
 std::string mixture_case() {
     return R"([run]
 particles = 2000
+density = 0.01
 end = 3.0
 replicas = 2
 
@@ -113,7 +114,9 @@ TEST(RunCli, WritesMomentsWithHeaderUnitsAndTheory) {
     const fs::path out = dir / "out";
     const test::CommandResult r = run_roughgas(run_args(f, out, "--quiet"), dir);
     ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_TRUE(r.err.empty()) << r.err; // --quiet: no progress line
+    // --quiet: no progress line, but the headline of the result (and the dense gas's warning: n = 1).
+    EXPECT_EQ(r.err.find("collisions/s"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("roughgas run: scaled state"), std::string::npos) << r.err;
     EXPECT_NE(r.out.find("wrote"), std::string::npos) << r.out;
     const Moments m = read_moments(out / "moments.csv");
     const std::vector<std::string> expected = {"t",
@@ -595,7 +598,7 @@ namespace {
 // CSV header; a case without them reports nothing.
 TEST(RunCli, WarnsOfKeysAndTablesTheRunDoesNotUse) {
     const test::ScratchDir dir;
-    const std::string base = "[run]\nparticles = 2000\nend = 1.0\n\n[[species]]\nmass = 1.0\nradius = 0.5\n\n"
+    const std::string base = "[run]\nparticles = 2000\nend = 1.0\ndensity = 0.01\n\n[[species]]\nmass = 1.0\nradius = 0.5\n\n"
                              "[collision]\nmodel = \"constant\"\nalpha = 0.9\nbeta = 0.4\n";
     const fs::path f = dir.write("unused.toml", base + "beta0 = 0.3\n\n[shear]\nrate = 1.0\n");
     const test::CommandResult c = test::run_roughgas("check '" + f.string() + "'", dir);
@@ -610,6 +613,43 @@ TEST(RunCli, WarnsOfKeysAndTablesTheRunDoesNotUse) {
     const fs::path g = dir.write("clean.toml", base);
     const test::CommandResult k = test::run_roughgas("check '" + g.string() + "'", dir);
     EXPECT_EQ(k.err.find("warning"), std::string::npos) << k.err;
+}
+
+// A gas of solid fraction phi = 0.2 (n = 0.382, sigma = 1) collides chi = 1.76 times as often as the
+// Boltzmann equation says (Carnahan & Starling 1969): a warning on check's and run's stderr, once
+// each, also with --quiet, and in moments.csv's header; at phi = 0.0052 (n = 0.01) chi - 1 = 1.3 %
+// and none.
+TEST(RunCli, WarnsOfADenseGas) {
+    const test::ScratchDir dir;
+    const std::string base = "[run]\nparticles = 2000\nend = 1.0\ndensity = 0.01\n\n[[species]]\nmass = 1.0\n"
+                             "radius = 0.5\n\n[collision]\nmodel = \"constant\"\nalpha = 0.9\nbeta = 0.4\n";
+    const std::string warning = "warning: solid fraction phi = 0.2 (run.density = 0.382)";
+    const auto count = [](const std::string& text, const std::string& what) {
+        std::size_t n = 0;
+        for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+            ++n;
+        return n;
+    };
+    const fs::path f = dir.write("dense.toml", replaced(base, "density = 0.01", "density = 0.382"));
+    const test::CommandResult c = test::run_roughgas("check '" + f.string() + "'", dir);
+    EXPECT_EQ(c.status, 0) << c.err;
+    EXPECT_EQ(count(c.err, warning), 1u) << c.err;
+    EXPECT_NE(c.err.find("chi = 1.76"), std::string::npos) << c.err;
+    EXPECT_NE(c.err.find("Enskog equation, which roughgas does not solve"), std::string::npos) << c.err;
+    const test::CommandResult r =
+        test::run_roughgas("run '" + f.string() + "' --quiet --out '" + (dir / "out").string() + "'", dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(count(r.err, warning), 1u) << r.err;
+    EXPECT_EQ(count(test::read_file(dir / "out" / "moments.csv"), "# " + warning), 1u);
+    const fs::path g = dir.write("dilute.toml", base);
+    const test::CommandResult k = test::run_roughgas("check '" + g.string() + "'", dir);
+    EXPECT_EQ(k.status, 0) << k.err;
+    EXPECT_EQ(k.err.find("solid fraction"), std::string::npos) << k.err;
+    const test::CommandResult d =
+        test::run_roughgas("run '" + g.string() + "' --quiet --out '" + (dir / "dilute").string() + "'", dir);
+    ASSERT_EQ(d.status, 0) << d.err;
+    EXPECT_EQ(d.err.find("solid fraction"), std::string::npos) << d.err;
+    EXPECT_EQ(test::read_file(dir / "dilute" / "moments.csv").find("solid fraction"), std::string::npos);
 }
 
 } // namespace

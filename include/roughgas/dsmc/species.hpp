@@ -5,6 +5,7 @@
 #include "roughgas/dsmc/run_spec.hpp"
 #include "roughgas/observables/moments.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -51,6 +52,37 @@ std::vector<PairType> make_pair_types(const std::vector<SpeciesBlock>& species);
 inline double mean_free_path(double density, double sigma) {
     return 1.0 / (std::sqrt(2.0) * std::numbers::pi * density * sigma * sigma);
 }
+
+// The largest diameter 2 max R of the species (of the case or of the run): the one the cells and the
+// mean free path of a mixture are measured against.
+template <class Species> double largest_diameter(const std::vector<Species>& species) {
+    double R = 0;
+    for (const Species& s : species)
+        R = std::max(R, s.radius);
+    return 2 * R;
+}
+
+// The solid fraction phi = sum_s n_s (pi/6) sigma_s^3 of grains at the number density n
+// (run.density: all the grains, of every species), species s holding the number fraction x_s
+// (n_s = x_s n, fractions normalised) with diameter sigma_s = 2 R_s.
+template <class Species> double solid_fraction(double density, const std::vector<Species>& species) {
+    double total = 0, volume = 0;
+    for (const Species& s : species) {
+        total += s.fraction;
+        volume += s.fraction * std::numbers::pi / 6.0 * 8.0 * s.radius * s.radius * s.radius;
+    }
+    return total > 0 ? density * volume / total : 0.0;
+}
+
+// The densest packing of equal spheres, pi/sqrt(18) (Kepler's conjecture, proved by Hales 2005): no
+// gas of hard spheres reaches it.
+inline constexpr double close_packing = 0.74048048969306104;
+
+// The pair correlation at contact of hard spheres at the solid fraction phi, (1 - phi/2)/(1 - phi)^3
+// (Carnahan & Starling 1969): the Enskog factor by which every collision rate exceeds the dilute
+// gas's. For a mixture, that of its total phi: its own factors differ from pair to pair (Mansoori,
+// Carnahan, Starling & Leland 1971), around this one, which is what a warning needs.
+inline double enskog_chi(double phi) { return (1 - phi / 2) / ((1 - phi) * (1 - phi) * (1 - phi)); }
 
 // The Maxwellian collision frequency per grain at the species' temperatures (T_over_m[s] = T_tr,s/m_s):
 // nu = (2/N) sum_ab P_ab pi sigma_ab^2 <g_ab>/V, <g_ab> = sqrt((8/pi)(T_a/m_a + T_b/m_b)). The engine's

@@ -1,6 +1,7 @@
 #include "run/moments_files.hpp"
 
 #include "run/output_files.hpp"
+#include "run/setup_warnings.hpp"
 
 #include <iostream>
 #include <span>
@@ -20,8 +21,8 @@ std::optional<CsvWriter> box_csv(const std::vector<Column>& columns, const RunPr
 
 } // namespace
 
-MomentsFiles::MomentsFiles(fs::path dir, const RunSpec& spec, const RunProvenance& provenance, bool quiet)
-    : dir_(std::move(dir)), path_(dir_ / moments_file), table_(spec), quiet_(quiet),
+MomentsFiles::MomentsFiles(fs::path dir, const RunSpec& spec, const RunProvenance& provenance)
+    : dir_(std::move(dir)), path_(dir_ / moments_file), table_(spec),
       csv_(table_.names(), provenance.csv),
       walls_(box_csv(
           table_.wall_table_columns(), provenance,
@@ -51,7 +52,7 @@ MomentsFiles::MomentsFiles(fs::path dir, const RunSpec& spec, const RunProvenanc
           "density (q = 1), of the flow velocity (mass-weighted) and of the kinetic temperature relative to its "
           "mean, x_j the centre of grain j's cell: a wave A sin(k x) has the amplitude -i A sinc(k Delta/2), Delta the "
           "cell edge (observables/spectra.hpp)")),
-      resolution_(table_.names()), last_write_(std::chrono::steady_clock::now() - std::chrono::hours(1)) {}
+      resolution_(table_.names(), spec.domain ? cells_over_mean_free_path(spec) : 0.0), last_write_(std::chrono::steady_clock::now() - std::chrono::hours(1)) {}
 
 void MomentsFiles::update(const std::vector<std::vector<std::vector<double>>>& rows, bool now) {
     std::size_t complete = rows[0].size();
@@ -67,8 +68,7 @@ void MomentsFiles::update(const std::vector<std::vector<std::vector<double>>>& r
             csv_.add_note(note);
             if (profiles_)
                 profiles_->add_note(note);
-            if (!quiet_)
-                std::cerr << "roughgas run: " << note << '\n';
+            std::cerr << "roughgas run: " << note << '\n';
         }
         if (walls_)
             walls_->add_row(table_.combine_walls(spans));

@@ -27,7 +27,7 @@ class MomentsFiles {
   public:
     // `spec`: the run's (the files combine its replicas' rows with a MomentsTable of their own, which
     // integrates the theory columns from row to row).
-    MomentsFiles(std::filesystem::path dir, const RunSpec& spec, const RunProvenance& provenance, bool quiet);
+    MomentsFiles(std::filesystem::path dir, const RunSpec& spec, const RunProvenance& provenance);
 
     // Combines the rows every replica has (rows[r][k]: replica r's row k) beyond those combined
     // already, then rewrites the files if `now` or the batching rule allows.
@@ -49,7 +49,6 @@ class MomentsFiles {
   private:
     std::filesystem::path dir_, path_;
     MomentsTable table_;
-    bool quiet_;
     CsvWriter csv_;
     std::optional<CsvWriter> walls_, profiles_, spectra_, modes_;
     ResolutionWatch resolution_;

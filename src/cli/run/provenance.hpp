@@ -17,8 +17,8 @@ struct RunProvenance {
     std::string box_note; // the box's description, also in walls.csv and profiles.csv ("" without a box)
 };
 
-// `quiet`: the notes on stderr left out (the warnings of unused keys are rank 0's, `root`).
-RunProvenance run_provenance(const RunSetup& setup, const MomentsTable& table, bool quiet, bool root);
+// The notes and the set-up's warnings (run/setup_warnings.hpp) go to stderr from rank 0 (`root`).
+RunProvenance run_provenance(const RunSetup& setup, const MomentsTable& table, bool root);
 
 // The provenance of another file of the run: `what` it holds first, then the replicas, the units,
 // and the box.

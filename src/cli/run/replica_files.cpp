@@ -1,5 +1,7 @@
 #include "run/replica_files.hpp"
 
+#include "run/setup_warnings.hpp"
+
 #include <fmt/format.h>
 
 #include <stdexcept>
@@ -30,7 +32,7 @@ ReplicaFiles::ReplicaFiles(fs::path run_dir, const RunSpec& spec, const CsvProve
                                  r, spec.replicas);
         p.units = table.units();
         CsvWriter csv(table.names(), p);
-        ResolutionWatch resolution(table.names());
+        ResolutionWatch resolution(table.names(), spec.domain ? cells_over_mean_free_path(spec) : 0.0);
         files_.emplace_back(File{std::move(table), std::move(csv), std::move(resolution), 0,
                                  std::chrono::steady_clock::now() - std::chrono::hours(1), {}});
     }

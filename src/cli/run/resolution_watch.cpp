@@ -18,13 +18,15 @@ std::optional<std::size_t> column(const std::vector<std::string>& names, const c
 
 } // namespace
 
-ResolutionWatch::ResolutionWatch(const std::vector<std::string>& names)
+ResolutionWatch::ResolutionWatch(const std::vector<std::string>& names, double setup_ratio)
     : t_(column(names, "t")), coll_per_particle_(column(names, "coll_per_particle")) {
+    // The set-up warns above 0.5 (and says when above 1): the thresholds left to watch.
+    const double threshold = setup_ratio > 1 ? HUGE_VAL : setup_ratio > 0.5 ? 1.0 : 0.5;
     const auto slabs = column(names, "cell_over_lambda");
     if (slabs)
-        watched_.push_back({*slabs, "cell_over_lambda", "the densest slab", std::nullopt});
+        watched_.push_back({*slabs, "cell_over_lambda", "the densest slab", std::nullopt, threshold});
     if (const auto c = column(names, "cell_over_lambda_cells"))
-        watched_.push_back({*c, "cell_over_lambda_cells", "the densest cell", slabs});
+        watched_.push_back({*c, "cell_over_lambda_cells", "the densest cell", slabs, threshold});
 }
 
 std::vector<std::string> ResolutionWatch::notes(std::span<const double> row) {

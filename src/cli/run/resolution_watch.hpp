@@ -5,7 +5,9 @@
 // run goes on, and a cluster can do so in a few cells while its slab's mean stays resolved. For
 // each, the first row past 0.5 local mean free paths gives a warning (in gradients the viscosity
 // comes out too large by about 16/(45 pi) (edge/lambda)^2), the first past 1 another (the cells no
-// longer resolve the gas there). One watch per file that carries the warnings: the ensemble's
+// longer resolve the gas there). What the set-up warned of already (run/setup_warnings.hpp: the
+// box's cells against the mean free path at the mean density) is not said again: the first row's
+// slabs read that ratio and its noise. One watch per file that carries the warnings: the ensemble's
 // moments.csv and profiles.csv, and each replica's own moments_R.csv.
 #include <optional>
 #include <span>
@@ -17,7 +19,9 @@ namespace roughgas::cli {
 class ResolutionWatch {
   public:
     // `names`: the columns of the rows to watch; without cell_over_lambda (not a box run) it never warns.
-    explicit ResolutionWatch(const std::vector<std::string>& names);
+    // `setup_ratio`: the cells over the mean free path the set-up warned of (cells_over_mean_free_path),
+    // whose thresholds are passed already.
+    ResolutionWatch(const std::vector<std::string>& names, double setup_ratio);
     // The warnings this row brings (none, one, or both at once), each once per run.
     std::vector<std::string> notes(std::span<const double> row);
 

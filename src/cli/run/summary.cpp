@@ -117,7 +117,7 @@ void write_summary_csv(const fs::path& dir, bool steady, const SteadyResult& st,
 }
 
 RunSummary summarize_run(const fs::path& dir, const RunSpec& spec, bool steady, const MomentsFiles& files,
-                         const RunProvenance& provenance, bool quiet) {
+                         const RunProvenance& provenance) {
     const MomentsTable& table = files.table();
     const std::vector<std::string> names = table.names();
     const std::vector<std::vector<double>>& all_rows = files.combined();
@@ -166,19 +166,16 @@ RunSummary summarize_run(const fs::path& dir, const RunSpec& spec, bool steady, 
                  : std::string();
     if (!none.empty()) {
         s.note = fmt::format("; no scaled state: {}; {} holds the second half's averages", none, path);
-        if (!quiet) {
-            const std::vector<double>& last = all_rows.back();
-            std::vector<std::string> parts;
-            for (const std::string& m : st.monitored)
-                if (const auto j = static_cast<std::size_t>(std::find(names.begin(), names.end(), m) - names.begin());
-                    j < names.size())
-                    parts.push_back(fmt::format("{} = {:.5g}", m, last[j]));
-            s.headline = !cools(spec)
-                             ? fmt::format("roughgas run: no scaled state: {}; {}\n", none, averages())
-                             : fmt::format("roughgas run: no scaled state: {}; the last row ({:.4g} collisions per "
-                                           "particle): {}\n",
-                                           none, last[cpp], fmt::join(parts, ", "));
-        }
+        const std::vector<double>& last = all_rows.back();
+        std::vector<std::string> parts;
+        for (const std::string& m : st.monitored)
+            if (const auto j = static_cast<std::size_t>(std::find(names.begin(), names.end(), m) - names.begin());
+                j < names.size())
+                parts.push_back(fmt::format("{} = {:.5g}", m, last[j]));
+        s.headline = !cools(spec) ? fmt::format("roughgas run: no scaled state: {}; {}\n", none, averages())
+                                  : fmt::format("roughgas run: no scaled state: {}; the last row ({:.4g} collisions "
+                                                "per particle): {}\n",
+                                                none, last[cpp], fmt::join(parts, ", "));
         return s;
     }
     s.note = st.reached ? fmt::format("; scaled state from {:.4g} collisions per particle ({} rows averaged{}): {}",
@@ -186,12 +183,12 @@ RunSummary summarize_run(const fs::path& dir, const RunSpec& spec, bool steady, 
                         : fmt::format("; scaled state NOT reached (a drift of {} resolved{}); {} holds the second "
                                       "half's averages",
                                       fmt::join(st.monitored, ", "), drift_text(st), path);
-    if (!quiet) // the headline numbers of the scaled state, last on stderr
-        s.headline = fmt::format("roughgas run: scaled state{}: {}\n",
-                                 st.reached ? fmt::format(" from {:.4g} collisions per particle{}",
-                                                          rows[st.first_row][cpp], until)
-                                            : std::string(" NOT reached; the second half's averages"),
-                                 averages());
+    // The headline numbers of the scaled state, last on stderr.
+    s.headline = fmt::format("roughgas run: scaled state{}: {}\n",
+                             st.reached ? fmt::format(" from {:.4g} collisions per particle{}", rows[st.first_row][cpp],
+                                                      until)
+                                        : std::string(" NOT reached; the second half's averages"),
+                             averages());
     return s;
 }
 

@@ -25,11 +25,11 @@ void write_summary_csv(const std::filesystem::path& dir, bool steady, const Stea
 // What `roughgas run` says of its summary.
 struct RunSummary {
     std::string note;     // the end of the report line on stdout ("; scaled state from ...: DIR/scaled.csv")
-    std::string headline; // the scaled state's numbers, last on stderr ("" for a steady state or when quiet)
+    std::string headline; // the scaled state's numbers, last on stderr ("" for a steady state)
 };
 
 // The summary of a run's ensemble (rank 0, every replica finished): its files, and what to say.
 RunSummary summarize_run(const std::filesystem::path& dir, const RunSpec& spec, bool steady, const MomentsFiles& files,
-                         const RunProvenance& provenance, bool quiet);
+                         const RunProvenance& provenance);
 
 } // namespace roughgas::cli

@@ -16,10 +16,7 @@ namespace {
 // The shortest mean free path of the gas, 1/(sqrt(2) pi n sigma^2) with the largest diameter
 // sigma = 2 max R: the length the cells must resolve.
 double mean_free_path(const CaseConfig& c) {
-    double R = 0;
-    for (const SpeciesConfig& s : c.species)
-        R = std::max(R, s.radius);
-    return roughgas::mean_free_path(c.run.density, 2 * R);
+    return roughgas::mean_free_path(c.run.density, largest_diameter(c.species));
 }
 
 } // namespace

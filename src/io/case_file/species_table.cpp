@@ -1,7 +1,10 @@
-// [[species]]: its build (the mass given or from the density), its checks and its emission.
+// [[species]]: its build (the mass given or from the density), its checks (with the solid fraction the
+// radii fill at run.density) and its emission.
 #include "species_table.hpp"
 
 #include "messages.hpp"
+
+#include "roughgas/dsmc/species.hpp"
 
 #include <fmt/format.h>
 
@@ -24,6 +27,23 @@ double mass(BuildContext& ctx, const Reader& r, const SpeciesConfig& s) {
         return 0;
     }
     return 4.0 / 3.0 * std::numbers::pi * s.radius * s.radius * s.radius * *s.density;
+}
+
+// run.density with the radii and fractions fills the solid fraction phi = sum_s x_s n (pi/6) sigma_s^3
+// (dsmc/species.hpp): at or beyond the densest packing of equal spheres no gas exists, dilute or
+// dense, and the Boltzmann collision rate of such a case would describe nothing (docs/model.md §4).
+void check_packing(BuildContext& ctx, const CaseConfig& c) {
+    for (const SpeciesConfig& s : c.species)
+        if (!(s.radius > 0 && s.fraction >= 0))
+            return; // refused elsewhere
+    const double phi = solid_fraction(c.run.density, c.species);
+    if (phi >= close_packing)
+        ctx.add("run.density",
+                fmt::format("run.density = {}: the grains fill the solid fraction phi = {:.4g} (the sum over the "
+                            "species of fraction x n (pi/6) (2 R)^3), at or beyond the densest packing of equal spheres, "
+                            "pi/sqrt(18) = {:.4f}: no gas (must give phi < {:.4f}; a Boltzmann gas is dilute, "
+                            "phi of order 0.01 or less)",
+                            c.run.density, phi, close_packing, close_packing));
 }
 
 } // namespace
@@ -61,6 +81,8 @@ void check_species(BuildContext& ctx, const CaseConfig& c) {
                                 c.run.particles, s.name, s.fraction, std::ceil(1 / s.fraction)));
         }
     }
+    if (ctx.use() == CaseUse::run)
+        check_packing(ctx, c);
     if (!c.species.empty() && std::abs(sum - 1) > 1e-9) {
         ctx.add("species.fraction",
                 fmt::format("species.fraction: the fractions sum to {}, must sum to 1 (within "
