@@ -52,7 +52,8 @@ MomentsFiles::MomentsFiles(fs::path dir, const RunSpec& spec, const RunProvenanc
           "density (q = 1), of the flow velocity (mass-weighted) and of the kinetic temperature relative to its "
           "mean, x_j the centre of grain j's cell: a wave A sin(k x) has the amplitude -i A sinc(k Delta/2), Delta the "
           "cell edge (observables/spectra.hpp)")),
-      resolution_(table_.names(), spec.domain ? cells_over_mean_free_path(spec) : 0.0), last_write_(std::chrono::steady_clock::now() - std::chrono::hours(1)) {}
+      resolution_(table_.names(), spec.domain ? cells_over_mean_free_path(spec) : 0.0),
+      last_write_(std::chrono::steady_clock::now() - std::chrono::hours(1)) {}
 
 void MomentsFiles::update(const std::vector<std::vector<std::vector<double>>>& rows, bool now) {
     std::size_t complete = rows[0].size();

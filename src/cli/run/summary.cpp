@@ -82,8 +82,8 @@ std::optional<NonUniformity> non_uniform_row(const MomentsFiles& files, int repl
         return std::nullopt;
     const std::vector<Column>& c = files.table().spectra_table_columns();
     const auto col = [&](const char* name) {
-        return static_cast<std::size_t>(std::find_if(c.begin(), c.end(), [&](const Column& x) { return x.name == name; }) -
-                                        c.begin());
+        const auto named = [&](const Column& x) { return x.name == name; };
+        return static_cast<std::size_t>(std::find_if(c.begin(), c.end(), named) - c.begin());
     };
     const std::size_t axis = col("axis"), n = col("n"), modes = col("n_modes"), S = col("S");
     std::vector<double> s, m;
@@ -121,7 +121,8 @@ RunSummary summarize_run(const fs::path& dir, const RunSpec& spec, bool steady, 
     const MomentsTable& table = files.table();
     const std::vector<std::string> names = table.names();
     const std::vector<std::vector<double>>& all_rows = files.combined();
-    const auto cpp = static_cast<std::size_t>(std::find(names.begin(), names.end(), "coll_per_particle") - names.begin());
+    const auto cpp =
+        static_cast<std::size_t>(std::find(names.begin(), names.end(), "coll_per_particle") - names.begin());
     // A cooling box holds a scaled homogeneous state only while it is uniform: the window ends
     // before the first row whose density fluctuations a uniform gas does not make.
     const std::optional<NonUniformity> clusters = steady ? std::nullopt : non_uniform_row(files, spec.replicas);

@@ -72,8 +72,9 @@ void print_sweep_table(const SweepPoints& points, const std::vector<PointResult>
         const auto cpp = std::find(results[k].names.begin(), results[k].names.end(), "coll_per_particle") -
                          results[k].names.begin();
         table += fmt::format("roughgas sweep: {:>12.6g} {:>7}", points.values[k],
-                             st.reached ? fmt::format("{:.3g}", results[k].rows[st.first_row][static_cast<std::size_t>(cpp)])
-                                        : std::string("none"));
+                             st.reached
+                                 ? fmt::format("{:.3g}", results[k].rows[st.first_row][static_cast<std::size_t>(cpp)])
+                                 : std::string("none"));
         for (const std::string& h : headline)
             for (const SteadyValue& v : st.values)
                 if (v.name == h)
