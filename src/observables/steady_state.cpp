@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 
 namespace roughgas {
 namespace {
@@ -15,6 +16,19 @@ std::string fmt_drift(const std::string& name, double first, double second) {
     char text[160];
     std::snprintf(text, sizeof text, "%s from %.3g to %.3g", name.c_str(), first, second);
     return text;
+}
+
+// The means of B consecutive batches of equal length of x (1 <= B <= x.size()), the first
+// x.size() % B values left out so that every batch has the same weight.
+std::vector<double> batch_means(std::span<const double> x, std::size_t B) {
+    const std::size_t len = x.size() / B, skip = x.size() - len * B;
+    std::vector<double> m(B, 0.0);
+    for (std::size_t b = 0; b < B; ++b) {
+        for (std::size_t k = 0; k < len; ++k)
+            m[b] += x[skip + b * len + k];
+        m[b] /= static_cast<double>(len);
+    }
+    return m;
 }
 
 std::size_t index_of(const std::vector<std::string>& names, const std::string& n) {
@@ -32,13 +46,7 @@ SteadyValue batch_mean(std::span<const double> x, int batches) {
         v.mean = v.err = nan;
         return v;
     }
-    const std::size_t skip = x.size() - len * B;
-    std::vector<double> m(B, 0.0);
-    for (std::size_t b = 0; b < B; ++b) {
-        for (std::size_t k = 0; k < len; ++k)
-            m[b] += x[skip + b * len + k];
-        m[b] /= static_cast<double>(len);
-    }
+    const std::vector<double> m = batch_means(x, B);
     double mean = 0;
     for (double y : m)
         mean += y;
@@ -55,13 +63,7 @@ double trend_in_errors(std::span<const double> x, int batches) {
     const std::size_t B = std::min(static_cast<std::size_t>(std::max(batches, 1)), x.size());
     if (B < 3)
         return nan;
-    const std::size_t len = x.size() / B, skip = x.size() - len * B;
-    std::vector<double> m(B, 0.0);
-    for (std::size_t b = 0; b < B; ++b) {
-        for (std::size_t k = 0; k < len; ++k)
-            m[b] += x[skip + b * len + k];
-        m[b] /= static_cast<double>(len);
-    }
+    const std::vector<double> m = batch_means(x, B);
     // Least squares against the batch index b - (B - 1)/2 (centred: slope and mean independent).
     const double centre = 0.5 * static_cast<double>(B - 1);
     double mean = 0, sxx = 0, sxy = 0;
@@ -104,19 +106,23 @@ SteadyResult find_steady_state(const std::vector<std::string>& names,
     const int half_batches = std::max(2, o.batches / 2);
     // Row 0 is the initial state (its rates are undefined): never part of the window.
     std::size_t k0 = std::min<std::size_t>(1, n);
-    std::string drift; // of the window tried last, the quantity that failed
+    // Of the window tried last: the monitored column that failed and its halves' means.
+    struct Failed {
+        std::size_t column;
+        double first, second;
+    };
+    std::optional<Failed> failed;
     const std::size_t stride = std::max<std::size_t>(1, n / 100);
     const auto last_start = static_cast<std::size_t>(o.max_start * static_cast<double>(n));
     for (; k0 + std::max<std::size_t>(o.min_rows, 4) <= n && k0 <= last_start; k0 += stride) {
         const std::size_t mid = k0 + (n - k0) / 2;
         bool steady = true;
-        drift.clear();
         for (std::size_t j : mon) {
             const std::vector<double> a = series(j, k0, mid), b = series(j, mid, n);
             const SteadyValue A = batch_mean(a, half_batches), B = batch_mean(b, half_batches);
             if (!std::isfinite(A.mean) && !std::isfinite(B.mean))
                 continue; // undefined throughout (e.g. T_rot of smooth grains started without spin)
-            drift = fmt_drift(names[j], A.mean, B.mean);
+            failed = Failed{j, A.mean, B.mean}; // the column under test: named if the window fails
             // A drift through the whole window (it inflates B.err, which the halves' test divides by).
             if (const double t = trend_in_errors(series(j, k0, n), o.batches); std::abs(t) > o.trend_threshold) {
                 steady = false;
@@ -156,11 +162,11 @@ SteadyResult find_steady_state(const std::vector<std::string>& names,
         }
         if (steady) {
             r.reached = true;
-            drift.clear();
             break;
         }
     }
-    r.drift = drift;
+    if (!r.reached && failed)
+        r.drift = fmt_drift(names[failed->column], failed->first, failed->second);
     if (!r.reached)
         k0 = std::min(k0, n > 0 ? n / 2 : 0);
     r.first_row = k0;

@@ -3,6 +3,7 @@
 #include "run/output_files.hpp"
 #include "run/setup_warnings.hpp"
 
+#include <algorithm>
 #include <iostream>
 #include <span>
 
@@ -79,8 +80,12 @@ void MomentsFiles::update(const std::vector<std::vector<std::vector<double>>>& r
                 profiles_->add_row(r);
         }
         if (spectra_) {
-            spectra_blocks_.push_back(table_.combine_spectra(spans));
-            for (const std::vector<double>& r : spectra_blocks_.back())
+            const std::vector<std::vector<double>> block = table_.combine_spectra(spans);
+            // Columns t, coll_per_particle, axis, n, ...: the shells of |k| are axis 0.
+            const auto smallest = std::find_if(block.begin(), block.end(),
+                                               [](const std::vector<double>& r) { return r[2] == 0 && r[3] == 1; });
+            smallest_shells_.push_back(smallest == block.end() ? std::vector<double>{} : *smallest);
+            for (const std::vector<double>& r : block)
                 spectra_->add_row(r);
         }
         if (modes_)

@@ -41,8 +41,9 @@ class MomentsFiles {
     // The combined rows of moments.csv and, per row, the block of profiles.csv's rows.
     const std::vector<std::vector<double>>& combined() const { return combined_; }
     const std::vector<std::vector<std::vector<double>>>& profile_blocks() const { return profile_blocks_; }
-    // Per row, the block of spectra.csv's rows (empty without [spectra]).
-    const std::vector<std::vector<std::vector<double>>>& spectra_blocks() const { return spectra_blocks_; }
+    // Per row, spectra.csv's row of the smallest |k| shell (axis 0, n 1): what tells whether the box
+    // is still uniform (summary.hpp). Empty without [spectra].
+    const std::vector<std::vector<double>>& smallest_shells() const { return smallest_shells_; }
     bool has_profiles() const { return profiles_.has_value(); }
     const MomentsTable& table() const { return table_; }
 
@@ -53,7 +54,8 @@ class MomentsFiles {
     std::optional<CsvWriter> walls_, profiles_, spectra_, modes_;
     ResolutionWatch resolution_;
     std::vector<std::vector<double>> combined_;
-    std::vector<std::vector<std::vector<double>>> profile_blocks_, spectra_blocks_;
+    std::vector<std::vector<std::vector<double>>> profile_blocks_;
+    std::vector<std::vector<double>> smallest_shells_;
     std::size_t on_disk_ = 0;
     std::chrono::steady_clock::time_point last_write_;
     std::chrono::steady_clock::duration write_cost_{};

@@ -77,21 +77,19 @@ bool speed_dependent(const RunSpec& spec) {
 
 // The first row whose smallest shell's S a uniform gas does not reach (observables/uniformity.hpp).
 std::optional<NonUniformity> non_uniform_row(const MomentsFiles& files, int replicas) {
-    const std::vector<std::vector<std::vector<double>>>& blocks = files.spectra_blocks();
-    if (blocks.empty() || blocks.size() != files.combined().size())
+    const std::vector<std::vector<double>>& shells = files.smallest_shells();
+    if (shells.empty() || shells.size() != files.combined().size())
         return std::nullopt;
     const std::vector<Column>& c = files.table().spectra_table_columns();
     const auto col = [&](const char* name) {
         const auto named = [&](const Column& x) { return x.name == name; };
         return static_cast<std::size_t>(std::find_if(c.begin(), c.end(), named) - c.begin());
     };
-    const std::size_t axis = col("axis"), n = col("n"), modes = col("n_modes"), S = col("S");
+    const std::size_t modes = col("n_modes"), S = col("S");
     std::vector<double> s, m;
-    for (const std::vector<std::vector<double>>& block : blocks) {
-        const auto shell = std::find_if(block.begin(), block.end(),
-                                        [&](const std::vector<double>& r) { return r[axis] == 0 && r[n] == 1; });
-        s.push_back(shell == block.end() ? std::nan("") : (*shell)[S]);
-        m.push_back(shell == block.end() ? 0.0 : (*shell)[modes]);
+    for (const std::vector<double>& shell : shells) {
+        s.push_back(shell.empty() ? std::nan("") : shell[S]);
+        m.push_back(shell.empty() ? 0.0 : shell[modes]);
     }
     return first_non_uniform_row(s, m, replicas);
 }
