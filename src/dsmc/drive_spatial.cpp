@@ -18,6 +18,7 @@
 #include "roughgas/dsmc/spatial_engine.hpp"
 #include "roughgas/observables/densest_cell.hpp"
 #include "roughgas/observables/pressure.hpp"
+#include "roughgas/observables/thermal_temperature.hpp"
 
 #include <array>
 #include <chrono>
@@ -108,8 +109,11 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
     double edge = 0, sigma_max = 0; // the longest cell edge, the largest diameter
     for (std::size_t a = 0; a < 3; ++a)
         edge = std::max(edge, domain.size[a] / domain.cells[a]);
-    for (const SpeciesBlock& b : blocks)
+    std::vector<double> masses; // per species: T_th's mass weights
+    for (const SpeciesBlock& b : blocks) {
         sigma_max = std::max(sigma_max, 2 * b.grain.radius);
+        masses.push_back(b.grain.mass);
+    }
     profile_geometry.gravity = {domain.gravity[0], domain.gravity[1], domain.gravity[2]};
     std::optional<Spectra> spectra; // planned once per replica
     if (domain.spectra)
@@ -233,6 +237,7 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
                                                                                     engine.cell_sum_fields, S,
                                                                                     engine.cells(), spec.density),
                                                                sigma_max)));
+            row.push_back(thermal_temperature(engine.cell_sums(), engine.cell_sum_fields, masses));
             append_wall_columns(row, domain, engine.wall_fluxes(), walls_prev, spec.density, N,
                                 first ? std::numeric_limits<double>::quiet_NaN() : t - t_prev);
             walls_prev = engine.wall_fluxes();

@@ -253,6 +253,7 @@ std::vector<Column> dsmc_columns(const RunSpec& spec) {
     if (spec.domain) { // the cells' resolution of the densest slab, and of the densest cell
         c.push_back({"cell_over_lambda", "-"});
         c.push_back({"cell_over_lambda_cells", "-"});
+        c.push_back({"T_th", "energy"}); // about each cell's flow (observables/thermal_temperature.hpp)
     }
     return c;
 }
