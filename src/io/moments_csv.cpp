@@ -350,6 +350,16 @@ const std::map<std::string, std::string>& meanings() {
          "mean density, at least the mean (a uniform gas's noisiest cell reads as the mean, a cluster as "
          "nearly itself); with run.kernel = maxwell both paths are <v>/nu at the kernel's constant rate; run "
          "warns once it exceeds 0.5 and 1 where it exceeds cell_over_lambda by 5 %"},
+        {"T_th",
+         "box runs: the translational temperature about the local flow, each grain's velocity taken about its "
+         "collision cell's mass-weighted mean velocity U_c: sum over cells and their grains of m (v - U_c)^2 over "
+         "3 sum_c (N_c - 1) (cells of fewer than two grains count nothing; the N_c - 1 makes it unbiased at any "
+         "number of grains per cell). T_tr, about the box's mean velocity u, holds the flows the cells resolve (a "
+         "wave, a shear flow, vortices) besides: 3 N T_tr = 3 (N - C) T_th + sum_c M_c (U_c - u)^2 exactly, C the "
+         "occupied cells, M_c a cell's mass (a sheared box's T_tr is about the images' flow a (y - L_y/2) "
+         "instead). A flow varying within a cell stays in T_th (a shear rate a across cells of edge h adds "
+         "m a^2 h^2/36). Taken after the step's collisions, from the cells' sums; NaN when no cell holds two "
+         "grains"},
         {"u_wave", "box runs with an [initial] wave: its velocity amplitude, (2/N) sum of v.e sin(k.x) over the "
                    "grains (e: the transverse direction of a transverse wave, k/|k| for the other waves)"},
         {"n_wave", "box runs with an [initial] wave: the relative amplitude of the density wave, (2/N) sum of "
