@@ -18,7 +18,9 @@ bars at points without finite neighbours, e.g. a curve of one point). The panels
 that carry no information are left out, and a note under the panels says which: all-NaN or
 all-zero columns, measured columns constant to round-off (1e-12 relative), and, when T_rot (of the
 gas or of a species) is constant so (smooth grains: the spins never change), its T_rot, theta,
-T_rot ratios and, for the whole gas, a02, a11 and A_cw. The title gives the case's key parameters
+T_rot ratios and, for the whole gas, a02, a11 and A_cw. When T_rot changes by less than 10 % while
+T_tr falls tenfold or more (nearly smooth contacts, e.g. ice's small friction), a note says so and
+why theta grows. The title gives the case's key parameters
 from the CSV's header (case name, kind, N, replicas, restitution per pair, a mixture's species,
 the contact model's material); the axes carry the columns' units from the header's "# units:"
 line, in the symbols of its "unit system:" note when it has one (else the base names time,
@@ -129,6 +131,27 @@ def dashed(ax, x, y, logy, label, color):
     return True
 
 
+def spins_note(d, why):
+    """Why T_rot stays flat while T_tr falls, when it does: the rate at which collisions change the
+    spins' energy vanishes with 1 + beta (the tangential restitution near -1: nearly smooth
+    contacts), so a T_rot that changes by less than 10 % while T_tr falls tenfold or more means the
+    contacts hardly grip, and theta = T_rot/T_tr grows as T_tr falls. The note's lines; none otherwise
+    (nor for smooth grains, whose T_rot never changes: omitted() names them)."""
+    if "T_tr" not in d or "T_rot" not in d or "T_rot" in why:
+        return []
+    tr, rot = d["T_tr"], d["T_rot"]
+    ok = np.isfinite(tr) & np.isfinite(rot) & (tr > 0) & (rot > 0)
+    if ok.sum() < 2:
+        return []
+    tr, rot = tr[ok], rot[ok]
+    fall = tr[0] / tr[-1]
+    change = abs(rot[-1] / rot[0] - 1)
+    if fall < 10 or change > 0.1:
+        return []
+    return ["T_rot changes by %.2g %% while T_tr falls %.2g-fold: the contacts hardly grip the spins" % (100 * change, fall),
+            "(tangential restitution near \u22121: nearly smooth), so \u03b8 = T_rot/T_tr grows as T_tr falls"]
+
+
 def panels_of(d, species):
     """The panels and their curves: (key, [(column, color, label or None)]); the theory of a
     column, NAME_theory, is drawn dashed in its color."""
@@ -195,6 +218,7 @@ def plot(csv_path, out_path, x_col="coll", logx=None):
             if c in d and c in why:
                 left_out.setdefault(why[c], []).append(c)
     notes += ["not drawn (%s): %s" % (reason, ", ".join(cs)) for reason, cs in left_out.items()]
+    notes += spins_note(d, why)
     foot = 0.17 * len(notes)  # inches of the notes under the panels and of the title above them
     head = 0.17 * len(title) + 0.1
     height = 2.5 * n + 0.6 + foot + head

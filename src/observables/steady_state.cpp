@@ -1,6 +1,7 @@
 #include "roughgas/observables/steady_state.hpp"
 
 #include <algorithm>
+#include <boost/math/distributions/fisher_f.hpp>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -33,6 +34,80 @@ std::vector<double> batch_means(std::span<const double> x, std::size_t B) {
 
 std::size_t index_of(const std::vector<std::string>& names, const std::string& n) {
     return static_cast<std::size_t>(std::find(names.begin(), names.end(), n) - names.begin());
+}
+
+// Least squares of ln(rows[k][of]) against rows[k][against], k in [from, to): the straight line's
+// slope and the sum of squared (centred) abscissae, and the residual sum of squares about a
+// parabola (a rate that drifts bends the line; the parabola keeps the bend out of the noise
+// estimate). NaN slope when a value is not finite or not positive, or the abscissae coincide.
+struct LogLine {
+    double slope = nan, sxx = nan, rss_parabola = nan;
+    std::size_t points = 0;
+};
+LogLine fit_log_line(const std::vector<std::vector<double>>& rows, std::size_t of, std::size_t against,
+                     std::size_t from, std::size_t to) {
+    LogLine l;
+    l.points = to - from;
+    std::vector<double> u, y;
+    for (std::size_t k = from; k < to; ++k) {
+        const double x = rows[k][against], v = rows[k][of];
+        if (!std::isfinite(x) || !(v > 0) || !std::isfinite(v))
+            return l;
+        u.push_back(x);
+        y.push_back(std::log(v));
+    }
+    const auto mean = [](const std::vector<double>& z) {
+        double m = 0;
+        for (double w : z)
+            m += w;
+        return m / static_cast<double>(z.size());
+    };
+    const double mu = mean(u), my = mean(y);
+    double scale = 0;
+    for (double& w : u) {
+        w -= mu;
+        scale = std::max(scale, std::abs(w));
+    }
+    if (!(scale > 0))
+        return l;
+    for (double& w : u)
+        w /= scale; // in [-1, 1]: the parabola's basis stays well conditioned
+    // Orthogonal basis 1, u, p2 = u^2 - m2 - (S3/S2) u (Gram-Schmidt), so the fitted parts add up.
+    double s2 = 0, s3 = 0, m2 = 0, syy = 0, suy = 0;
+    for (std::size_t k = 0; k < u.size(); ++k) {
+        s2 += u[k] * u[k];
+        s3 += u[k] * u[k] * u[k];
+        syy += (y[k] - my) * (y[k] - my);
+        suy += u[k] * (y[k] - my);
+    }
+    m2 = s2 / static_cast<double>(u.size());
+    double spp = 0, spy = 0;
+    for (std::size_t k = 0; k < u.size(); ++k) {
+        const double p2 = u[k] * u[k] - m2 - s3 / s2 * u[k];
+        spp += p2 * p2;
+        spy += p2 * (y[k] - my);
+    }
+    l.slope = suy / s2 / scale;
+    l.sxx = s2 * scale * scale;
+    l.rss_parabola = std::max(0.0, syy - suy * suy / s2 - (spp > 0 ? spy * spy / spp : 0.0));
+    return l;
+}
+
+// ln(of)'s noise variance per row from the halves' residuals about their parabolas: pooled, unless
+// the halves' variances differ beyond what their degrees of freedom allow (the two-sided 1 % range of
+// Fisher's F): then the quieter half's. A rate that drifts more than a parabola can follow inflates
+// its half's residuals; taken alone, that half's estimate would hide the drift it comes from.
+double noise_variance(const LogLine& a, const LogLine& b) {
+    const double da = static_cast<double>(a.points) - 3, db = static_cast<double>(b.points) - 3;
+    const double va = a.rss_parabola / da, vb = b.rss_parabola / db;
+    const double pooled = (a.rss_parabola + b.rss_parabola) / (da + db);
+    if (!(va > 0) || !(vb > 0))
+        return pooled;
+    const boost::math::fisher_f_distribution<double> f(da, db);
+    const double ratio = va / vb;
+    if (ratio > boost::math::quantile(boost::math::complement(f, 0.005)) || ratio < boost::math::quantile(f, 0.005))
+        return std::min(va, vb);
+    return pooled;
 }
 
 } // namespace
@@ -103,6 +178,13 @@ SteadyResult find_steady_state(const std::vector<std::string>& names,
     for (const std::string& m : o.monitored)
         if (const std::size_t j = index_of(names, m); j < names.size())
             mon.push_back(j);
+    // For each monitored column, the columns of the decay it is the rate of (none: names.size()).
+    std::vector<std::pair<std::size_t, std::size_t>> rate_of(mon.size(), {names.size(), names.size()});
+    for (std::size_t i = 0; i < mon.size(); ++i)
+        for (const SteadyOptions::DecayRate& d : o.decay_rates)
+            if (names[mon[i]] == d.column && index_of(names, d.of) < names.size() &&
+                index_of(names, d.against) < names.size())
+                rate_of[i] = {index_of(names, d.of), index_of(names, d.against)};
     const int half_batches = std::max(2, o.batches / 2);
     // Row 0 is the initial state (its rates are undefined): never part of the window.
     std::size_t k0 = std::min<std::size_t>(1, n);
@@ -117,7 +199,8 @@ SteadyResult find_steady_state(const std::vector<std::string>& names,
     for (; k0 + std::max<std::size_t>(o.min_rows, 4) <= n && k0 <= last_start; k0 += stride) {
         const std::size_t mid = k0 + (n - k0) / 2;
         bool steady = true;
-        for (std::size_t j : mon) {
+        for (std::size_t i = 0; i < mon.size() && steady; ++i) {
+            const std::size_t j = mon[i];
             const std::vector<double> a = series(j, k0, mid), b = series(j, mid, n);
             const SteadyValue A = batch_mean(a, half_batches), B = batch_mean(b, half_batches);
             if (!std::isfinite(A.mean) && !std::isfinite(B.mean))
@@ -127,6 +210,34 @@ SteadyResult find_steady_state(const std::vector<std::string>& names,
             if (const double t = trend_in_errors(series(j, k0, n), o.batches); std::abs(t) > o.trend_threshold) {
                 steady = false;
                 break;
+            }
+            if (rate_of[i].first < names.size()) {
+                // A decay rate: the halves' and the head's slopes of ln(of), their errors from
+                // ln(of)'s noise (row k's rate spans rows k - 1 and k, so the first half's line
+                // starts at row k0 - 1; k0 >= 1).
+                const auto [of, against] = rate_of[i];
+                const LogLine la = fit_log_line(rows, of, against, k0 - 1, mid);
+                const LogLine lb = fit_log_line(rows, of, against, mid, n);
+                const LogLine lh = fit_log_line(rows, of, against, k0 - 1, std::min(k0 + o.head_rows, mid));
+                if (std::isfinite(la.slope) && std::isfinite(lb.slope) && la.points > 3 && lb.points > 3) {
+                    failed = Failed{j, -la.slope, -lb.slope};
+                    const double s2 = noise_variance(la, lb);
+                    const double slack = 1e-12 * std::max(std::abs(la.slope), std::abs(lb.slope));
+                    if (!(std::abs(lb.slope - la.slope) <= o.threshold * std::sqrt(s2 * (1 / la.sxx + 1 / lb.sxx)) + slack)) {
+                        steady = false;
+                        break;
+                    }
+                    if (o.head_rows > 0 && std::isfinite(lh.slope) &&
+                        !(std::abs(lb.slope - lh.slope) <= o.threshold * std::sqrt(s2 * (1 / lh.sxx + 1 / lb.sxx)) + slack)) {
+                        steady = false;
+                        break;
+                    }
+                    // No row-by-row test against the replicas' X_err: the second half's slope is far
+                    // more precise than any one row, so a row's error from a few replicas (itself
+                    // uncertain by a factor 1/sqrt(2 (R - 1))) would decide alone and refuse by
+                    // chance; the head's slope above holds the same information.
+                    continue;
+                }
             }
             // The error of both means from the second half's batches (a transient inside the first
             // half would inflate its own batch error and hide itself); the 1e-12 relative slack:

@@ -238,3 +238,61 @@ TEST(ScaledCli, AnElasticGasHasNoScaledState) {
 
 } // namespace
 } // namespace roughgas
+
+namespace roughgas {
+namespace {
+
+// The shipped cooling cases report their scaled state: cases/hcs_smooth.toml as shipped (one
+// replica, log-spaced rows, whose zeta_star rows are a hundred times noisier early than late), and
+// the small periodic box of cases/box_hcs_rough.toml (with a quarter of its grains), whose theta
+// equals the homogeneous engine's at the same alpha, beta and grains within the errors: a box
+// below the instability length stays homogeneous.
+TEST(ScaledCli, TheShippedCoolingCasesReportTheirScaledState) {
+    const test::ScratchDir dir;
+    const std::string cases = std::string(ROUGHGAS_SOURCE_DIR) + "/cases/";
+    const test::CommandResult smooth =
+        test::run_roughgas("run '" + cases + "hcs_smooth.toml' --quiet --out '" + (dir / "smooth").string() + "'", dir);
+    ASSERT_EQ(smooth.status, 0) << smooth.err;
+    EXPECT_NE(smooth.out.find("scaled state from"), std::string::npos) << smooth.out;
+    const auto s = test::read_csv(dir / "smooth" / "scaled.csv");
+    EXPECT_EQ(s.at("steady").at(0), 1.0);
+    EXPECT_LT(s.at("steady_from").at(0), 20.0); // a20 has relaxed within ~10 collisions per particle
+
+    const test::CommandResult box =
+        test::run_roughgas("run '" + cases + "box_hcs_rough.toml' --quiet --set run.particles=25000 --out '" +
+                               (dir / "box").string() + "'",
+                           dir);
+    ASSERT_EQ(box.status, 0) << box.err;
+    EXPECT_NE(box.out.find("scaled state from"), std::string::npos) << box.out;
+    const auto b = test::read_csv(dir / "box" / "scaled.csv");
+    ASSERT_EQ(b.at("steady").at(0), 1.0);
+    // The box's gas without the box: the same grains, alpha, beta and rows in the homogeneous engine.
+    const fs::path f = dir.write("hom.toml", R"([run]
+particles = 25000
+replicas = 4
+end = 300.0
+output_every = 0.5
+output_spacing = "log"
+density = 0.02
+seed = 2
+[[species]]
+name = "grain"
+mass = 1.0
+radius = 0.5
+[collision]
+model = "constant"
+alpha = 0.9
+beta = 0.4
+)");
+    const test::CommandResult hom =
+        test::run_roughgas("run '" + f.string() + "' --quiet --out '" + (dir / "hom").string() + "'", dir);
+    ASSERT_EQ(hom.status, 0) << hom.err;
+    const auto h = test::read_csv(dir / "hom" / "scaled.csv");
+    ASSERT_EQ(h.at("steady").at(0), 1.0);
+    const double err = std::hypot(b.at("theta_err").at(0), h.at("theta_err").at(0));
+    EXPECT_LT(std::abs(b.at("theta").at(0) - h.at("theta").at(0)), 4 * err)
+        << "box " << b.at("theta").at(0) << " homogeneous " << h.at("theta").at(0) << " +- " << err;
+}
+
+} // namespace
+} // namespace roughgas

@@ -16,6 +16,13 @@
 // standard error (from the batch means' scatter about the line: a trend does not inflate it). The
 // steady start is the first such k0 (scanned upwards, over the first `max_start` of the rows, with
 // at least `min_rows` rows in the window).
+// A monitored decay rate (zeta_star = -d ln T_tr/d coll_per_particle between consecutive rows) is
+// tested through the quantity it differentiates instead: straight lines fitted to ln T_tr against
+// coll_per_particle over each half (and over the head rows with the row before them), their slopes
+// compared within `threshold` of the error from the lines' residuals. A rate's rows are as noisy
+// as 1/(the rows' spacing): with log-spaced rows the late ones are a hundred times quieter than the
+// early ones, so an error from the second half's rows would refuse any window with early rows,
+// while ln T_tr's noise is the same in every row.
 // Monitored (steady_monitored): T_tr, T_rot, P*_xx, P*_yy, P*_zz, P*_xy, theta, a20 (and a
 // mixture's species' theta and temperature ratios) for shear runs; the scale-free ratios for
 // cooling runs, whose steady state is the scaled (homogeneous cooling) state.
@@ -48,6 +55,11 @@ struct SteadyOptions {
     // With head_rows > 0 and X_err columns (replicas): also each of those rows against the second
     // half's mean within 3 of its own X_err combined with the half's error.
     bool head_each_row = true;
+    // Monitored columns that are decay rates: column = -d ln(of)/d(against) between consecutive rows.
+    struct DecayRate {
+        std::string column, of, against;
+    };
+    std::vector<DecayRate> decay_rates;
 };
 
 struct SteadyValue {
