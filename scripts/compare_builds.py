@@ -129,6 +129,7 @@ CASE_SETS = {
                                                  "fields.every=3"],
     "box_couette": WALLS,
     "box_fourier": WALLS,
+    "box_conductivity_fourier": WALLS,
     "box_heated_bed": WALLS,
     "box_thermal_walls": WALLS,
     "box_hcs_rough": ["run.particles=40000", "run.end=20", "run.replicas=3"],

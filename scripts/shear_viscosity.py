@@ -56,17 +56,13 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from roughgas_csv import read_csv, read_header  # noqa: E402
+from transport_common import (ETA_CE_OVER_ETA0, VISCOSITY_LAWS, Refused, SelfCheck, check_theory,  # noqa: E402
+                              elastic_smooth_species, eta_0, mean_free_path, run_cli)
 
-ETA_CE_OVER_ETA0 = 1.016034  # Chapman & Cowling 1970: the converged rigid-sphere viscosity over its first Sonine value
-CELL_LAW = 16.0 / (45.0 * math.pi)  # of (dx/lambda)^2: Alexander, Garcia & Alder 1998
-STEP_LAW = 4.0 / 75.0  # of s^2, = 16/(75 pi) (c0 dt/lambda)^2: Hadjiconstantinou 2000
+CELL_LAW, STEP_LAW = VISCOSITY_LAWS
 DEFAULT_FROM = 10.0  # collisions per particle
 NOISE_FACTOR = 10.0  # the window ends before the amplitude falls below this many sampling noises
 COMPONENTS = "xyz"
-
-
-class Refused(Exception):
-    """The run directory is not one the method applies to."""
 
 
 def transverse_direction(wave):
@@ -120,16 +116,10 @@ def read_run(run_dir):
     case = read_header(moments_path)["resolved"]
     if not case:
         raise Refused(f"{moments_path} has no resolved case in its header")
-    run, species, domain, initial = case.get("run", {}), case.get("species", []), case.get("domain"), case.get("initial", {})
-    coll = case.get("collision", {})
+    run, domain, initial = case.get("run", {}), case.get("domain"), case.get("initial", {})
     if domain is None or initial.get("mode") != "transverse":
         raise Refused("the run has no transverse wave ([initial] mode = \"transverse\" in a [domain] run)")
-    if len(species) != 1 or case.get("pair"):
-        raise Refused("the method is for one species")
-    if (coll.get("model") != "constant" or float(coll.get("alpha", 0)) != 1.0 or float(coll.get("beta", 0)) != -1.0
-            or run.get("kernel", "hard_sphere") != "hard_sphere" or run.get("kind", "cooling") != "cooling"):
-        raise Refused("the method and its theory are for elastic smooth hard spheres (model \"constant\", alpha = 1, "
-                      "beta = -1, kernel \"hard_sphere\", no shear)")
+    species = elastic_smooth_species(case)
     wave = [int(w) for w in initial.get("wave", [1, 0, 0])]
     axes = [a for a in range(3) if wave[a] != 0]
     if len(axes) != 1:
@@ -140,13 +130,13 @@ def read_run(run_dir):
         raise Refused("the box must be periodic")
     p = {
         "n": float(run["density"]), "N": int(run["particles"]), "R": int(run.get("replicas", 1)),
-        "m": float(species[0]["mass"]), "sigma": 2.0 * float(species[0]["radius"]),
+        "m": float(species["mass"]), "sigma": 2.0 * float(species["radius"]),
         "L": float(domain["size"][axis]), "cells": int(domain["cells"][axis]), "s": float(domain.get("time_step", 0.2)),
         "axis": axis, "component": component, "wave": abs(wave[axis]), "amplitude": float(initial.get("amplitude", 0.1)),
     }
     p["k"] = 2 * math.pi * p["wave"] / p["L"]
     p["dx"] = p["L"] / p["cells"]
-    p["lambda"] = 1.0 / (math.sqrt(2.0) * math.pi * p["n"] * p["sigma"] ** 2)
+    p["lambda"] = mean_free_path(p["n"], p["sigma"])
 
     modes = read_csv(modes_path)
     rows = (modes["axis"] == axis + 1) & (modes["n"] == p["wave"])
@@ -215,7 +205,7 @@ def measure(p, rows, replicas, first, last):
     scatter_err = float(np.std(slopes, ddof=1) / math.sqrt(len(slopes))) if len(slopes) >= 2 else float("nan")
     gamma_err = scatter_err if len(slopes) >= 4 else gamma_fit_err
     to_eta = p["n"] * p["m"] / p["k"] ** 2
-    eta0 = 5.0 / (16.0 * p["sigma"] ** 2) * math.sqrt(p["m"] * t_w / math.pi)
+    eta0 = eta_0(p["m"], t_w, p["sigma"])
     laws = 1 + CELL_LAW * (p["dx"] / p["lambda"]) ** 2 + STEP_LAW * p["s"] ** 2
     eta = gamma * to_eta
     return {"gamma": gamma, "gamma_fit_err": gamma_fit_err, "gamma_scatter_err": scatter_err,
@@ -313,23 +303,15 @@ def report(run_dir, args):
         draw(args.plot, p, rows, first, last, r)
         print(f"shear_viscosity: wrote {args.plot}")
     if args.check_theory is not None:
-        bound = args.check_theory + 4 * r["ratio_err"]
-        ok = math.isfinite(r["ratio"]) and abs(r["ratio"] - 1) <= bound
-        print(f"check: |eta/eta_CE,laws - 1| = {abs(r['ratio'] - 1):.4f} {'<=' if ok else '>'} {args.check_theory:g} "
-              f"+ 4 x {r['ratio_err']:.4f} = {bound:.4f}: {'pass' if ok else 'FAIL'}")
-        return 0 if ok else 1
+        return check_theory("eta/eta_CE,laws", r["ratio"], r["ratio_err"], args.check_theory)
     return 0 if math.isfinite(r["eta"]) else 1
 
 
 def self_check():
     """The fit on synthetic waves: exact exponentials, the noise's statistics, a warming gas."""
     rng = np.random.default_rng(7)
-    failures = []
-
-    def expect(cond, text):
-        print(f"self-check: {'ok  ' if cond else 'FAIL'} {text}")
-        if not cond:
-            failures.append(text)
+    check = SelfCheck()
+    expect = check.expect
 
     t = np.arange(0.0, 200.0, 2.0)
     gamma = 0.0123
@@ -372,7 +354,7 @@ def self_check():
     expect(abs(16 / (75 * math.pi) * c0_dt_over_lambda ** 2 - STEP_LAW * s ** 2) < 1e-15, "the step law (4/75) s^2")
     expect(transverse_direction([1, 0, 0]) == 1 and transverse_direction([0, 1, 0]) == 2
            and transverse_direction([0, 0, 1]) == 1, "the transverse direction of waves along x, y, z")
-    return 1 if failures else 0
+    return check.status()
 
 
 def main(argv):
@@ -387,16 +369,7 @@ def main(argv):
                         help="exit 1 unless |eta/eta_CE,laws - 1| <= TOL + 4 standard errors")
     parser.add_argument("--plot", default=None, metavar="PNG", help="draw the fit")
     parser.add_argument("--self-check", action="store_true", help="check the fit on synthetic waves")
-    args = parser.parse_args(argv[1:])
-    if args.self_check:
-        return self_check()
-    if args.run_dir is None:
-        parser.error("RUN_DIR is required (or --self-check)")
-    try:
-        return report(args.run_dir, args)
-    except Refused as e:
-        print(f"shear_viscosity: {args.run_dir}: {e}", file=sys.stderr)
-        return 2
+    return run_cli("shear_viscosity", parser, argv, report, self_check)
 
 
 if __name__ == "__main__":

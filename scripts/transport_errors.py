@@ -45,12 +45,14 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from roughgas_csv import read_csv  # noqa: E402
 from atomic_output import save_figure  # noqa: E402
+from transport_common import (CONDUCTIVITY_LAWS, ETA_CE_OVER_ETA0, KAPPA_CE_OVER_KAPPA0, VISCOSITY_LAWS,  # noqa: E402
+                              eta_0, kappa_0, kappa_1, mean_free_path)
 
 DENSITY = 0.02
-LAMBDA = 1.0 / (math.sqrt(2.0) * math.pi * DENSITY)
+LAMBDA = mean_free_path(DENSITY, 1.0)
 WIDTH = 20  # mean free paths between the walls
 # The leading-order laws' coefficients of (dy/lambda)^2 and s^2 per flow (see the docstring).
-LAWS = {"couette": (16.0 / (45.0 * math.pi), 4.0 / 75.0), "fourier": (32.0 / (225.0 * math.pi), 8.0 / 225.0)}
+LAWS = {"couette": VISCOSITY_LAWS, "fourier": CONDUCTIVITY_LAWS}
 WALLS = {"couette": ((1.0, -0.5), (1.0, 0.5)), "fourier": ((0.8, 0.0), (1.2, 0.0))}
 
 
@@ -107,11 +109,9 @@ def transport(flow, directory):
             p += wall_flux[k] / len(batch)
         if flow == "couette":
             slope = np.polyfit(ys, us, 1)[0]
-            ratios.append(-p / slope / (1.016034 * 5.0 / 16.0 * math.sqrt(float(np.mean(ts)) / math.pi)))
+            ratios.append(-p / slope / (ETA_CE_OVER_ETA0 * eta_0(1.0, float(np.mean(ts)), 1.0)))
         else:
-            # kappa = kappa_1 sqrt(T) makes T^(3/2), not T, linear in y: -q = (2/3) kappa_1 d(T^(3/2))/dy.
-            slope = np.polyfit(ys, np.asarray(us) ** 1.5, 1)[0]
-            ratios.append(-1.5 * p / slope / (1.025218 * 75.0 / 64.0 / math.sqrt(math.pi)))
+            ratios.append(kappa_1(ys, us, p) / (KAPPA_CE_OVER_KAPPA0 * kappa_0(1.0, 1.0, 1.0)))
     r = np.array(ratios)
     return r.mean(), r.std(ddof=1) / math.sqrt(len(r))
 
