@@ -134,14 +134,19 @@ TEST(RunCli, WritesMomentsWithHeaderUnitsAndTheory) {
                                                "T_tr_theory",
                                                "T_rot_theory",
                                                "theta_theory",
-                                               "zeta_star_theory"};
+                                               "zeta_star_theory",
+                                               "theta_sonine",
+                                               "zeta_star_sonine",
+                                               "a20_sonine",
+                                               "a02_sonine",
+                                               "a11_sonine"};
     EXPECT_EQ(m.names, expected);
     EXPECT_EQ(m.rows, 5u); // t = 0 and every collision per particle up to 4
     EXPECT_EQ(m["coll_per_particle"], (std::vector<double>{0, 1, 2, 3, 4}));
     // The units line names one unit per column, right above the header.
     ASSERT_FALSE(m.comments.empty());
     EXPECT_EQ(m.comments.back(),
-              "# units: time,-,energy,energy,-,-,-,-,-,1/time,energy/(volume*time),-,energy,energy,-,-");
+              "# units: time,-,energy,energy,-,-,-,-,-,1/time,energy/(volume*time),-,energy,energy,-,-,-,-,-,-,-");
     const std::string text = test::read_file(out / "moments.csv");
     EXPECT_NE(text.find("# case: " + f.string() + "\n"), std::string::npos);
     EXPECT_NE(text.find("# seed: 7\n"), std::string::npos);
@@ -222,7 +227,8 @@ TEST(RunCli, ReplicasAddStandardErrorsAfterEachColumn) {
         expected.push_back(b + "_err");
     }
     for (const char* t : {"zeta_star", "zeta_star_err", "T_tr_theory", "T_rot_theory", "theta_theory",
-                          "zeta_star_theory"})
+                          "zeta_star_theory", "theta_sonine", "zeta_star_sonine", "a20_sonine", "a02_sonine",
+                          "a11_sonine"})
         expected.push_back(t);
     EXPECT_EQ(m.names, expected);
     EXPECT_EQ(m["coll_per_particle_err"], (std::vector<double>{0, 0, 0})); // the same in every replica
