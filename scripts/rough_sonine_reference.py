@@ -53,6 +53,8 @@ about the Maxwellian value: it is the root of R_c2 - R_w2 (with those cumulants)
 continued from the Maxwellian theta (the root closest to it in ln theta with no pole of the linear
 system in between), found by bisection. zeta* = (2/3) R_c2/(1 - a20/16): the decay rate of T_tr
 per collision per particle of the Sonine distribution (zeta_star of moments.csv).
+For the DSMC cases of docs/validation.md it also prints the state with the products of cumulants
+kept (the four equations solved by Newton's method): how much the linearisation matters there.
 Checks printed: at beta = -1 (smooth) the a20 equation is van Noije & Ernst's (1998)
 a2 = 16(1-alpha)(1-2 alpha^2)/(81 - 17 alpha + 30 alpha^2 (1-alpha)); as beta -> -1 the rough
 cooling state does not tend to it (a singular limit, Santos, Kremer & dos Santos 2011): with
@@ -76,6 +78,8 @@ WEIGHT_NAMES = ("1", "a20", "a02", "a11")
 RATE_POINTS = [(0.9, 0.0, 0.4, 0.55), (0.7, -0.5, 0.5, 3.0), (0.5, 1.0, 0.3, 1.5)]
 HCS_CASES = [(a, b, 0.4) for a in (0.9, 0.5) for b in (-0.5, 0.0, 0.5, 1.0)] + [(0.8, 0.3, 0.25), (1.0, 0.0, 0.4)]
 QUASI_SMOOTH = [(0.9, 0.4), (0.5, 0.4), (0.7, 0.2)]
+# The DSMC runs of tests/io/run_cli_test.cpp (ThetaDeviationFromMaxwellianIsTheSonineCorrection), q = 2/5.
+VALIDATION_CASES = [(0.9, 0.5), (0.9, 0.0), (0.9, -0.5), (0.7, 0.5), (0.5, 1.0)]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -283,6 +287,28 @@ class SonineHcs:
         return theta, a[0], a[1], a[2], zeta
 
 
+def not_linearised(hcs, alpha, beta, q, start):
+    """(theta, a20, a02, a11) of the four cooling-state equations with the products of two cumulants
+    kept, by Newton's method (central-difference Jacobian) from the linearised state `start`."""
+    def G(v):
+        r = hcs.coefficients(alpha, beta, q, math.exp(v[0]))
+        R = {p: r[(p, "1")] + sum(r[(p, w)] * x for w, x in zip(WEIGHT_NAMES[1:], v[1:])) for p in PSI_NAMES}
+        return np.array([R["c2"] - R["w2"], R["c4"] - 5 * R["c2"] * (1 + v[1]), R["w4"] - 5 * R["w2"] * (1 + v[2]),
+                         R["c2w2"] - 1.5 * (R["c2"] + R["w2"]) * (1 + v[3])])
+    v = np.array([math.log(start[0]), *start[1:4]])
+    for _ in range(50):
+        J = np.empty((4, 4))
+        for j in range(4):
+            e = np.zeros(4)
+            e[j] = 1e-7
+            J[:, j] = (G(v + e) - G(v - e)) / 2e-7
+        dv = np.linalg.solve(J, -G(v))
+        v += dv
+        if np.max(np.abs(dv)) < 1e-13:
+            break
+    return (math.exp(v[0]), *v[1:])
+
+
 def maxwellian_theta(alpha, beta, q):
     """The Maxwellian cooling state's theta (Huthmann & Zippelius 1997), for the bracket and the table."""
     e = q * (1 + beta) / (2 * (1 + q))
@@ -382,6 +408,14 @@ def main():
     for a, b, q, tm, s in table:
         print(f"//   {a}, {b}, {q}: Maxwellian theta {tm:.6f}, Sonine {s[0]:.6f} ({s[0] / tm - 1:+.2%})")
 
+    print("// the DSMC cases of docs/validation.md (q = 0.4): Maxwellian theta; Sonine theta, a20, a02, a11;"
+          " the same without linearising in the cumulants")
+    for a, b in VALIDATION_CASES:
+        tm = maxwellian_theta(a, b, 0.4)
+        s = hcs.solve(a, b, 0.4, tm)
+        n = not_linearised(hcs, a, b, 0.4, s)
+        print(f"//   {a}, {b}: {tm:.4f}; {s[0]:.4f}, {s[1]:+.4f}, {s[2]:+.4f}, {s[3]:+.4f};"
+              f" {n[0]:.4f}, {n[1]:+.4f}, {n[2]:+.4f}, {n[3]:+.4f}")
     print("// beta = -1 (smooth): a20 of the linearised a20 equation against van Noije & Ernst (1998)")
     for a in (0.9, 0.5, 0.2):
         M, bvec, R = hcs.linear_system(a, -1.0, 0.4, 1.0)
