@@ -46,8 +46,8 @@ Two independent evaluations of the R coefficients (nothing is taken from the C++
 The cooling state. In the scaled homogeneous cooling state theta and the cumulants are constant:
     R_c2 = R_w2 (theta constant: the two temperatures decay at one rate),
     R_c4 = 5 R_c2 (1 + a20),  R_w4 = 5 R_w2 (1 + a02),  R_c2w2 = (3/2)(R_c2 + R_w2)(1 + a11)
-(d<c^4>/dt = 0 etc. in the variables scaled by the decaying thermal speeds). Linearisation (that of
-Santos, Kremer & dos Santos 2011): the products of two cumulants in the last three equations are
+(d<c^4>/dt = 0 etc. in the variables scaled by the decaying thermal speeds). Linearisation in the
+cumulants: the products of two cumulants in the last three equations are
 dropped, so at fixed theta the cumulants solve a 3 x 3 linear system; theta itself is NOT expanded
 about the Maxwellian value: it is the root of R_c2 - R_w2 (with those cumulants) on the branch
 continued from the Maxwellian theta (the root closest to it in ln theta with no pole of the linear
@@ -61,7 +61,7 @@ cooling state does not tend to it (a singular limit, Santos, Kremer & dos Santos
 y = b~^2 theta/q fixed, b~ = q(1+beta)/(2(1+q)) -> 0, the leading orders of the four equations give
 a11 = 0 and three equations for y, a20, a02 (derived here, solved by Newton's method).
 
-Runtime: about 30 s (the quadrature); --monte-carlo 2000000 about a minute more.
+Runtime: a minute or two of CPU (the quadrature); --monte-carlo 2000000 about a minute more.
 """
 
 import argparse

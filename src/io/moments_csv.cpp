@@ -131,10 +131,13 @@ MomentsTable::MomentsTable(const RunSpec& spec)
         if (spec.species.size() == 1 && !trajectory_->theory().maxwell()) {
             const ConstantRestitution& r = trajectory_->theory().pairs()[0];
             const std::optional<SonineCoolingState> s = sonine_cooling_state(r.alpha, r.beta, spec.species[0].inertia);
-            const double nan = std::numeric_limits<double>::quiet_NaN();
-            const auto value = [&](double x) { return s && std::isfinite(x) ? x : nan; };
-            sonine_ = {value(s ? s->theta : nan), value(s ? s->zeta_star : nan), value(s ? s->a20 : nan),
-                       value(s ? s->a02 : nan), value(s ? s->a11 : nan)};
+            const auto value = [&](double SonineCoolingState::*field) {
+                return s && std::isfinite((*s).*field) ? (*s).*field : std::numeric_limits<double>::quiet_NaN();
+            };
+            for (double SonineCoolingState::*field : {&SonineCoolingState::theta, &SonineCoolingState::zeta_star,
+                                                      &SonineCoolingState::a20, &SonineCoolingState::a02,
+                                                      &SonineCoolingState::a11})
+                sonine_.push_back(value(field));
             for (const char* name : {"theta_sonine", "zeta_star_sonine", "a20_sonine", "a02_sonine", "a11_sonine"})
                 columns_.push_back({name, "-"});
         }

@@ -7,10 +7,10 @@
 // one rate and the fourth moments in the variables scaled by the decaying thermal speeds stay put,
 //   R_c2 = R_w2,                                               (theta)
 //   R_c4 = 5 R_c2 (1 + a20),  R_w4 = 5 R_w2 (1 + a02),  R_c2w2 = (3/2)(R_c2 + R_w2)(1 + a11)
-// (<c^4> = (15/4)(1 + a20), <c^2> = 3/2, so d<c^4>/dt = 2 <c^4> d ln T_tr/dt, etc.). Linearised as
-// Santos, Kremer & dos Santos (2011) do: the products of two cumulants in the last three
-// equations are dropped, so at fixed theta the cumulants solve a 3 x 3 linear system M a = v. theta
-// itself is not expanded about the Maxwellian value: it is the root of R_c2 - R_w2 (at the
+// (<c^4> = (15/4)(1 + a20), <c^2> = 3/2, so d<c^4>/dt = 2 <c^4> d ln T_tr/dt, etc.). Linearised in
+// the cumulants: the products of two cumulants in the last three equations are dropped (the
+// rates are already linear in them), so at fixed theta the cumulants solve a 3 x 3 linear system
+// M a = v. theta itself is not expanded about the Maxwellian value: it is the root of R_c2 - R_w2 (at the
 // cumulants of the linear system) on the branch continued from the Maxwellian theta*
 // (observables/theory.hpp theta_fixed_point): the root nearest to it in ln theta with no pole of
 // the linear system (det M = 0) in between. Then
