@@ -11,7 +11,9 @@ when the CSV has data for it:
   theta = T_rot/T_tr (mixtures also per species),
   the reduced cooling rate zeta_star (the decay of T_tr per collision per particle),
   the cumulants a20, a02, a11 and the alignment A_cw.
-Theory columns (*_theory: Maxwellian approximation, Haff's law) are drawn dashed; with replicas
+Theory columns (*_theory: Maxwellian approximation, Haff's law) are drawn dashed, the first Sonine
+approximation of the scaled cooling state (*_sonine: theta, zeta_star, a20, a02, a11 of one species,
+constant) dash-dotted, each in the color of its measured curve; with replicas
 the X_err columns (standard error of the mean) are drawn as shaded bands, mean +- X_err (error
 bars at points without finite neighbours, e.g. a curve of one point). The panels named
 (temperatures, ratios, theta, zeta, cumulants) are printed with the output path. Curves
@@ -63,7 +65,9 @@ def constant(y):
 
 def measured_of(name):
     """The measured column a theory column belongs to (T_tr_theory.small -> T_tr.small,
-    T_tr.a/T_tr.b_theory -> T_tr.a/T_tr.b); None for a measured column."""
+    T_tr.a/T_tr.b_theory -> T_tr.a/T_tr.b, theta_sonine -> theta); None for a measured column."""
+    if name.endswith("_sonine"):
+        return name.removesuffix("_sonine")
     return name.replace("_theory", "") if "_theory" in name else None
 
 
@@ -76,7 +80,7 @@ def omitted(d, species):
         for c in ("T_rot" + s, "theta" + s, "T_rot_theory" + s, "theta_theory" + s):
             why[c] = note
         if s == "":
-            for c in SPIN_CUMULANTS:
+            for c in SPIN_CUMULANTS + ["theta_sonine"] + [q + "_sonine" for q in SPIN_CUMULANTS]:
                 why[c] = note
         for c in d:
             if s and c.startswith("T_rot.") and "/" in c and not c.endswith("_err"):
@@ -121,13 +125,13 @@ def band(ax, x, y, err, logy, label, color, **style):
     return True
 
 
-def dashed(ax, x, y, logy, label, color):
+def dashed(ax, x, y, logy, label, color, style="--"):
     ok = np.isfinite(x) & np.isfinite(y)
     if logy:
         ok &= y > 0
     if not ok.any():
         return False
-    ax.plot(x[ok], y[ok], "--", color=color, lw=1.5, label=label)
+    ax.plot(x[ok], y[ok], style, color=color, lw=1.5, label=label)
     return True
 
 
@@ -212,6 +216,8 @@ def plot(csv_path, out_path, x_col="coll", logx=None):
         notes.append("shaded: mean \u00b1 standard error over the replicas")
     if any(c.endswith("_theory") or "_theory." in c for c in d):
         notes.append("dashed: Maxwellian theory")
+    if any(c.endswith("_sonine") for c in d):
+        notes.append("dash-dotted: first Sonine approximation of the scaled cooling state")
     left_out = {}
     for _, curves in panels_of(d, species):
         for c, _, _ in curves:
@@ -237,6 +243,9 @@ def plot(csv_path, out_path, x_col="coll", logx=None):
                 names.append(c)
             t = theory_name(c)
             if t in d and t not in why and dashed(ax, x, d[t], logy, None, color):
+                names.append(t)
+            t = c + "_sonine"
+            if t in d and t not in why and dashed(ax, x, d[t], logy, None, color, "-."):
                 names.append(t)
         if logy:
             ax.set_yscale("log")
@@ -277,7 +286,7 @@ def expected_curves(d, why):
     names = ["T_tr", "T_rot", "theta", "zeta_star"] + CUMULANTS
     names += [f"{q}.{s}" for s in species_names(d) for q in ("T_tr", "T_rot", "theta")]
     names += [c for c in d if "/" in c and not c.endswith("_err") and not c.endswith("_theory")]
-    return [n for c in names for n in (c, theory_name(c)) if n in d and n not in why]
+    return [n for c in names for n in (c, theory_name(c), c + "_sonine") if n in d and n not in why]
 
 
 def main(argv):

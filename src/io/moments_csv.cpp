@@ -6,6 +6,7 @@
 #include "roughgas/observables/longitudinal_modes.hpp"
 #include "roughgas/observables/profiles.hpp"
 #include "roughgas/observables/shear_mode.hpp"
+#include "roughgas/observables/sonine_cooling_state.hpp"
 
 #include <fmt/format.h>
 
@@ -123,6 +124,23 @@ MomentsTable::MomentsTable(const RunSpec& spec)
                 }
         }
         columns_.push_back({"zeta_star_theory", "-"});
+        // The scaled cooling state in the first Sonine approximation, the same in every row, where
+        // it applies (observables/sonine_cooling_state.hpp): one species, whose restitution is
+        // constant, with the hard-sphere kernel. NaN where it has no value: theta, a02 and a11 of
+        // smooth grains, everything where the approximation has no cooling state.
+        if (spec.species.size() == 1 && !trajectory_->theory().maxwell()) {
+            const ConstantRestitution& r = trajectory_->theory().pairs()[0];
+            const std::optional<SonineCoolingState> s = sonine_cooling_state(r.alpha, r.beta, spec.species[0].inertia);
+            const auto value = [&](double SonineCoolingState::*field) {
+                return s && std::isfinite((*s).*field) ? (*s).*field : std::numeric_limits<double>::quiet_NaN();
+            };
+            for (double SonineCoolingState::*field : {&SonineCoolingState::theta, &SonineCoolingState::zeta_star,
+                                                      &SonineCoolingState::a20, &SonineCoolingState::a02,
+                                                      &SonineCoolingState::a11})
+                sonine_.push_back(value(field));
+            for (const char* name : {"theta_sonine", "zeta_star_sonine", "a20_sonine", "a02_sonine", "a11_sonine"})
+                columns_.push_back({name, "-"});
+        }
     }
 }
 
@@ -320,6 +338,7 @@ std::vector<double> MomentsTable::combine(std::span<const std::span<const double
                 }
         }
         out.push_back(reduced_cooling_rate(th, T));
+        out.insert(out.end(), sonine_.begin(), sonine_.end());
     }
     return out;
 }
@@ -377,6 +396,17 @@ const std::map<std::string, std::string>& meanings() {
         {"zeta_star_theory", "-(dT_tr/dt)/(T_tr nu_c) of the Maxwellian approximation at t, nu_c its collisions "
                              "per particle and unit time (constant alpha, beta; (1 - alpha^2)/3 for smooth "
                              "spheres)"},
+        {"theta_sonine",
+         "theta of the scaled homogeneous cooling state in the first Sonine approximation, its cumulants "
+         "linearised, theta solved on the branch of the Maxwellian one (Santos, Kremer & dos Santos 2011; "
+         "docs/model.md): the same in every row; one species with constant alpha, beta and the hard-sphere "
+         "kernel; NaN for smooth grains (no scaled theta) and where the approximation has no cooling state"},
+        {"zeta_star_sonine", "zeta_star of the same state, (2/3) R_c2/(1 - a20/16) with its cumulants (as "
+                             "theta_sonine; for smooth grains with van Noije & Ernst's a2)"},
+        {"a20_sonine", "a20 of the same state (as theta_sonine; van Noije & Ernst's a2 for smooth grains)"},
+        {"a02_sonine", "a02 of the same state (as theta_sonine; NaN for smooth grains, whose spins keep their "
+                       "initial distribution)"},
+        {"a11_sonine", "a11 of the same state (as a02_sonine)"},
         // uniform shear flow (run.kind = shear; observables/pressure.hpp)
         {"P_xx", "kinetic pressure tensor (1/V) sum m V_x V_x, V the peculiar velocity (shear runs)"},
         {"P_yy", "(1/V) sum m V_y V_y (shear runs)"},

@@ -5,9 +5,11 @@
 namespace roughgas {
 namespace {
 
-// A theory column is a function of the row's t, not a measurement: its window mean has no
-// statistical error, so it gets no X_err column.
-bool has_error(const std::string& name) { return name.find("_theory") == std::string::npos; }
+// A theory column is a function of the row's t (*_theory) or a constant (*_sonine), not a
+// measurement: its window mean has no statistical error, so it gets no X_err column.
+bool has_error(const std::string& name) {
+    return name.find("_theory") == std::string::npos && !name.ends_with("_sonine");
+}
 
 } // namespace
 

@@ -3,6 +3,7 @@
 #include "roughgas/io/moments_csv.hpp"
 
 #include "roughgas/dsmc/run.hpp"
+#include "roughgas/observables/sonine_cooling_state.hpp"
 
 #include <gtest/gtest.h>
 
@@ -31,13 +32,16 @@ std::vector<double> row(double t, double c, double T, double Tr) {
 
 TEST(MomentsTable, ColumnsWithErrorsAndTheory) {
     const MomentsTable one(one_species(1));
-    EXPECT_EQ(one.names().size(), 11u + 1u + 4u);
+    EXPECT_EQ(one.names().size(), 11u + 1u + 4u + 5u);
     EXPECT_EQ(one.names()[11], "zeta_star");
     EXPECT_EQ(one.names()[12], "T_tr_theory");
     EXPECT_EQ(one.units()[12], "energy");
-    EXPECT_EQ(one.names().back(), "zeta_star_theory");
+    EXPECT_EQ(one.names()[15], "zeta_star_theory");
+    EXPECT_EQ(one.names()[16], "theta_sonine");
+    EXPECT_EQ(one.names().back(), "a11_sonine");
+    EXPECT_TRUE(one.has_sonine());
     const MomentsTable three(one_species(3));
-    ASSERT_EQ(three.names().size(), 22u + 2u + 4u);
+    ASSERT_EQ(three.names().size(), 22u + 2u + 4u + 5u);
     EXPECT_EQ(three.names()[2], "coll_per_particle");
     EXPECT_EQ(three.names()[3], "coll_per_particle_err");
     EXPECT_EQ(three.units()[5], "energy"); // T_tr_err
@@ -86,7 +90,7 @@ TEST(MomentsTable, MeanAndStandardErrorOverReplicas) {
     std::vector<double> out = table.combine(rows);
     EXPECT_EQ(out[0], 0.0);
     EXPECT_EQ(out[1], 0.0);
-    EXPECT_EQ(out[out.size() - 4], 1.0); // theory at t = 0: the initial temperatures
+    EXPECT_EQ(out[out.size() - 9], 1.0); // theory at t = 0 (T_tr_theory): the initial temperatures
     const std::vector<double> d = row(0.1, 1, 0.8, 1.0), e = row(0.2, 1, 0.9, 1.0), f = row(0.3, 1, 1.3, 1.0);
     rows = {d, e, f};
     out = table.combine(rows);
@@ -95,7 +99,42 @@ TEST(MomentsTable, MeanAndStandardErrorOverReplicas) {
     EXPECT_NEAR(out[4], 1.0, 1e-15);                                 // T_tr
     EXPECT_NEAR(out[5], std::sqrt((0.04 + 0.01 + 0.09) / 6), 1e-15); // T_tr_err
     HcsTrajectory th(HcsTheory({{1, 0.5, 0.4, 1}}, {{0.9, 0.0}}, 1.0), {{1.0}, {1.0}});
-    EXPECT_NEAR(out[out.size() - 4], th.at(0.2).T_tr[0], 1e-12); // theory at the mean t
+    EXPECT_NEAR(out[out.size() - 9], th.at(0.2).T_tr[0], 1e-12); // theory at the mean t
+}
+
+// The first-Sonine scaled state: its five values in every row, after the Maxwellian theory; written
+// for one species with the hard-sphere kernel only; smooth grains have no theta, a02, a11 (NaN).
+TEST(MomentsTable, SonineColumnsAreTheScaledStateInEveryRow) {
+    MomentsTable table(one_species(1, ConstantRestitution{0.9, 0.5}));
+    const std::optional<SonineCoolingState> s = sonine_cooling_state(0.9, 0.5, 0.4);
+    ASSERT_TRUE(s);
+    const std::vector<double> want = {s->theta, s->zeta_star, s->a20, s->a02, s->a11};
+    for (double t : {0.0, 1.0, 7.0}) {
+        const std::vector<double> r = row(t, t, std::exp(-t), 1.0);
+        const std::vector<std::span<const double>> rows{r};
+        const std::vector<double> out = table.combine(rows);
+        EXPECT_EQ(std::vector<double>(out.end() - 5, out.end()), want) << t;
+    }
+    MomentsTable smooth(one_species(1, ConstantRestitution{0.6, -1.0}));
+    const std::vector<double> r = row(0, 0, 1.0, 1.0);
+    const std::vector<std::span<const double>> rows{r};
+    const std::vector<double> out = smooth.combine(rows);
+    const double a2 = 16 * 0.4 * (1 - 2 * 0.36) / (81 - 17 * 0.6 + 30 * 0.36 * 0.4);
+    EXPECT_TRUE(std::isnan(out[out.size() - 5])); // theta_sonine
+    EXPECT_NEAR(out[out.size() - 3], a2, 1e-14);    // a20_sonine: van Noije & Ernst
+    EXPECT_TRUE(std::isnan(out[out.size() - 2]) && std::isnan(out[out.size() - 1]));
+    RunSpec maxwell = one_species(1);
+    maxwell.kernel = CollisionKernel::maxwell;
+    RunSpec mix = one_species(1);
+    mix.species.resize(2);
+    mix.species[1].name = "b";
+    mix.pairs.assign(3, ConstantRestitution{0.9, 0.0});
+    for (const RunSpec& spec : {maxwell, mix, one_species(1, CoulombRestitution{0.9, 0.5, 0.2})}) {
+        const MomentsTable t(spec);
+        EXPECT_FALSE(t.has_sonine());
+        const std::vector<std::string> names = t.names();
+        EXPECT_EQ(std::count(names.begin(), names.end(), "theta_sonine"), 0);
+    }
 }
 
 TEST(MomentsTable, NoSilentNaN) {
@@ -143,7 +182,7 @@ TEST(MomentsTable, EveryColumnHasAMeaningAndTheGeneratedTableListsIt) {
     for (const char* c :
          {"| `t` | time |", "| `X_err` |", "| `T_tr.NAME` | energy |", "| `T_tr.A/T_tr.B` | - |",
           "| `beta_clamped` |", "| `theta_theory` | - |", "| `T_tr_theory.NAME` | energy |", "| `zeta_star` | - |",
-          "| `zeta_star_theory` | - |"})
+          "| `zeta_star_theory` | - |", "| `theta_sonine` | - |", "| `a11_sonine` | - |"})
         EXPECT_NE(md.find(c), std::string::npos) << c << "\n" << md;
     EXPECT_EQ(md.find("| `T_tr.B` |"), std::string::npos) << md; // B only in the ratios
 }

@@ -12,6 +12,11 @@
 //   T_tr.A/T_tr.B_theory, T_rot.A/T_rot.B_theory     (mixtures: every pair A before B)
 //   zeta_star_theory = -(dT_tr/dt)/(T_tr nu_c)       (cooling runs; nu_c the collisions per particle
 //                                                      and unit time of the same Maxwellian state)
+//   theta_sonine, zeta_star_sonine, a20_sonine, a02_sonine, a11_sonine
+//                                                     (one species, hard-sphere kernel: the scaled
+//                                                      cooling state in the first Sonine approximation,
+//                                                      observables/sonine_cooling_state.hpp, the same
+//                                                      in every row)
 // and the rule that no value is NaN or infinite unless it is undefined by definition.
 #include "roughgas/dsmc/output_columns.hpp"
 #include "roughgas/dsmc/run_spec.hpp"
@@ -66,6 +71,7 @@ class MomentsTable {
     const std::vector<Column>& spectra_table_columns() const { return spectra_columns_; }
     const std::vector<Column>& modes_table_columns() const { return modes_columns_; }
     bool has_theory() const { return trajectory_.has_value(); }
+    bool has_sonine() const { return !sonine_.empty(); }
     int replicas() const { return replicas_; }
 
     // Throws NonFiniteValue, naming the column and t, unless every value of a replica's row
@@ -112,6 +118,7 @@ class MomentsTable {
     std::vector<std::string> species_names_;
     int replicas_ = 1;
     std::optional<HcsTrajectory> trajectory_;
+    std::vector<double> sonine_; // the *_sonine columns' values (empty: not written)
     bool zeta_ = false;                          // cooling runs: the zeta_star column
     std::vector<double> prev_T_tr_, prev_cpp_;  // per replica, its previous row's (NaN: none yet)
 };

@@ -3,7 +3,8 @@
 // drift criterion was met, else 0: the values are then those of the second half of the run, not
 // a steady state), `steady_from` (coll_per_particle of the window's first row), `steady_rows`,
 // then every averaged column X followed by X_err (batch-means standard error; none for the
-// theory columns *_theory, functions of t whose window mean has no statistical error). Written by
+// theory columns *_theory, functions of t whose window mean has no statistical error, nor for the
+// constant *_sonine columns). Written by
 // `roughgas run` (DIR/steady.csv, shear runs) and, one row per point, by `roughgas sweep`.
 #include "roughgas/observables/steady_state.hpp"
 

@@ -82,6 +82,9 @@ RunProvenance run_provenance(const RunSetup& setup, const MomentsTable& table, b
     if (table.has_theory())
         prov.notes.push_back("*_theory: Maxwellian approximation for constant alpha, beta at the row's t "
                              "(observables/theory.hpp; Haff's law for smooth spheres)");
+    if (table.has_sonine())
+        prov.notes.push_back("*_sonine: the scaled cooling state in the first Sonine approximation, the same in "
+                             "every row (observables/sonine_cooling_state.hpp)");
     prov.units = table.units();
     return p;
 }
