@@ -187,15 +187,20 @@ def theory_name(c):
     return f"{base}_theory.{s}"
 
 
+def log_spaced(x):
+    """Log-spaced outputs spanning more than two decades: what a logarithmic x axis is for."""
+    positive = x[np.isfinite(x) & (x > 0)]
+    steps = np.diff(np.sort(positive))
+    return bool(len(steps) > 1 and positive.max() / positive.min() > 100 and steps.max() > 10 * steps[0])
+
+
 def plot(csv_path, out_path, x_col="coll", logx=None):
     d = read_csv(csv_path)
     h = read_header(csv_path)
     x_name = "coll_per_particle" if x_col == "coll" else "t"
     x = d[x_name]
-    positive = x[np.isfinite(x) & (x > 0)]
-    if logx is None:  # log-spaced outputs spanning more than two decades
-        steps = np.diff(np.sort(positive))
-        logx = len(steps) > 1 and positive.max() / positive.min() > 100 and steps.max() > 10 * steps[0]
+    if logx is None:
+        logx = log_spaced(x)
     if logx:
         x = np.where(x > 0, x, np.nan)
     xlabel = "collisions per particle" if x_col == "coll" else label_with_unit("t", column_unit(h, "t"))

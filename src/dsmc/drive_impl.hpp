@@ -203,23 +203,29 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
     if (outputs.empty())
         outputs.push_back(spec.end);
     const double end = outputs.back();
-    // The pauses: output rows and histograms, in order of their collision counts (a pause keeps the
-    // engine's pending candidate, so the trajectory does not depend on where it pauses).
+    // The pauses: output rows and histograms, in order of their collision counts, or with the time
+    // clock of their times (a pause keeps the engine's pending candidate, so the trajectory does not
+    // depend on where it pauses).
+    const bool time_clock = spec.clock == Clock::time;
     struct Pause {
-        std::int64_t target;
+        std::int64_t target; // the collision clock's count
         bool row, histogram;
+        double time = 0;     // the time clock's time (target unused)
     };
     const auto target_of = [&](double x) {
         return static_cast<std::int64_t>(std::llround(x * static_cast<double>(N) / 2.0));
     };
     std::vector<Pause> pauses;
     for (double out : outputs)
-        pauses.push_back({target_of(out), true, false});
+        pauses.push_back(time_clock ? Pause{0, true, false, out} : Pause{target_of(out), true, false});
     if (histograms)
         for (double h : spec.histogram_times)
-            pauses.push_back({target_of(h), false, true});
-    std::stable_sort(pauses.begin(), pauses.end(),
-                     [](const Pause& a, const Pause& b) { return a.target < b.target; });
+            pauses.push_back(time_clock ? Pause{0, false, true, h} : Pause{target_of(h), false, true});
+    if (time_clock)
+        std::stable_sort(pauses.begin(), pauses.end(), [](const Pause& a, const Pause& b) { return a.time < b.time; });
+    else
+        std::stable_sort(pauses.begin(), pauses.end(),
+                         [](const Pause& a, const Pause& b) { return a.target < b.target; });
     const std::int64_t chunk = std::max<std::int64_t>(std::int64_t{1} << 16, spec.particles / 2);
 
     // Checkpoints (run.hpp ReplicaCheckpoints): a DriveState, then the engine's state.
@@ -288,7 +294,7 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
     const auto report = [&] {
         if (progress) {
             const auto c = static_cast<double>(engine.collisions());
-            progress(2.0 * c / static_cast<double>(N), end, c);
+            progress(time_clock ? std::min(engine.time(), end) : 2.0 * c / static_cast<double>(N), end, c);
         }
     };
     report();
@@ -300,8 +306,10 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
     // tests/stress). A pause (row or histogram) comes at the end of the first step at or after its
     // collision count, a step shortened to end a few collisions after it. Checkpoints come between
     // two steps (after a step's collisions, before the merged stream: `resume` goes on from there).
+    // The time clock: the steps as above, the last one before the pause shortened to end at its time
+    // t_pause exactly (the collisions stop at t_pause, the streams cover the same time).
     const auto advance_shear = [&](std::int64_t target, std::int64_t cap, std::size_t p,
-                                   const std::optional<StrangState>& resume) {
+                                   const std::optional<StrangState>& resume, double t_pause) {
         const double a = spec.shear->rate;
         // The state the next step is predicted from: its pressure tensor (times the volume) and
         // collision frequency. At an interval's start, the current state; later, the state after the
@@ -323,18 +331,27 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
         };
         const auto collide = [&](double h) {
             const double t0 = engine.time();
+            if (time_clock) { // the step that reaches the pause ends at t_pause, not at t0 + h
+                const double t_stop = t0 + h >= t_pause * (1 - 1e-14) ? t_pause : t0 + h;
+                engine.run(std::numeric_limits<std::int64_t>::max(), t_stop, tally);
+                nu_ref = engine.collision_frequency();
+                return engine.time() - t0;
+            }
             const StopReason stop = engine.run(cap, t0 + h, tally);
             nu_ref = engine.collision_frequency(); // its step start: the state after the stream, P's
             return stop == StopReason::collisions ? engine.time() - t0 : h;
         };
+        // The time clock: no step past the pause's time.
+        const auto clip = [&](double h) { return time_clock ? std::min(h, t_pause - engine.time()) : h; };
         const auto step = [&](double& pending) {
             // A step expects tau x N/2 collisions; the last one before the pause expects only the
             // remaining r and a margin of 1 + 3 sqrt(r) (it falls short with probability ~1e-3, and
             // then one more short step follows), so that one step never spans two output rows.
             const auto r = static_cast<double>(target - engine.collisions());
-            const double tau = std::min(spec.shear->time_step,
-                                        2.0 * (r + 1.0 + 3.0 * std::sqrt(r)) / static_cast<double>(N));
-            const double h = strang_step_length(tau, nu_ref, P, a, h_prev);
+            const double tau = time_clock ? spec.shear->time_step
+                                          : std::min(spec.shear->time_step,
+                                                     2.0 * (r + 1.0 + 3.0 * std::sqrt(r)) / static_cast<double>(N));
+            const double h = clip(strang_step_length(tau, nu_ref, P, a, h_prev));
             // P is the state before the last step's collisions. In a transient where the stream
             // ahead would more than double T or halve it (at a/nu = 1e6 it heats by orders of
             // magnitude), those collisions matter: they move energy from P_xx into P_yy, which the
@@ -350,7 +367,7 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
                 stream(pending);
                 pending = 0;
                 nu_ref *= std::sqrt(P.trace() / trace);
-                h_prev = strang_step_length(tau, nu_ref, P, a, 0.0);
+                h_prev = clip(strang_step_length(tau, nu_ref, P, a, 0.0));
             } else {
                 h_prev = h;
             }
@@ -360,7 +377,7 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
             step, stream, collide,
             [&](double pending) {
                 report();
-                if (engine.collisions() >= target)
+                if (time_clock ? engine.time() >= t_pause : engine.collisions() >= target)
                     return true;
                 boundary(p, StrangState{pending, h_prev, nu_ref, P});
                 return false;
@@ -373,6 +390,22 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
             const std::int64_t target = pause.target;
             if (!strang) // resumed between two Strang steps: that interval goes on first
                 boundary(p, std::nullopt);
+            if (time_clock) {
+                if (spec.shear && (strang || engine.time() < pause.time))
+                    advance_shear(0, 0, p, strang, pause.time);
+                strang.reset();
+                while (engine.time() < pause.time) {
+                    // About a chunk, by collisions or time, exactly to the pause's time.
+                    engine.run_about_until(chunk, pause.time, tally);
+                    report();
+                    boundary(p, std::nullopt);
+                }
+                if (pause.row)
+                    emit();
+                if (pause.histogram)
+                    emit_histograms();
+                continue;
+            }
             if (spec.shear && (strang || engine.collisions() < target)) {
                 // A step reaching the next pause's count is cut there (rare: the last step aims at
                 // this target), so that no two pauses share one step (an empty interval between two rows).
@@ -381,7 +414,7 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
                      q < pauses.size() && cap == std::numeric_limits<std::int64_t>::max(); ++q)
                     if (pauses[q].target > target)
                         cap = pauses[q].target - 1;
-                advance_shear(target, cap, p, strang);
+                advance_shear(target, cap, p, strang, 0.0);
                 strang.reset();
             }
             while (engine.collisions() < target) {

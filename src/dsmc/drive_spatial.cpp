@@ -8,6 +8,9 @@
 // several outputs is repeated for each). The step length is part of the discretisation (the
 // DSMC's time-step error), so it depends on the output schedule only through those shortened
 // steps, which are shorter, never longer, than domain.time_step.
+// The time clock (run.end_time): the step that would pass an output's time ends at it exactly
+// (SpatialEngine::step_to), so every replica's row is at that t; a step within 1e-9 of it is
+// stretched to it instead of leaving a sliver.
 //
 // Checkpoints: the engine's state (positions included) and the place in the output schedule, at
 // step ends; the streams are keyed by the step, so a resumed run draws the same numbers.
@@ -296,23 +299,35 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
     }
 
     const auto coll_per_particle = [&] { return 2.0 * static_cast<double>(engine.collisions()) / N; };
+    // Where the run is on its clock (RunSpec::clock): collisions per particle, or time.
+    const bool time_clock = spec.clock == Clock::time;
+    const auto clock = [&] { return time_clock ? engine.time() : coll_per_particle(); };
     while (next < outputs.size()) {
         const double nu = nu_ahead ? *nu_ahead : engine.collision_frequency();
         nu_ahead.reset();
         if (!(nu > 0) || !std::isfinite(nu))
             throw std::runtime_error("the gas has stopped colliding (collision frequency " + std::to_string(nu) +
                                      ") before the end of the run");
-        const double to_row = outputs[next] - coll_per_particle();
-        const double h = std::min(domain.time_step, std::max(to_row, 0.01 * domain.time_step));
-        engine.step(h / nu, tally);
+        if (time_clock) {
+            // The step that would reach the output ends at its time, exactly.
+            const double dt = domain.time_step / nu;
+            if (engine.time() + dt >= outputs[next] * (1 - 1e-9))
+                engine.step_to(outputs[next], tally);
+            else
+                engine.step(dt, tally);
+        } else {
+            const double to_row = outputs[next] - coll_per_particle();
+            const double h = std::min(domain.time_step, std::max(to_row, 0.01 * domain.time_step));
+            engine.step(h / nu, tally);
+        }
         bool repeat = false;
-        while (next < outputs.size() && coll_per_particle() >= outputs[next] * (1 - 1e-12)) {
+        while (next < outputs.size() && clock() >= outputs[next] * (1 - 1e-12)) {
             emit(repeat, next + 1);
             repeat = true;
             ++next;
         }
         if (io.progress)
-            io.progress(std::min(coll_per_particle(), end), end, static_cast<double>(engine.collisions()));
+            io.progress(std::min(clock(), end), end, static_cast<double>(engine.collisions()));
         if (ck && ck->save) {
             const bool stop = ck->stop && ck->stop();
             if (stop || (every > 0 && coll_per_particle() >= next_save && next < outputs.size())) {

@@ -34,6 +34,7 @@ CaseConfig parse_case(std::string_view toml_text, const std::string& file,
     for (const std::string& arg : overrides) {
         case_file::apply_override(root, arg, d);
     }
+    case_file::switch_clock(root, overrides);
     d.throw_if_any();
     case_file::check_schema(root, d);
     d.throw_if_any(); // the builder relies on every present value having the right type

@@ -153,23 +153,49 @@ std::vector<Key> keys() {
                  "restitution only; in a [domain] run each pair of a cell, at the rate with the cell for the "
                  "volume)"),
         Key("run.seed", T::integer).fallback(std::int64_t{1}).ge(0).doc("random seed (same seed, same run)"),
-        Key("run.end", T::real).unit("collisions per particle").required().gt(0).doc("length of the run"),
+        Key("run.end", T::real)
+            .unit("collisions per particle")
+            .when("required unless end_time is given")
+            .gt(0)
+            .doc("length of the run, counted in collisions per particle (the collision clock); exactly one of "
+                 "end and end_time"),
+        Key("run.end_time", T::real)
+            .unit("time")
+            .when("unset")
+            .gt(0)
+            .doc("length of the run in the case's time unit, instead of end (the time clock): output_every_time "
+                 "and histogram_every_time replace output_every and histogram_every, and every replica's rows, "
+                 "and those of runs started from other states, fall at the same t (a row at time t holds the "
+                 "state after the last collision before t; a box's rows end a step shortened to end at t)"),
         Key("run.output_every", T::real)
             .unit("collisions per particle")
             .fallback(1.0)
             .gt(0)
-            .doc("linear: interval between outputs; log: time of the first output"),
+            .doc("linear: interval between outputs; log: time of the first output (with run.end only)"),
+        Key("run.output_every_time", T::real)
+            .unit("time")
+            .when("end_time / 100")
+            .gt(0)
+            .doc("with run.end_time, instead of output_every: linear: interval between outputs; log: time of the "
+                 "first output (spaced as output_spacing)"),
         Key("run.output_spacing", T::string)
             .fallback(std::string("linear"))
             .one_of(output_spacing_names)
-            .doc("linear: every output_every; log: at output_every x 10^(k/10), k = 0, 1, ... (10 per "
-                 "decade); an output that would fall on the collision count of the one before is left out"),
+            .doc("linear: every output_every (output_every_time); log: at output_every x 10^(k/10), k = 0, 1, "
+                 "... (10 per decade); with run.end, an output that would fall on the collision count of the one "
+                 "before is left out (with run.end_time every output time is a row)"),
         Key("run.histogram_every", T::real)
             .unit("collisions per particle")
             .fallback(0.0)
             .ge(0)
             .doc("histograms of c*, w*, c*.w* to DIR/histograms.csv at these times (spaced as "
-                 "histogram_spacing, always at the end); 0: none. Must be <= end"),
+                 "histogram_spacing, always at the end); 0: none. Must be <= end (with run.end only)"),
+        Key("run.histogram_every_time", T::real)
+            .unit("time")
+            .fallback(0.0)
+            .ge(0)
+            .doc("with run.end_time, instead of histogram_every: the histograms at these times (spaced as "
+                 "histogram_spacing, always at the end); 0: none. Must be <= end_time"),
         Key("run.histogram_spacing", T::string)
             .fallback(std::string("linear"))
             .one_of(output_spacing_names)

@@ -25,7 +25,8 @@ const Quantity quantities[] = {
 } // namespace
 
 HistogramsTable::HistogramsTable(const RunSpec& spec)
-    : replicas_(spec.replicas), grid_{spec.histogram_bins, spec.histogram_max} {
+    : replicas_(spec.replicas), time_clock_(spec.clock == Clock::time),
+      grid_{spec.histogram_bins, spec.histogram_max} {
     if (replicas_ < 1)
         throw std::invalid_argument("HistogramsTable: replicas must be >= 1");
     for (const SpeciesSpec& s : spec.species)
@@ -70,11 +71,19 @@ std::vector<std::vector<double>> HistogramsTable::combine(std::span<const Histog
             x[r] = value(sets[r]);
         return replica_mean(x);
     };
-    const ReplicaMean t = mean([](const HistogramSet& h) { return h.t; });
+    // The time clock's histograms are at the same t in every replica: that t exactly.
+    for (std::size_t r = 0; r < sets.size(); ++r)
+        x[r] = sets[r].t;
+    const ReplicaMean t = replica_mean_of_shared(x);
+    // The collision clock's: replica 0's count, the one the histograms were asked at (the replicas of
+    // a shear run pause at the end of the first Strang step past it, a few collisions apart). The
+    // time clock's: each replica has its own count at the shared t, so their mean.
+    const double coll = time_clock_ ? mean([](const HistogramSet& h) { return h.coll_per_particle; }).mean
+                                    : sets[0].coll_per_particle;
     std::vector<std::vector<double>> rows(B);
     for (std::size_t k = 0; k < B; ++k) {
         std::vector<double>& row = rows[k];
-        row.push_back(sets[0].coll_per_particle); // the same in every replica (a collision count)
+        row.push_back(coll);
         row.push_back(t.mean);
         if (errors)
             row.push_back(t.error);
@@ -97,8 +106,8 @@ std::vector<std::vector<double>> HistogramsTable::combine(std::span<const Histog
 
 std::string histograms_columns_markdown() {
     std::string s = "| Column | Unit | Meaning |\n|--------|------|---------|\n";
-    s += "| `coll_per_particle` | - | time of the histograms, in collisions per particle (2 x collisions / N) |\n";
-    s += "| `t` | time | the same in the case's time unit (mean over replicas) |\n";
+    s += "| `coll_per_particle` | - | time of the histograms, in collisions per particle (2 x collisions / N; with run.end_time the mean over replicas) |\n";
+    s += "| `t` | time | the same in the case's time unit (mean over replicas; with run.end_time the requested time) |\n";
     s += "| `t_err` | time | standard error of t over replicas (replicas > 1) |\n";
     for (const Quantity& q : quantities) {
         const bool product = q.member == &SpeciesHistograms::cw;

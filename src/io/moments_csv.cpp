@@ -234,10 +234,10 @@ MomentsTable::combine_entries(std::span<const std::span<const double>> rows, std
     std::vector<double> x(rows.size());
     for (std::size_t e = 0; e < entries; ++e) {
         std::vector<double> row;
-        for (std::size_t j = 0; j < 2; ++j) { // t, coll_per_particle: the replicas' mean
+        for (std::size_t j = 0; j < 2; ++j) { // t, coll_per_particle: the replicas' mean (t: exact when shared)
             for (std::size_t r = 0; r < rows.size(); ++r)
                 x[r] = rows[r][j];
-            row.push_back(replica_mean(x).mean);
+            row.push_back(j == 0 ? replica_mean_of_shared(x).mean : replica_mean(x).mean);
         }
         for (double h : head(e))
             row.push_back(h);
@@ -296,7 +296,10 @@ std::vector<double> MomentsTable::combine(std::span<const std::span<const double
     for (std::size_t j = 0; j < n; ++j) {
         for (std::size_t r = 0; r < rows.size(); ++r)
             x[r] = rows[r][j];
-        const ReplicaMean m = replica_mean(x);
+        // Column 0, t: the time clock's rows at the same t in every replica keep it exactly (and the
+        // theory columns below are taken at it). coll_per_particle, shared by the collision clock's
+        // replicas, keeps its mean as it always has.
+        const ReplicaMean m = j == 0 ? replica_mean_of_shared(x) : replica_mean(x);
         out.push_back(m.mean);
         if (replicas_ > 1)
             out.push_back(m.error);

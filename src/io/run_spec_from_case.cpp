@@ -132,11 +132,20 @@ RunSpec run_spec_from_case(const CaseConfig& cfg) {
     spec.replicas = static_cast<int>(cfg.run.replicas);
     spec.groups = static_cast<int>(cfg.run.groups);
     spec.kernel = cfg.run.kernel;
-    spec.end = cfg.run.end;
-    spec.output_times = rows_apart(output_times(cfg.run.output_every, cfg.run.end, cfg.run.output_spacing),
-                                   cfg.run.particles);
-    if (cfg.run.histogram_every > 0)
-        spec.histogram_times = output_times(cfg.run.histogram_every, cfg.run.end, cfg.run.histogram_spacing);
+    if (cfg.run.time_clock()) {
+        // Times, each a row of its own (two rows may hold the same collision count: no collision between).
+        spec.clock = Clock::time;
+        spec.end = *cfg.run.end_time;
+        spec.output_times = output_times(cfg.run.output_every_time.value(), spec.end, cfg.run.output_spacing);
+        if (cfg.run.histogram_every_time > 0)
+            spec.histogram_times = output_times(cfg.run.histogram_every_time, spec.end, cfg.run.histogram_spacing);
+    } else {
+        spec.end = cfg.run.end;
+        spec.output_times = rows_apart(output_times(cfg.run.output_every, cfg.run.end, cfg.run.output_spacing),
+                                       cfg.run.particles);
+        if (cfg.run.histogram_every > 0)
+            spec.histogram_times = output_times(cfg.run.histogram_every, cfg.run.end, cfg.run.histogram_spacing);
+    }
     spec.histogram_bins = static_cast<int>(cfg.run.histogram_bins);
     spec.histogram_max = cfg.run.histogram_max;
     spec.contact_tolerance = cfg.contact.tolerance;

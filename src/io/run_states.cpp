@@ -60,13 +60,22 @@ void check_cooling_reach_from(const StateFile& state, const RunSpec& spec, const
     }
     if (!std::all_of(T.T_tr.begin(), T.T_tr.end(), [](double t) { return t > 0 && std::isfinite(t); }))
         return; // a gas at rest does not cool
+    const bool time = spec.clock == Clock::time;
     double reach = HUGE_VAL;
     try {
-        reach = cooling_reach(*theory, T, underflow_temperature_per_mass);
+        reach = time ? cooling_reach_time(*theory, T, underflow_temperature_per_mass)
+                     : cooling_reach(*theory, T, underflow_temperature_per_mass);
     } catch (const std::invalid_argument&) {
         return;
     }
-    if (spec.end > reach)
+    if (time && spec.end > reach)
+        throw InputError(case_file, "run.end_time",
+                         fmt::format("run.end_time = {}: the state of initial.from = \"{}\" (T_tr = {:.3g} for the "
+                                     "first species) cools with constant restitution and reaches T_tr/m = 1e-300 "
+                                     "(velocities squared underflow) at about t = {:.4g} from its start (Haff's law: "
+                                     "T_tr ~ 1/t^2): end it before (run.end_time < {:.4g})",
+                                     spec.end, dir, T.T_tr[0], reach, reach));
+    if (!time && spec.end > reach)
         throw InputError(case_file, "run.end",
                          fmt::format("run.end = {}: the state of initial.from = \"{}\" (T_tr = {:.3g} for the first "
                                      "species) cools with constant restitution and reaches T_tr/m = 1e-300 "

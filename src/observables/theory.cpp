@@ -176,35 +176,71 @@ double reduced_cooling_rate(const HcsTheory& theory, const HcsTemperatures& T) {
     return -theory.mixture_T_tr(rate) / (theory.mixture_T_tr(T) * nu / x);
 }
 
-double cooling_reach(const HcsTheory& theory, const HcsTemperatures& initial, double floor) {
-    const std::size_t S = theory.species_count();
-    if (!(collision_frequency(theory, initial) > 0) || !(floor > 0))
-        return HUGE_VAL;
+namespace {
+
+// The trajectory from `initial` until its reduced cooling rate zeta* settles (the cooling state's
+// ratios of the temperatures): where and when it is then, the collisions per particle on the way
+// (the fall of ln T_tr over zeta*), and the settled zeta*.
+struct SettledCooling {
+    HcsTemperatures T;
+    double t = 0, collisions = 0, zeta = 0;
+};
+
+SettledCooling settle_cooling(const HcsTheory& theory, const HcsTemperatures& initial) {
     // Steps of about 5 collisions per particle at the current frequency (the gas's own clock: an
     // elastic gas keeps it, a cooling one slows it), until zeta* settles to 1e-9 (or 1e-15 absolute:
     // an elastic gas's tends to 0), or 4000 steps.
     HcsTrajectory trajectory(theory, initial);
-    HcsTemperatures T = initial;
-    double t = 0, zeta = reduced_cooling_rate(theory, T), collisions = 0;
+    SettledCooling s{initial, 0.0, 0.0, reduced_cooling_rate(theory, initial)};
     for (int k = 0; k < 4000; ++k) {
-        t += 5.0 / collision_frequency(theory, T);
+        const double t = s.t + 5.0 / collision_frequency(theory, s.T);
         const HcsTemperatures next = trajectory.at(t);
         const double z = reduced_cooling_rate(theory, next);
-        const double mean = 0.5 * (zeta + z); // -d ln T_tr/ds, nearly constant over the step
+        const double mean = 0.5 * (s.zeta + z); // -d ln T_tr/ds, nearly constant over the step
         if (mean > 0)
-            collisions += std::log(theory.mixture_T_tr(T) / theory.mixture_T_tr(next)) / mean;
-        const bool settled = std::abs(z - zeta) <= std::max(1e-9 * std::abs(z), 1e-15);
-        T = next;
-        zeta = z;
+            s.collisions += std::log(theory.mixture_T_tr(s.T) / theory.mixture_T_tr(next)) / mean;
+        const bool settled = std::abs(z - s.zeta) <= std::max(1e-9 * std::abs(z), 1e-15);
+        s.t = t;
+        s.T = next;
+        s.zeta = z;
         if (settled)
             break;
     }
-    if (!(zeta > 1e-12))
-        return HUGE_VAL;
+    return s;
+}
+
+// The smallest T_tr,s/m_s over `floor`: the factor the settled gas still cools by.
+double fall_to_floor(const HcsTheory& theory, const HcsTemperatures& T, double floor) {
     double least = HUGE_VAL;
-    for (std::size_t s = 0; s < S; ++s)
+    for (std::size_t s = 0; s < theory.species_count(); ++s)
         least = std::min(least, T.T_tr[s] / theory.species()[s].mass);
-    return collisions + std::log(least / floor) / zeta;
+    return least / floor;
+}
+
+} // namespace
+
+double cooling_reach(const HcsTheory& theory, const HcsTemperatures& initial, double floor) {
+    if (!(collision_frequency(theory, initial) > 0) || !(floor > 0))
+        return HUGE_VAL;
+    const SettledCooling s = settle_cooling(theory, initial);
+    if (!(s.zeta > 1e-12))
+        return HUGE_VAL;
+    return s.collisions + std::log(fall_to_floor(theory, s.T, floor)) / s.zeta;
+}
+
+double cooling_reach_time(const HcsTheory& theory, const HcsTemperatures& initial, double floor) {
+    if (!(collision_frequency(theory, initial) > 0) || !(floor > 0))
+        return HUGE_VAL;
+    const SettledCooling s = settle_cooling(theory, initial);
+    if (!(s.zeta > 1e-12))
+        return HUGE_VAL;
+    const double nu = collision_frequency(theory, s.T);
+    const double fall = fall_to_floor(theory, s.T, floor);
+    if (theory.maxwell()) // a constant frequency: T_tr = T_1 exp(-zeta* nu (t - t_1))
+        return s.t + std::log(fall) / (s.zeta * nu);
+    // Hard spheres: nu = nu_1 sqrt(T/T_1), so d ln T/dt = -zeta* nu gives Haff's law
+    // sqrt(T_1/T) = 1 + zeta* nu_1 (t - t_1)/2.
+    return s.t + 2.0 * (std::sqrt(fall) - 1.0) / (s.zeta * nu);
 }
 
 // --- the trajectory ---

@@ -4,7 +4,8 @@
 // interrupted. Cases: a rough cooling run with 3 replicas on 2 threads (one replica waits for a
 // thread) and histograms, a shear run, a rough binary mixture with histograms, a spatially
 // resolved box (with its cell fields: every HDF5 file and XDMF sidecar the same bytes), the box
-// between walls, the box of smooth grains with its spectra.csv and modes.csv, a sheared box. The
+// between walls, the box of smooth grains with its spectra.csv and modes.csv, a sheared box, and a
+// cooling run, a shear run and a box clocked by time (run.end_time). The
 // kill moments come from a seeded generator (printed on failure); no result depends on them.
 #include "../io/io_test_support.hpp"
 #include "child_process.hpp"
@@ -87,6 +88,25 @@ std::string rough_mixture() {
            "[[species]]\nname = \"large\"\nmass = 8.0\nradius = 1.0\nfraction = 0.5\n\n"
            "[collision]\nmodel = \"constant\"\nalpha = 0.9\nbeta = 0.5\n\n"
            "[[pair]]\nspecies = [\"large\", \"large\"]\nalpha = 0.8\nbeta = 0.0\n";
+}
+
+// The time clock (run.end_time): rows at times, the stretches between them run towards a time; 4
+// groups, so that the grouped engine's time stops are in the checkpoints too.
+std::string rough_cooling_time_clock() {
+    return "[run]\nparticles = 20000\ngroups = 4\nend_time = 5.0\noutput_every_time = 0.1\nreplicas = 3\n"
+           "seed = 11\nhistogram_every_time = 2.5\nhistogram_bins = 20\n\n[[species]]\nname = \"grain\"\n"
+           "mass = 1.0\nradius = 0.5\n\n[collision]\nmodel = \"constant\"\nalpha = 0.8\nbeta = 0.3\n";
+}
+
+// The shear flow by time: Strang steps, the last before each row shortened to end at its t (about
+// 30 collisions per particle by t = 8).
+std::string shear_time_clock() {
+    return test::replaced(shear(), "end = 30.0\noutput_every = 1.0\n", "end_time = 8.0\noutput_every_time = 0.25\n");
+}
+
+// The box by time: steps that end at the rows' times.
+std::string box_time_clock() {
+    return test::replaced(box(), "end = 30.0\noutput_every = 1.0\n", "end_time = 200.0\noutput_every_time = 8.0\n");
 }
 
 // `roughgas run ...` to completion (stdout and stderr in `dir`).
@@ -213,7 +233,10 @@ INSTANTIATE_TEST_SUITE_P(
                       Scenario{"Shear", shear(), "1"}, Scenario{"RoughMixture", rough_mixture(), "2"},
                       Scenario{"Box", box_fields(), "2"}, Scenario{"BoxWalls", box_walls(), "2"},
                       Scenario{"BoxSmoothSpectra", box_smooth_spectra(), "2"},
-                      Scenario{"BoxShear", box_shear(), "2"}),
+                      Scenario{"BoxShear", box_shear(), "2"},
+                      Scenario{"RoughCoolingTimeClock", rough_cooling_time_clock(), "1.5"},
+                      Scenario{"ShearTimeClock", shear_time_clock(), "1"},
+                      Scenario{"BoxTimeClock", box_time_clock(), "2"}),
     [](const ::testing::TestParamInfo<Scenario>& info) { return info.param.name; });
 
 // Every line after the '#' lines has as many cells as the header: a CSV that a reader takes as is.

@@ -385,6 +385,21 @@ std::vector<BadRun> bad_runs() {
         {"HistogramsAfterTheEnd", c, "--set run.histogram_every=5.0", "run.histogram_every",
          "must be <= run.end = 4"},
         {"NegativeHistogramTime", c, "--set run.histogram_every=-1.0", "run.histogram_every", "must be >= 0"},
+        // The clocks: exactly one of run.end (collisions per particle) and run.end_time (time), and only
+        // that clock's output and histogram keys.
+        {"EndAndEndTime", c, "--set run.end_time=1.0 --set run.end=2.0", "run.end_time",
+         "give either run.end (collisions per particle) or run.end_time (time), not both"},
+        {"NeitherEndNorEndTime", replaced(c, "end = 4\n", ""), "", "run.end",
+         "required key is missing (must be a real number > 0 (collisions per particle); or give run.end_time, a "
+         "real number > 0 (time))"},
+        {"OutputEveryWithEndTime", replaced(c, "end = 4\n", "end_time = 1.0\n"), "", "run.output_every",
+         "clocked by run.end_time (time): use run.output_every_time instead"},
+        {"OutputEveryTimeWithEnd", c, "--set run.output_every_time=0.1", "run.output_every_time",
+         "ends at run.end (collisions per particle): use run.output_every instead"},
+        {"HistogramsAfterTheEndTime", c, "--set run.end_time=1.0 --set run.histogram_every_time=2.0",
+         "run.histogram_every_time", "must be <= run.end_time = 1"},
+        {"NegativeEndTime", c, "--set run.end_time=-1.0", "run.end_time", "must be > 0"},
+        {"EndTimeBeyondUnderflow", c, "--set run.end_time=1e200", "run.end_time", "end it before (run.end_time < "},
         {"MaxwellKernelWithCoulomb", c + "\n", "--set run.kernel=maxwell --set collision.model=coulomb --set collision.friction=0.1 --set collision.beta0=0.5",
          "run.kernel", "needs model = \"constant\" for every pair"},
     };

@@ -354,6 +354,23 @@ TEST(HcsTheory, CoolingReach) {
     EXPECT_TRUE(std::isinf(cooling_reach(one_species(1.0, 1.0), {{1.0}, {0.0}}, floor)));
 }
 
+// cooling_reach_time: the time at which the trajectory itself gets T_tr/m down to the floor (Haff's
+// law for smooth grains, the integrated equations for rough ones started at their fixed point),
+// finite although the gas cools for ever; an elastic gas never gets there.
+TEST(HcsTheory, CoolingReachTime) {
+    const double floor = 1e-300;
+    const HcsTheory smooth = one_species(0.8, -1.0, 0.4, 1.5);
+    const double t_smooth = cooling_reach_time(smooth, {{2.0}, {0.3}}, floor);
+    ASSERT_TRUE(std::isfinite(t_smooth));
+    EXPECT_GT(t_smooth, 1e140);
+    EXPECT_NEAR(HcsTrajectory(smooth, {{2.0}, {0.3}}).at(t_smooth).T_tr[0] / 1.5 / floor, 1.0, 1e-6);
+    const HcsTheory rough = one_species(0.9, 0.4);
+    const HcsTemperatures at_star{{1.0}, {theta_fixed_point(0.9, 0.4, 0.4)}};
+    const double t_rough = cooling_reach_time(rough, at_star, floor);
+    EXPECT_NEAR(HcsTrajectory(rough, at_star).at(t_rough).T_tr[0] / floor, 1.0, 1e-4);
+    EXPECT_TRUE(std::isinf(cooling_reach_time(one_species(1.0, 1.0), {{1.0}, {0.0}}, floor)));
+}
+
 TEST(HcsTheory, RejectsInvalidParameters) {
     EXPECT_THROW(one_species(-0.1, 0.0), std::invalid_argument);
     EXPECT_THROW(one_species(0.9, 1.5), std::invalid_argument);

@@ -333,6 +333,26 @@ class Engine {
         return run(std::min(collision_target, c0 + n), std::numeric_limits<double>::infinity(), obs);
     }
 
+    // The same towards a time: about `n` more collisions, never past `t_stop` (the time clock's
+    // stretches between pauses). Returns `time` once at t_stop (time() = t_stop exactly, the state
+    // that of the last collision before it), else `collisions`. Grouped runs stop at the time the
+    // current rate gives n collisions (one phase per step, as run_about), ungrouped ones at the count.
+    template <class Observer> StopReason run_about_until(std::int64_t n, double t_stop, Observer&& obs) {
+        const std::int64_t c0 = collisions();
+        if (G_ > 1) {
+            const double rate = candidate_rate() * measured_acceptance(); // NaN before 1000 candidates
+            if (rate > 0 && std::isfinite(rate)) {
+                const double t_chunk = t_ + static_cast<double>(n) / rate;
+                if (!(t_chunk < t_stop))
+                    return run(std::numeric_limits<std::int64_t>::max(), t_stop, obs);
+                const StopReason r = run(std::numeric_limits<std::int64_t>::max(), t_chunk, obs);
+                if (collisions() - c0 >= n / 4)
+                    return r == StopReason::time ? StopReason::collisions : r;
+            }
+        }
+        return run(c0 + n, t_stop, obs);
+    }
+
     // Ends the current step now: the next run() refreshes the bounds first. Required after the
     // state was changed from outside (e.g. velocities rescaled); exact, since the pending candidate
     // is discarded (memoryless clock).

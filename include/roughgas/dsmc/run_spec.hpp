@@ -143,6 +143,15 @@ struct DomainSpec {
     bool general_flight() const { return has_walls() || has_gravity() || lees_edwards(); }
 };
 
+// What a run's end, output times and histogram times count (run.end or run.end_time):
+//   collisions  collisions per particle, 2 x collisions / N: the work done; a row is the state right
+//               after the collision that completes its count;
+//   time        the case's time unit: rows of every replica, and of runs started from other states (a
+//               hot and a cold gas), at the same t. The homogeneous gas's row at t is its state at t,
+//               after the last collision before t (Engine::run stops at t exactly: the DSMC state is
+//               constant between collisions); a box's row ends a step shortened to end at t.
+enum class Clock { collisions, time };
+
 struct RunSpec {
     std::vector<SpeciesSpec> species;
     // Model of species pair (a, b), a <= b, at index pair_index(a, b, species.size()).
@@ -151,10 +160,11 @@ struct RunSpec {
     double density = 1;                 // number density n
     std::uint64_t seed = 1;
     int replicas = 1;
-    double end = 10;                    // collisions per particle
-    std::vector<double> output_times;   // collisions per particle, increasing, the last one == end
-    // Histograms of c*, w*, c*.w* (observables/histograms.hpp) at these times (collisions per
-    // particle, increasing, <= end; empty: none), with `histogram_bins` bins over [0, histogram_max)
+    Clock clock = Clock::collisions;    // what end, output_times and histogram_times count
+    double end = 10;                    // collisions per particle (the time clock: time)
+    std::vector<double> output_times;   // in the clock's unit, increasing, the last one == end
+    // Histograms of c*, w*, c*.w* (observables/histograms.hpp) at these times (in the clock's unit,
+    // increasing, <= end; empty: none), with `histogram_bins` bins over [0, histogram_max)
     // (speeds) and [-histogram_max, histogram_max) (c*.w*). Pausing there does not change the run.
     std::vector<double> histogram_times;
     int histogram_bins = 50;

@@ -301,6 +301,12 @@ template <class Policy, bool General = false> class SpatialEngine {
         ++steps_;
         tallies_valid_ = true;
     }
+    // A step that ends at t_end exactly (the time clock's rows: every replica's at the same t), not
+    // at t + (t_end - t), which may differ from t_end in the last bit.
+    template <class Observer> void step_to(double t_end, Observer& obs) {
+        step(t_end - t_, obs);
+        t_ = t_end;
+    }
 
     // Per (cell, species), cells x fastest (i_x + n_x (i_y + n_y i_z)): the count of the grains as they
     // are now, the sum of their velocities and the sum of |v|^2 (cell_sum_fields numbers, in store

@@ -66,10 +66,15 @@ struct RunConfig {
     std::int64_t groups = 0;    // per-step random groups of the DSMC (0: automatic)
     CollisionKernel kernel = CollisionKernel::hard_sphere;
     std::uint64_t seed = 1;
-    double end = 0;            // collisions per particle
+    double end = 0;            // collisions per particle (0 with end_time)
     double output_every = 1.0; // collisions per particle (first output for log spacing)
     OutputSpacing output_spacing = OutputSpacing::linear;
     double histogram_every = 0; // collisions per particle; 0: no histograms
+    // The time clock (run.end_time): the run's length, output and histogram times in the case's time
+    // unit instead of the three above. Set: end_time and output_every_time (end_time/100 if not given).
+    std::optional<double> end_time, output_every_time;
+    double histogram_every_time = 0; // time; 0: no histograms
+    bool time_clock() const { return end_time.has_value(); }
     OutputSpacing histogram_spacing = OutputSpacing::linear;
     std::int64_t histogram_bins = 50;
     double histogram_max = 5.0; // reduced speed range

@@ -32,6 +32,7 @@ class HistogramsTable {
     std::vector<Column> columns_;
     std::vector<std::string> species_;
     int replicas_ = 1;
+    bool time_clock_ = false; // run.end_time: the replicas share t, not the collision count
     HistogramGrid grid_;
     std::vector<double> speed_x_, product_x_, speed_ref_, product_ref_;
 };

@@ -164,6 +164,11 @@ class HcsTrajectory {
 // collisions on the way counted as the fall of ln T_tr over zeta*; then ln(min T_tr,s/m_s / floor)/zeta*
 // more. +infinity if the settled zeta* is not > 0 (an elastic gas).
 double cooling_reach(const HcsTheory& theory, const HcsTemperatures& initial, double floor);
+// The same as a time (the case's time unit): the time the trajectory took to settle, then the time
+// the settled gas takes to cool by the rest, by Haff's law T_tr ~ (1 + zeta* nu t/2)^-2 (hard
+// spheres: nu ~ sqrt(T_tr)) or exponentially (the Maxwell kernel's constant nu). Finite wherever
+// cooling_reach is: in a finite time a cooling gas collides finitely often (~ ln t per particle).
+double cooling_reach_time(const HcsTheory& theory, const HcsTemperatures& initial, double floor);
 // The floor a run checks its reach against: below T_tr,s/m_s = 1e-300 (in the case's units) the
 // squares of the velocities underflow.
 inline constexpr double underflow_temperature_per_mass = 1e-300;

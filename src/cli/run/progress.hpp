@@ -13,7 +13,9 @@ namespace roughgas::cli {
 
 class ProgressLine {
   public:
-    // `replicas` reports, each going from 0 to `end` collisions per particle. `out` null: silent.
+    // `replicas` reports, each going from 0 to `end` collisions per particle (the time clock: from 0
+    // to `end` in time; the time to go then assumes a constant cost per unit time, which a cooling
+    // gas, colliding ever less often, beats). `out` null: silent.
     ProgressLine(std::ostream* out, int replicas, bool terminal, double interval_seconds = 0.25,
                  double log_interval_seconds = 10);
     // Replica `r` has done `done` of `end` collisions per particle, `collisions` collisions.

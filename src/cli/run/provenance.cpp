@@ -57,7 +57,17 @@ RunProvenance run_provenance(const RunSetup& setup, const MomentsTable& table, b
         fmt::format("replicas: {}{}", K, K > 1 ? " (X = mean over replicas, X_err = its standard error)" : ""),
         unit_system_note(cfg),
     };
-    if (spec.shear)
+    if (spec.clock == Clock::time)
+        prov.notes.push_back(spec.domain ? "time clock (run.end_time): rows at the output times t, each the end of a "
+                                           "step shortened to end there"
+                                         : "time clock (run.end_time): rows at the output times t, each the state "
+                                           "after the last collision before t");
+    if (spec.shear && spec.clock == Clock::time)
+        prov.notes.push_back(fmt::format(
+            "uniform shear flow u = a y x, a = {}: V = v - u; Strang steps of {} mean free times, the last one "
+            "before each output shortened to end at its t",
+            spec.shear->rate, spec.shear->time_step));
+    else if (spec.shear)
         prov.notes.push_back(fmt::format(
             "uniform shear flow u = a y x, a = {}: V = v - u; Strang steps of {} mean free times; "
             "rows at the end of the first step at or after each output's coll_per_particle",

@@ -48,7 +48,7 @@ void ReplicaScheduler::run() {
         if (records_.finished[static_cast<std::size_t>(r)]) {
             records_.final_saved[static_cast<std::size_t>(r)] = 1; // its file says so already
             if (range.mine(r))
-                progress_.update(r - range.mine_from, setup_.cfg.run.end, setup_.cfg.run.end, 0);
+                progress_.update(r - range.mine_from, setup_.spec.end, setup_.spec.end, 0);
         }
     std::atomic<bool> cancel{false};
     std::exception_ptr error;

@@ -67,6 +67,9 @@ void check_domain(BuildContext& ctx, const CaseConfig& c) {
     if (c.run.histogram_every > 0)
         ctx.add("run.histogram_every", "run.histogram_every with [domain]: histograms are written for the "
                                        "homogeneous gas only (set it to 0)");
+    if (c.run.time_clock() && c.run.histogram_every_time > 0)
+        ctx.add("run.histogram_every_time", "run.histogram_every_time with [domain]: histograms are written for "
+                                            "the homogeneous gas only (set it to 0)");
     const double cells =
         static_cast<double>(d.cells[0]) * static_cast<double>(d.cells[1]) * static_cast<double>(d.cells[2]);
     if (cells > 1e8)

@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
+#include <string_view>
 
 namespace roughgas::case_file {
 namespace {
@@ -126,6 +128,29 @@ void apply_override(toml::table& root, const std::string& arg, Diagnostics& d) {
     toml::table wrapped = parse_override_value(trim(arg.substr(eq + 1)), find_key(schema_path(segs)));
     parent->insert_or_assign(segs.back(), std::move(*wrapped.get("v")));
     d.mark_override(key);
+}
+
+void switch_clock(toml::table& root, const std::vector<std::string>& overrides) {
+    static constexpr std::array<std::string_view, 3> collisions{"end", "output_every", "histogram_every"};
+    static constexpr std::array<std::string_view, 3> time{"end_time", "output_every_time", "histogram_every_time"};
+    bool set_end = false, set_end_time = false;
+    for (const std::string& arg : overrides) {
+        const std::string key = trim(arg.substr(0, arg.find('=')));
+        set_end = set_end || key == "run.end";
+        set_end_time = set_end_time || key == "run.end_time";
+    }
+    toml::table* run = root["run"].as_table();
+    if (set_end == set_end_time || run == nullptr)
+        return; // neither end set, or both: the checks of [run] decide
+    // The other clock's keys as the file has them; those set with --set stay (and are refused).
+    for (std::string_view k : set_end_time ? collisions : time) {
+        const std::string key = "run." + std::string(k);
+        const bool overridden = std::any_of(overrides.begin(), overrides.end(), [&](const std::string& arg) {
+            return trim(arg.substr(0, arg.find('='))) == key;
+        });
+        if (!overridden)
+            run->erase(k);
+    }
 }
 
 } // namespace roughgas::case_file

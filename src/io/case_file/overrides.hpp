@@ -14,6 +14,12 @@ namespace roughgas::case_file {
 // way; a malformed argument is reported to `d` and leaves `root` as it was.
 void apply_override(toml::table& root, const std::string& arg, Diagnostics& d);
 
+// The clock of the run: an override of run.end_time (and not of run.end) switches a case written for
+// run.end to the time clock: the file's run.end, run.output_every and run.histogram_every are left
+// out, so that e.g. --set run.end_time=5 runs it by time; an override of run.end switches back the
+// same way. Keys of the other clock set with --set stay, and are refused by the checks of [run].
+void switch_clock(toml::table& root, const std::vector<std::string>& overrides);
+
 std::vector<std::string> split_path(const std::string& key);     // "species.1.mass" -> species, 1, mass
 std::string schema_path(const std::vector<std::string>& segments); // array indices left out: "species.mass"
 

@@ -1,5 +1,8 @@
-// [run]: its build, the checks of run.kernel, run.end and run.histogram_every, and its emission.
+// [run]: its build, the checks of run.kernel, the clock (run.end or run.end_time), run.end and
+// run.histogram_every, and its emission.
 #include "run_table.hpp"
+
+#include "messages.hpp"
 
 #include "roughgas/dsmc/species.hpp"
 #include "roughgas/observables/theory.hpp"
@@ -40,9 +43,23 @@ void check_cooling_reach(BuildContext& ctx, const CaseConfig& c) {
     }
     double reach = HUGE_VAL;
     try {
-        reach = cooling_reach(HcsTheory(species, pairs, c.run.density), T, underflow_temperature_per_mass);
+        const HcsTheory theory(species, pairs, c.run.density);
+        reach = c.run.time_clock() ? cooling_reach_time(theory, T, underflow_temperature_per_mass)
+                                   : cooling_reach(theory, T, underflow_temperature_per_mass);
     } catch (const std::invalid_argument&) {
         return; // refused elsewhere
+    }
+    if (c.run.time_clock()) {
+        // Haff's law: T_tr falls as 1/t^2 once the gas cools in its cooling state, so the floor
+        // comes at a finite time (some 1e150 mean free times from T_tr/m = 1: collisions per
+        // particle grow only as ln t).
+        if (*c.run.end_time > reach)
+            ctx.add("run.end_time",
+                    fmt::format("run.end_time = {}: a gas cooling with constant restitution reaches T_tr/m = 1e-300 "
+                                "(velocities squared underflow) at about t = {:.4g} (Haff's law: T_tr ~ 1/t^2): "
+                                "end it before (run.end_time < {:.4g})",
+                                *c.run.end_time, reach, reach));
+        return;
     }
     if (c.run.end > reach)
         ctx.add("run.end",
@@ -82,10 +99,15 @@ RunConfig build_run(const Reader& r) {
     c.groups = r.integer("groups");
     c.kernel = r.choice<CollisionKernel>("kernel", kernel_names);
     c.seed = static_cast<std::uint64_t>(r.integer("seed"));
-    c.end = r.real("end");
+    c.end = r.opt_real("end").value_or(0.0);
+    c.end_time = r.opt_real("end_time");
     c.output_every = r.real("output_every");
+    c.output_every_time = r.opt_real("output_every_time");
+    if (c.end_time && !c.output_every_time)
+        c.output_every_time = *c.end_time / 100;
     c.output_spacing = r.choice<OutputSpacing>("output_spacing", output_spacing_names);
     c.histogram_every = r.real("histogram_every");
+    c.histogram_every_time = r.real("histogram_every_time");
     c.histogram_spacing = r.choice<OutputSpacing>("histogram_spacing", output_spacing_names);
     c.histogram_bins = r.integer("histogram_bins");
     c.histogram_max = r.real("histogram_max");
@@ -93,13 +115,51 @@ RunConfig build_run(const Reader& r) {
     return c;
 }
 
+// Exactly one clock: run.end (collisions per particle) or run.end_time (time), and the output and
+// histogram keys of that clock only, since the other clock's numbers mean something else.
+void check_clock(BuildContext& ctx, const CaseConfig& c) {
+    const toml::table* run = ctx.root()["run"].as_table();
+    const auto given = [&](const char* key) { return run != nullptr && run->get(key) != nullptr; };
+    const bool end = given("end"), end_time = given("end_time");
+    if (end && end_time)
+        ctx.add("run.end_time", fmt::format("run.end_time = {}: give either run.end (collisions per particle) or "
+                                            "run.end_time (time), not both",
+                                            *c.run.end_time));
+    else if (!end && !end_time)
+        ctx.add("run.end", fmt::format("run.end: required key is missing (must be {}; or give run.end_time, {})",
+                                       expectation(*find_key("run.end")), expectation(*find_key("run.end_time"))));
+    const auto wrong_clock = [&](const char* key, const char* instead) {
+        if (!given(key))
+            return;
+        ctx.add(std::string("run.") + key,
+                end_time ? fmt::format("run.{}: in collisions per particle, but this run is clocked by run.end_time "
+                                       "(time): use run.{} instead",
+                                       key, instead)
+                         : fmt::format("run.{}: a time, for a run clocked by run.end_time, but this run ends at run.end "
+                                       "(collisions per particle): use run.{} instead",
+                                       key, instead));
+    };
+    if (end_time) {
+        wrong_clock("output_every", "output_every_time");
+        wrong_clock("histogram_every", "histogram_every_time");
+    } else {
+        wrong_clock("output_every_time", "output_every");
+        wrong_clock("histogram_every_time", "histogram_every");
+    }
+}
+
 void check_run(BuildContext& ctx, const CaseConfig& c) {
+    check_clock(ctx, c);
+    if (c.run.time_clock() && c.run.histogram_every_time > *c.run.end_time)
+        ctx.add("run.histogram_every_time",
+                fmt::format("run.histogram_every_time = {}: after the end of the run (must be <= run.end_time = {})",
+                            c.run.histogram_every_time, *c.run.end_time));
     if (c.run.kernel == CollisionKernel::maxwell)
         check_maxwell_kernel(ctx, c);
     else if (c.run.kind == RunKind::cooling && ctx.use() == CaseUse::run && !driven(c) &&
              !(c.initial && !c.initial->from.empty()))
         check_cooling_reach(ctx, c); // from a saved state: its own temperatures (io/run_states.cpp)
-    if (c.run.histogram_every > c.run.end) {
+    if (!c.run.time_clock() && c.run.histogram_every > c.run.end) {
         ctx.add("run.histogram_every",
                 fmt::format("run.histogram_every = {}: after the end of the run (must be <= run.end = {})",
                             c.run.histogram_every, c.run.end));
@@ -115,10 +175,17 @@ void emit_run(Emitter& e, const RunConfig& r) {
     e.put("groups", r.groups);
     e.put("kernel", kernel_names[static_cast<int>(r.kernel)]);
     e.put("seed", r.seed);
-    e.put("end", r.end);
-    e.put("output_every", r.output_every);
-    e.put("output_spacing", name(r.output_spacing));
-    e.put("histogram_every", r.histogram_every);
+    if (r.time_clock()) { // the keys of the time clock, and none of the collision clock's
+        e.put("end_time", r.end_time);
+        e.put("output_every_time", r.output_every_time);
+        e.put("output_spacing", name(r.output_spacing));
+        e.put("histogram_every_time", r.histogram_every_time);
+    } else {
+        e.put("end", r.end);
+        e.put("output_every", r.output_every);
+        e.put("output_spacing", name(r.output_spacing));
+        e.put("histogram_every", r.histogram_every);
+    }
     e.put("histogram_spacing", name(r.histogram_spacing));
     e.put("histogram_bins", r.histogram_bins);
     e.put("histogram_max", r.histogram_max);
