@@ -130,6 +130,22 @@ TEST(CaseFile, MessageHasFileLineColumnKeyValueAndRange) {
     EXPECT_EQ(error_of(text), "case.toml:14:17: material.young_modulus = -10000000000: must be > 0 (Pa)");
 }
 
+// A cadence of more than 10^7 linear rows is refused before the run lists them, on either clock;
+// log-spaced rows and a cadence at the limit are not.
+TEST(CaseFile, RefusesMoreOutputRowsThanARunWrites) {
+    const std::string e = error_of(small_case(), {"run.output_every=1e-9"});
+    EXPECT_NE(e.find("run.output_every = 1e-09: 1e+10 rows to run.end = 10, more than a run writes (must be >= "
+                     "run.end/1e+07 = 1e-06, or output_spacing = \"log\")"),
+              std::string::npos)
+        << e;
+    EXPECT_EQ(error_of(small_case(), {"run.output_every=1e-6"}), "");
+    EXPECT_EQ(error_of(small_case(), {"run.output_every=1e-9", "run.output_spacing=log"}), "");
+    EXPECT_NE(error_of(small_case(), {"run.histogram_every=1e-9"}).find("run.histogram_every = 1e-09: "),
+              std::string::npos);
+    const std::string t = error_of(small_case(), {"run.end_time=5.0", "run.output_every_time=1e-7"});
+    EXPECT_NE(t.find("run.output_every_time = 1e-07: 5e+07 rows to run.end_time = 5,"), std::string::npos) << t;
+}
+
 TEST(CaseFile, ReportsEveryIssueOfAPass) {
     std::string text = replaced(small_case(), "poisson_ratio = 0.3", "poisson_ratio = 0.7");
     text = replaced(text, "friction = 1.0e-3", "friction = -1");

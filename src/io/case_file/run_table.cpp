@@ -148,8 +148,31 @@ void check_clock(BuildContext& ctx, const CaseConfig& c) {
     }
 }
 
+// A run lists its output times before it starts (io/run_spec_from_case.cpp), so a linear cadence
+// that gives more rows than max_rows would spend the memory and time of that list, and write a CSV
+// of gigabytes, before a single collision. (Log-spaced rows, ten per decade, never come close.)
+void check_rows(BuildContext& ctx, const char* key, double every, const char* end_key, double end,
+                OutputSpacing spacing) {
+    constexpr double max_rows = 1e7;
+    if (spacing != OutputSpacing::linear || !(every > 0) || !(end > 0) || !(end / every > max_rows))
+        return;
+    ctx.add(std::string("run.") + key,
+            fmt::format("run.{} = {}: {:.3g} rows to run.{} = {}, more than a run writes (must be >= run.{}/{:g} = {:g}, "
+                        "or output_spacing = \"log\")",
+                        key, every, end / every, end_key, end, end_key, max_rows, end / max_rows));
+}
+
 void check_run(BuildContext& ctx, const CaseConfig& c) {
     check_clock(ctx, c);
+    if (c.run.time_clock()) {
+        check_rows(ctx, "output_every_time", c.run.output_every_time.value_or(0.0), "end_time", *c.run.end_time,
+                   c.run.output_spacing);
+        check_rows(ctx, "histogram_every_time", c.run.histogram_every_time, "end_time", *c.run.end_time,
+                   c.run.histogram_spacing);
+    } else {
+        check_rows(ctx, "output_every", c.run.output_every, "end", c.run.end, c.run.output_spacing);
+        check_rows(ctx, "histogram_every", c.run.histogram_every, "end", c.run.end, c.run.histogram_spacing);
+    }
     if (c.run.time_clock() && c.run.histogram_every_time > *c.run.end_time)
         ctx.add("run.histogram_every_time",
                 fmt::format("run.histogram_every_time = {}: after the end of the run (must be <= run.end_time = {})",
