@@ -54,8 +54,9 @@ std::vector<double> steady_csv_row(const SteadyResult& r, const std::vector<std:
 }
 
 SteadyResult steady_summary(const std::vector<std::string>& names,
-                            const std::vector<std::vector<double>>& rows, bool shear) {
+                            const std::vector<std::vector<double>>& rows, bool shear, int replicas) {
     SteadyOptions o;
+    o.replicas = replicas;
     o.monitored = steady_monitored(names, shear, &rows);
     // A transient at the window's start is what a steady average must not contain: the window's
     // first three rows are tested against its second half too.

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <boost/math/distributions/fisher_f.hpp>
+#include <boost/math/distributions/normal.hpp>
+#include <boost/math/distributions/students_t.hpp>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -186,6 +188,14 @@ SteadyResult find_steady_state(const std::vector<std::string>& names,
                 index_of(names, d.against) < names.size())
                 rate_of[i] = {index_of(names, d.of), index_of(names, d.against)};
     const int half_batches = std::max(2, o.batches / 2);
+    // The row-by-row test's bound: the normal tail of `threshold` at the t quantile of the X_err's
+    // replicas - 1 degrees of freedom.
+    double row_threshold = o.threshold;
+    if (o.replicas > 1) {
+        const double tail = boost::math::cdf(boost::math::complement(boost::math::normal_distribution<double>(), o.threshold));
+        row_threshold = boost::math::quantile(
+            boost::math::complement(boost::math::students_t_distribution<double>(o.replicas - 1), tail));
+    }
     // Row 0 is the initial state (its rates are undefined): never part of the window.
     std::size_t k0 = std::min<std::size_t>(1, n);
     // Of the window tried last: the monitored column that failed and its halves' means.
@@ -263,7 +273,7 @@ SteadyResult find_steady_state(const std::vector<std::string>& names,
                     for (std::size_t k = k0; k < std::min(k0 + o.head_rows, mid) && steady; ++k) {
                         const double x = rows[k][j], ex = rows[k][e];
                         if (std::isfinite(x) && std::isfinite(ex) &&
-                            !(std::abs(x - B.mean) <= o.threshold * std::sqrt(ex * ex + B.err * B.err) + slack))
+                            !(std::abs(x - B.mean) <= row_threshold * std::sqrt(ex * ex + B.err * B.err) + slack))
                             steady = false;
                     }
                     if (!steady)

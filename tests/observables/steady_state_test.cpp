@@ -311,3 +311,33 @@ TEST(SteadyState, ADecayRateThatFallsIsNotSteady) {
 
 } // namespace
 } // namespace roughgas
+
+namespace roughgas {
+namespace {
+
+// A head row whose replicas happened to agree: 1.5 row sds (0.0015) from the late mean with an X_err
+// of 0.0002, about 5 of its combined errors (with the late mean's 0.00022). Beyond 3 for a known
+// error, but an X_err from 4 replicas has 3 degrees of freedom, and Student's t of 3 degrees exceeds
+// 5 with probability 1.5 % (the bound at the normal tail of 3 is 9.2). With the replicas given the
+// window from row 1 passes; without them it is refused.
+TEST(SteadyState, HeadRowsAgainstReplicaErrorsUseStudentsT) {
+    const std::vector<std::string> cols = {"t", "coll_per_particle", "T_tr", "T_tr_err"};
+    std::vector<std::vector<double>> rows;
+    Rng r = make_stream(4, Stream::test, 4, 0);
+    for (std::size_t k = 0; k < 40; ++k)
+        rows.push_back({static_cast<double>(k), static_cast<double>(k), 1.0 + 0.001 * gauss(r), 0.001});
+    rows[1][2] = 1.0015;
+    rows[1][3] = 0.0002;
+    SteadyOptions o = options();
+    o.head_rows = 3;
+    o.max_start = 0.03; // the window from row 1 (the first after the initial state) or none
+    o.replicas = 4;
+    const SteadyResult known = find_steady_state(cols, rows, o);
+    EXPECT_TRUE(known.reached) << known.drift;
+    EXPECT_EQ(known.first_row, 1u);
+    o.replicas = 0;
+    EXPECT_FALSE(find_steady_state(cols, rows, o).reached);
+}
+
+} // namespace
+} // namespace roughgas

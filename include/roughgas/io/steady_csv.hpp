@@ -22,8 +22,8 @@ std::vector<double> steady_csv_row(const SteadyResult& r, const std::vector<std:
                                    const std::vector<std::vector<double>>& rows);
 
 // find_steady_state over moments.csv rows with the monitored quantities of the run's kind
-// (coll_per_particle is kept among the averages, t is not).
+// (coll_per_particle is kept among the averages, t is not); `replicas` behind the rows' X_err.
 SteadyResult steady_summary(const std::vector<std::string>& names,
-                            const std::vector<std::vector<double>>& rows, bool shear);
+                            const std::vector<std::vector<double>>& rows, bool shear, int replicas);
 
 } // namespace roughgas

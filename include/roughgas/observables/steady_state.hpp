@@ -55,6 +55,11 @@ struct SteadyOptions {
     // With head_rows > 0 and X_err columns (replicas): also each of those rows against the second
     // half's mean within 3 of its own X_err combined with the half's error.
     bool head_each_row = true;
+    // The replicas behind the X_err columns (0: unknown). An X_err from R replicas has R - 1 degrees
+    // of freedom, so the row-by-row test's bound is Student's t quantile of R - 1 degrees at the
+    // normal tail of `threshold` (9.2 for 4 replicas, 235 for 2, against 3): three rows of four
+    // columns tested at 3 against errors from 4 replicas refuse a steady window one time in two.
+    int replicas = 0;
     // Monitored columns that are decay rates: column = -d ln(of)/d(against) between consecutive rows.
     struct DecayRate {
         std::string column, of, against;

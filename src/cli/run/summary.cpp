@@ -127,7 +127,7 @@ RunSummary summarize_run(const fs::path& dir, const RunSpec& spec, bool steady, 
     const std::vector<std::vector<double>> rows(all_rows.begin(),
                                                 all_rows.begin() + static_cast<std::ptrdiff_t>(
                                                                        clusters ? clusters->row : all_rows.size()));
-    const SteadyResult st = steady_summary(names, rows, steady);
+    const SteadyResult st = steady_summary(names, rows, steady, spec.replicas);
     const char* file = steady ? steady_file : scaled_file;
     write_summary_csv(dir, steady, st, names, table.units(), rows, provenance.csv);
     if (steady && files.has_profiles() && files.profile_blocks().size() == rows.size())

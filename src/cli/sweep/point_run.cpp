@@ -27,7 +27,7 @@ PointResult point_result(const CaseConfig& cfg, const ReplicaRows& rows) {
             spans.emplace_back(r[k]);
         p.rows.push_back(table.combine(spans));
     }
-    p.steady = steady_summary(p.names, p.rows, driven(cfg));
+    p.steady = steady_summary(p.names, p.rows, driven(cfg), static_cast<int>(rows.size()));
     return p;
 }
 
