@@ -270,6 +270,13 @@ def plot(csv_path, out_path, x_col="coll", logx=None):
         ax.legend(fontsize=7, ncol=2 if key != "cumulants" else 4)
     if not panels:
         axes[0].text(0.5, 0.5, "no column of this CSV varies", ha="center", va="center", transform=axes[0].transAxes)
+    finish_figure(fig, axes, xlabel, logx, title, notes, foot, height, out_path)
+    return d, drawn, why
+
+
+def finish_figure(fig, axes, xlabel, logx, title, notes, foot, height, out_path):
+    """The panels' shared x axis and grid, the title above them and the notes under them (foot
+    inches, 0.17 per line, of a figure `height` inches tall), written to out_path atomically."""
     axes[-1].set_xlabel(xlabel)
     for ax in axes:
         if logx:
@@ -281,7 +288,6 @@ def plot(csv_path, out_path, x_col="coll", logx=None):
     fig.tight_layout(rect=(0, (foot + 0.05) / height, 1, 1))  # tight_layout makes room for the title
     save_figure(fig, out_path)
     plt.close(fig)
-    return d, drawn, why
 
 
 def expected_curves(d, why):

@@ -40,8 +40,7 @@ import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from roughgas_csv import read_csv, read_header, column_unit, label_with_unit, case_summary, species_names  # noqa: E402
-from atomic_output import save_figure  # noqa: E402
-from plot import band, omitted, log_spaced  # noqa: E402
+from plot import band, finish_figure, omitted, log_spaced  # noqa: E402
 
 # (panel, [(column, line style)]): the quantities every run of a homogeneous or box case has.
 PANELS = [
@@ -176,17 +175,8 @@ def plot(paths, labels, out_path, x_col="t", logx=None, how="ratio"):
     if not panels:
         axes[0].text(0.5, 0.5, "no quantity the runs share varies", ha="center", va="center",
                      transform=axes[0].transAxes)
-    axes[-1].set_xlabel(label_with_unit("t", unit_t) if x_col == "t" else "collisions per particle")
-    for ax in axes:
-        if logx:
-            ax.set_xscale("log")
-        ax.grid(True, which="both", alpha=0.3)
-    fig.suptitle("\n".join(title), fontsize=9, y=1 - 0.05 / height, va="top")
-    for k, line in enumerate(notes):
-        fig.text(0.01, (foot - 0.17 * k - 0.12) / height, line, fontsize=7, ha="left", va="bottom")
-    fig.tight_layout(rect=(0, (foot + 0.05) / height, 1, 1))
-    save_figure(fig, out_path)
-    plt.close(fig)
+    xlabel = label_with_unit("t", unit_t) if x_col == "t" else "collisions per particle"
+    finish_figure(fig, axes, xlabel, logx, title, notes, foot, height, out_path)
     if compare_note:  # on stdout too
         print(f"plot_overlay.py: {compare_note}")
     expected = [f"{c}.{k}" for c, ks in curves.items() for k in ks]

@@ -400,32 +400,29 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
                     report();
                     boundary(p, std::nullopt);
                 }
-                if (pause.row)
-                    emit();
-                if (pause.histogram)
-                    emit_histograms();
-                continue;
-            }
-            if (spec.shear && (strang || engine.collisions() < target)) {
-                // A step reaching the next pause's count is cut there (rare: the last step aims at
-                // this target), so that no two pauses share one step (an empty interval between two rows).
-                std::int64_t cap = std::numeric_limits<std::int64_t>::max();
-                for (std::size_t q = p + 1;
-                     q < pauses.size() && cap == std::numeric_limits<std::int64_t>::max(); ++q)
-                    if (pauses[q].target > target)
-                        cap = pauses[q].target - 1;
-                advance_shear(target, cap, p, strang, 0.0);
-                strang.reset();
-            }
-            while (engine.collisions() < target) {
-                // About a chunk, by time (Engine::run_about: no halving phases), exactly to the row.
-                if (engine.run_about(chunk, target, tally) == StopReason::stalled) {
-                    throw std::runtime_error(
-                        "run_replica: no collision can happen: every grain is at rest in the "
-                        "centre-of-mass frame (translational temperature 0)");
+            } else {
+                if (spec.shear && (strang || engine.collisions() < target)) {
+                    // A step reaching the next pause's count is cut there (rare: the last step aims at
+                    // this target), so that no two pauses share one step (an empty interval between
+                    // two rows).
+                    std::int64_t cap = std::numeric_limits<std::int64_t>::max();
+                    for (std::size_t q = p + 1;
+                         q < pauses.size() && cap == std::numeric_limits<std::int64_t>::max(); ++q)
+                        if (pauses[q].target > target)
+                            cap = pauses[q].target - 1;
+                    advance_shear(target, cap, p, strang, 0.0);
+                    strang.reset();
                 }
-                report();
-                boundary(p, std::nullopt);
+                while (engine.collisions() < target) {
+                    // About a chunk, by time (Engine::run_about: no halving phases), exactly to the row.
+                    if (engine.run_about(chunk, target, tally) == StopReason::stalled) {
+                        throw std::runtime_error(
+                            "run_replica: no collision can happen: every grain is at rest in the "
+                            "centre-of-mass frame (translational temperature 0)");
+                    }
+                    report();
+                    boundary(p, std::nullopt);
+                }
             }
             if (pause.row)
                 emit();

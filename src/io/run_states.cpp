@@ -68,20 +68,16 @@ void check_cooling_reach_from(const StateFile& state, const RunSpec& spec, const
     } catch (const std::invalid_argument&) {
         return;
     }
-    if (time && spec.end > reach)
-        throw InputError(case_file, "run.end_time",
-                         fmt::format("run.end_time = {}: the state of initial.from = \"{}\" (T_tr = {:.3g} for the "
-                                     "first species) cools with constant restitution and reaches T_tr/m = 1e-300 "
-                                     "(velocities squared underflow) at about t = {:.4g} from its start (Haff's law: "
-                                     "T_tr ~ 1/t^2): end it before (run.end_time < {:.4g})",
-                                     spec.end, dir, T.T_tr[0], reach, reach));
-    if (!time && spec.end > reach)
-        throw InputError(case_file, "run.end",
-                         fmt::format("run.end = {}: the state of initial.from = \"{}\" (T_tr = {:.3g} for the first "
+    if (spec.end > reach) {
+        const char* key = time ? "run.end_time" : "run.end";
+        const std::string when = time ? fmt::format("at about t = {:.4g} from its start (Haff's law: T_tr ~ 1/t^2)", reach)
+                                      : fmt::format("at about {:.4g} collisions per particle from its start", reach);
+        throw InputError(case_file, key,
+                         fmt::format("{} = {}: the state of initial.from = \"{}\" (T_tr = {:.3g} for the first "
                                      "species) cools with constant restitution and reaches T_tr/m = 1e-300 "
-                                     "(velocities squared underflow) at about {:.4g} collisions per particle from "
-                                     "its start: end it before (run.end < {:.4g})",
-                                     spec.end, dir, T.T_tr[0], reach, reach));
+                                     "(velocities squared underflow) {}: end it before ({} < {:.4g})",
+                                     key, spec.end, dir, T.T_tr[0], when, key, reach));
+    }
 }
 
 } // namespace

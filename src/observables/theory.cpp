@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -217,23 +218,32 @@ double fall_to_floor(const HcsTheory& theory, const HcsTemperatures& T, double f
     return least / floor;
 }
 
+// The settled cooling both reaches start from; none when the gas does not cool (no collisions, no
+// floor, or a cooling rate that vanishes: it never reaches the floor).
+std::optional<SettledCooling> settled_towards(const HcsTheory& theory, const HcsTemperatures& initial, double floor) {
+    if (!(collision_frequency(theory, initial) > 0) || !(floor > 0))
+        return std::nullopt;
+    const SettledCooling s = settle_cooling(theory, initial);
+    if (!(s.zeta > 1e-12))
+        return std::nullopt;
+    return s;
+}
+
 } // namespace
 
 double cooling_reach(const HcsTheory& theory, const HcsTemperatures& initial, double floor) {
-    if (!(collision_frequency(theory, initial) > 0) || !(floor > 0))
+    const std::optional<SettledCooling> settled = settled_towards(theory, initial, floor);
+    if (!settled)
         return HUGE_VAL;
-    const SettledCooling s = settle_cooling(theory, initial);
-    if (!(s.zeta > 1e-12))
-        return HUGE_VAL;
+    const SettledCooling& s = *settled;
     return s.collisions + std::log(fall_to_floor(theory, s.T, floor)) / s.zeta;
 }
 
 double cooling_reach_time(const HcsTheory& theory, const HcsTemperatures& initial, double floor) {
-    if (!(collision_frequency(theory, initial) > 0) || !(floor > 0))
+    const std::optional<SettledCooling> settled = settled_towards(theory, initial, floor);
+    if (!settled)
         return HUGE_VAL;
-    const SettledCooling s = settle_cooling(theory, initial);
-    if (!(s.zeta > 1e-12))
-        return HUGE_VAL;
+    const SettledCooling& s = *settled;
     const double nu = collision_frequency(theory, s.T);
     const double fall = fall_to_floor(theory, s.T, floor);
     if (theory.maxwell()) // a constant frequency: T_tr = T_1 exp(-zeta* nu (t - t_1))
