@@ -143,6 +143,45 @@ struct DomainSpec {
     bool general_flight() const { return has_walls() || has_gravity() || lees_edwards(); }
 };
 
+// A thermostat: energy fed to the grains at every DSMC step (dsmc/thermostat.hpp, docs/model.md §9).
+//   white_noise  every velocity component gets an independent Gaussian kick of variance xi0^2 dt
+//                (xi0^2 the strength, velocity^2/time), so that the kicks alone give dT_tr/dt = m xi0^2;
+//                the share eps (rotational_share) of that power goes to the spins instead, by kicks of
+//                omega of variance eps m xi0^2 dt/I (and those of v shrink to (1 - eps) xi0^2 dt):
+//                dT_tr/dt = (1 - eps) m xi0^2, dT_rot/dt = eps m xi0^2 from the kicks;
+//   langevin     a bath at T_b with friction: dv = -gamma v dt + sqrt(2 gamma T_b/m) dW, and the spins
+//                with gamma_rot (0: the spins feel no bath): dT_tr/dt = 2 gamma (T_b - T_tr) from the bath.
+// The kicks of a step carry zero total momentum per species (dsmc/thermostat.hpp).
+enum class ThermostatKind { white_noise, langevin };
+
+// A piecewise-constant function of time: value[k] on [t[k], t[k+1]), value.back() from t.back() on;
+// t[0] = 0, t increasing.
+struct DriveSchedule {
+    std::vector<double> t{0.0}, value{0.0};
+    double at(double time) const;
+    // The integral of the function over [t0, t1] (t0 <= t1).
+    double integral(double t0, double t1) const;
+    // The integral of value(s) exp(-r (t1 - s)) ds over [t0, t1] (r >= 0): the Langevin bath's noise.
+    double decaying_integral(double t0, double t1, double r) const;
+    bool constant() const { return t.size() == 1; }
+};
+
+// One species' thermostat: `drive` is the white noise's strength xi0^2 or the Langevin bath's
+// temperature T_b, over time.
+struct SpeciesThermostat {
+    DriveSchedule drive;
+    double rotational_share = 0;                  // eps (white noise)
+    double friction = 0, rotational_friction = 0; // gamma, gamma_rot (langevin), 1/time
+};
+
+struct ThermostatSpec {
+    ThermostatKind kind = ThermostatKind::white_noise;
+    // White noise: each step's kicks scaled per species so that they inject exactly the intended
+    // energy (N_s (3/2) m_s xi0^2 dt, split by eps), not only in expectation.
+    bool exact_energy = false;
+    std::vector<SpeciesThermostat> species; // one per RunSpec::species entry
+};
+
 // What a run's end, output times and histogram times count (run.end or run.end_time):
 //   collisions  collisions per particle, 2 x collisions / N: the work done; a row is the state right
 //               after the collision that completes its count;
@@ -189,6 +228,8 @@ struct RunSpec {
     double table_g_min = 1e-6, table_g_max = 1e2;
     // Uniform shear flow instead of free cooling (run.kind = "shear").
     std::optional<ShearSpec> shear;
+    // A thermostat ([thermostat]): a driven gas instead of a freely cooling one.
+    std::optional<ThermostatSpec> thermostat;
     // Positions, streaming and collision cells instead of the homogeneous gas ([domain]).
     std::optional<DomainSpec> domain;
     // Set: called with each replica's state when it finishes (not when it stops early).
