@@ -129,6 +129,8 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
         blocks, std::move(policies), std::move(store),
         EngineOptions{spec.density, spec.step, spec.seed, rep, spec.speed_classes, effective_groups(spec),
                       std::max(1, spec.threads)});
+    if (spec.thermostat)
+        engine.set_thermostat(*spec.thermostat);
 
     const std::size_t S = blocks.size();
     const std::vector<SpeciesSlice> slices = species_slices(blocks);

@@ -37,6 +37,7 @@ enum class Stream : std::uint64_t {
     initial_position = 6, // dsmc/spatial_engine.hpp: uniform positions in the box, one stream per species
     cell_collisions = 7,  // dsmc/spatial_engine.hpp: a step's collisions, one stream per (step, unit of cells)
     wall_emission = 8,    // dsmc/spatial_engine.hpp: diffuse walls' emission, one stream per (step, chunk of grains)
+    thermostat = 9,       // dsmc/thermostat.hpp: a step's kicks, one stream per (step, species, chunk of grains)
 };
 
 // splitmix64 (Steele, Lea & Flood 2014): the output function of one step from state x.

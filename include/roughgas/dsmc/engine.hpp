@@ -66,6 +66,16 @@
 // checks a tenfold growth). Stretches that need no exact count (run_replica's pauses between
 // rows) stop at a time instead (run_about): one phase per step.
 //
+// Thermostat (set_thermostat; dsmc/thermostat.hpp). A driven gas gets its kicks in the step start's
+// first pass over the grains, before they are sorted into classes (so the bounds hold for the kicked
+// velocities): no pass of its own. The kicks of the step starting at t0 cover the time from where the
+// previous ones ended to the middle of this step, t0 + L/2, L the step length predicted from the last
+// step start's collision frequency: the kicks then run half a step ahead at the step's start and half a
+// step behind at its end, so that the state averaged over a step lags the drive by O(L^2), not O(L)
+// (as in Strang splitting). kicked_until() is that time. Each step's kicks draw from their own streams
+// (seed, thermostat, replica, step, species and chunk): the chunks are fixed by the species' size, so
+// the kicks do not depend on the threads.
+//
 // Pauses. run() stops after a given collision count or before a given time, keeping the pending
 // candidate: stopping and resuming never changes the trajectory, so the output schedule does not
 // influence the results.
@@ -91,6 +101,7 @@
 #include "roughgas/core/rng.hpp"
 #include "roughgas/core/worker_team.hpp"
 #include "roughgas/dsmc/species.hpp"
+#include "roughgas/dsmc/thermostat.hpp"
 
 #include <boost/random/exponential_distribution.hpp>
 
@@ -104,6 +115,7 @@
 #include <memory>
 #include <new>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -364,6 +376,17 @@ class Engine {
             g.t_next = t_;
     }
 
+    // Drives the gas with `th` (one entry per species) from the next step on; before the first run().
+    void set_thermostat(ThermostatSpec th) {
+        if (th.species.size() != species_.size())
+            throw std::invalid_argument("Engine: one thermostat entry per species");
+        thermostat_ = std::move(th);
+        kicks_.assign(species_.size(), {});
+    }
+    const std::optional<ThermostatSpec>& thermostat() const { return thermostat_; }
+    // The time up to which the thermostat's kicks have been given (see "Thermostat").
+    double kicked_until() const { return t_kick_; }
+
     // Threads over the groups and chunks (no influence on the results).
     void set_threads(int threads) {
         if (threads < 1)
@@ -489,6 +512,8 @@ class Engine {
                                    g.c.range_moves})
                 w.put(x);
         }
+        if (thermostat_)
+            w.f64(t_kick_);
     }
 
     // Loads what save_state wrote. Throws std::runtime_error when the state does not fit this engine
@@ -582,6 +607,8 @@ class Engine {
                                     &g.c.range_moves})
                 *x = r.get<std::int64_t>();
         }
+        if (thermostat_)
+            t_kick_ = r.f64();
     }
 
   private:
@@ -984,6 +1011,113 @@ class Engine {
     // outputs, combined in chunk order afterwards, so the results do not depend on the threads).
     template <class F> void for_chunks(std::size_t C, F&& f) { team_->for_each(C, f); }
 
+    // Per species, the current step's kicks: what they do, the bridge's scales, the exact-energy
+    // factors, the chunks' sums.
+    struct StepKick {
+        SpeciesKick kick;
+        double scale_v = 0, scale_w = 0, lambda_v = 1, lambda_w = 1;
+        std::vector<Vec3> sums_v, sums_w;
+    };
+    // What a step's kicks would inject into a chunk's grains: A = sum m dv^2/2, B = sum m v.dv (and the
+    // same for the spins with I).
+    struct KickEnergy {
+        double A_v = 0, B_v = 0, A_w = 0, B_w = 0;
+        KickEnergy& operator+=(const KickEnergy& o) {
+            A_v += o.A_v, B_v += o.B_v, A_w += o.A_w, B_w += o.B_w;
+            return *this;
+        }
+    };
+
+    // The thermostat's kicks of the step starting now (see "Thermostat"): over [t_kick_, t0 + L/2], L the
+    // step length at the last step start's collision frequency (the initial state's at the first).
+    // Returns whether any grain is kicked.
+    bool plan_kicks() {
+        if (!thermostat_)
+            return false;
+        double nu = nu_;
+        if (!(nu > 0)) {
+            for (std::size_t s = 0; s < species_.size(); ++s)
+                T_over_m_[s] = thermal_speed_[s] * thermal_speed_[s];
+            nu = maxwellian_collision_frequency(types_, T_over_m_, volume_, static_cast<double>(store_.size()));
+        }
+        if (!(nu > 0) || !std::isfinite(nu)) // a gas at rest: no step length to place the kicks by
+            return false;
+        const double t1 = t_step_end_ + 0.5 * opt_.step / nu;
+        if (!(t1 > t_kick_))
+            return false;
+        bool any = false;
+        for (std::size_t s = 0; s < species_.size(); ++s) {
+            const SpeciesBlock& sp = species_[s];
+            kicks_[s].kick = species_kick(thermostat_->kind, thermostat_->species[s], sp.grain.mass,
+                                          sp.moment_of_inertia(), t_kick_, t1);
+            any |= kicks_[s].kick.moves();
+        }
+        t_kick_ = t1;
+        return any;
+    }
+
+    // Species s's kicks of this step in C chunks of `chunk` grains: the bridge's scales, the chunks'
+    // sums (dsmc/thermostat.hpp) and, for exact energy, the factors on the kicks (a first pass that
+    // draws them without applying them).
+    void prepare_kicks(std::size_t s, std::size_t chunk, std::size_t C, StepKick& k) {
+        const std::size_t n_s = species_[s].count;
+        k.scale_v = bridge_scale(k.kick.var_v, n_s);
+        k.scale_w = bridge_scale(k.kick.var_w, n_s);
+        k.lambda_v = k.lambda_w = 1;
+        std::vector<std::size_t> sizes(C);
+        for (std::size_t ch = 0; ch < C; ++ch)
+            sizes[ch] = std::min(chunk, n_s - ch * chunk);
+        CollisionRng rng = make_collision_stream(kick_stream_key(opt_.seed, opt_.replica,
+                                                                 static_cast<std::uint64_t>(c_.steps), s, -1));
+        k.sums_v = chunk_sums(sizes, k.scale_v, rng);
+        k.sums_w = chunk_sums(sizes, k.scale_w, rng);
+        if (!thermostat_->exact_energy)
+            return;
+        std::vector<KickEnergy> parts(C);
+        for_chunks(C, [&](std::size_t ch) {
+            const std::size_t lo = species_[s].offset + ch * chunk;
+            kick_chunk(s, ch, lo, std::min(lo + chunk, species_[s].offset + n_s), k, &parts[ch]);
+        });
+        KickEnergy e;
+        for (const KickEnergy& p : parts) // in chunk order: independent of the threads
+            e += p;
+        const SpeciesBlock& sp = species_[s];
+        const double N = static_cast<double>(n_s);
+        k.lambda_v = exact_energy_factor(e.A_v, e.B_v, 1.5 * N * sp.grain.mass * k.kick.var_v);
+        k.lambda_w = exact_energy_factor(e.A_w, e.B_w, 1.5 * N * sp.moment_of_inertia() * k.kick.var_w);
+    }
+
+    // Species s's kicks in chunk ch (grains lo .. hi - 1), from the chunk's own stream: applied
+    // (energy == nullptr) or only summed into *energy.
+    void kick_chunk(std::size_t s, std::size_t ch, std::size_t lo, std::size_t hi, const StepKick& k,
+                    KickEnergy* energy) {
+        CollisionRng rng = make_collision_stream(kick_stream_key(
+            opt_.seed, opt_.replica, static_cast<std::uint64_t>(c_.steps), s, static_cast<long>(ch)));
+        GaussianBridge dv(hi - lo, k.sums_v[ch], k.scale_v), dw(hi - lo, k.sums_w[ch], k.scale_w);
+        const bool spins = k.kick.var_w > 0 || k.kick.decay_w != 1;
+        const double m = species_[s].grain.mass, I = species_[s].moment_of_inertia();
+        for (std::size_t i = lo; i < hi; ++i) {
+            const Vec3 kv = dv.next(rng);
+            Vec3& v = store_.v(i);
+            if (energy) {
+                energy->A_v += 0.5 * m * norm2(kv);
+                energy->B_v += m * dot(v, kv);
+            } else {
+                v = k.kick.decay_v * v + k.lambda_v * kv;
+            }
+            if (!spins)
+                continue;
+            const Vec3 kw = dw.next(rng);
+            Vec3& w = store_.w(i);
+            if (energy) {
+                energy->A_w += 0.5 * I * norm2(kw);
+                energy->B_w += I * dot(w, kw);
+            } else {
+                w = k.kick.decay_w * w + k.lambda_w * kw;
+            }
+        }
+    }
+
     // Refreshes the partition, the classes, bounds and frame, sets the step length, and starts the
     // groups' streams. Pass 1 reads every grain once (statistics, bucket sizes, each grain's bucket
     // (group, class) into a 16-bit key per grain); pass 2 writes the positions (perm_) bucket by
@@ -1001,6 +1135,7 @@ class Engine {
         Vec3 momentum{};
         double mass = 0, mv2_all = 0;
         std::fill(mv2_.begin(), mv2_.end(), 0.0);
+        const bool driving = plan_kicks();
         for (std::size_t s = 0; s < S; ++s) {
             const SpeciesBlock& sp = species_[s];
             for (std::size_t c = 0; c < cuts_.size(); ++c) {
@@ -1017,9 +1152,14 @@ class Engine {
             cmax2_.assign(C * B, 0.0);
             csum2_.assign(C, 0.0);
             cps_.assign(C, Vec3{});
+            StepKick* const kick = driving && kicks_[s].kick.moves() ? &kicks_[s] : nullptr;
+            if (kick)
+                prepare_kicks(s, chunk, C, *kick);
             for_chunks(C, [&](std::size_t ch) {
                 const std::size_t lo = sp.offset + ch * chunk;
                 const std::size_t hi = std::min(lo + chunk, sp.offset + n_s);
+                if (kick) // the chunk's kicks while its grains are in this core's cache, then their classes
+                    kick_chunk(s, ch, lo, hi, *kick, nullptr);
                 std::uint32_t* count = &ccount_[ch * B];
                 double* max2 = &cmax2_[static_cast<std::size_t>(ch) * B];
                 double sum2 = 0;
@@ -1197,6 +1337,11 @@ class Engine {
     std::vector<Vec3> cps_;                             // per chunk
     double t_ = 0, t_step_end_ = 0, step_length_ = 0, nu_ = 0;
     bool stalled_ = false;
+    // The thermostat (unset: free cooling), the time its kicks reached, and per species the current
+    // step's kicks (StepKick).
+    std::optional<ThermostatSpec> thermostat_;
+    double t_kick_ = 0;
+    std::vector<StepKick> kicks_;
     EngineCounters c_{}; // the engine's own counts (steps, frame, phases); the groups keep the rest
 };
 

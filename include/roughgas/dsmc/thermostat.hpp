@@ -1,0 +1,150 @@
+#pragma once
+// A thermostat's kicks over a stretch of time (run_spec.hpp ThermostatSpec; docs/model.md §9):
+// what every grain's velocity and spin become, as the pure functions the engines call once per
+// step in their pass over the grains.
+//
+// Per species s and component, over [t0, t1] (tau = t1 - t0):
+//   white noise  v -> v + dv, dv of variance (1 - eps) int xi0^2 dt; omega -> omega + dw, dw of
+//                variance eps (m/I) int xi0^2 dt. The kicks alone raise T_tr = m<c^2>/3 by
+//                (1 - eps) m int xi0^2 dt and T_rot = I<w^2>/3 by eps m int xi0^2 dt: the injected power
+//                (3/2) m xi0^2 per grain, split by eps (the "splitting" thermostat of Megias & Santos
+//                2022; eps = 0 the plain white-noise thermostat of van Noije & Ernst 1998).
+//   langevin     the Ornstein-Uhlenbeck process dv = -gamma v dt + sqrt(2 gamma T_b/m) dW solved
+//                exactly over tau: v -> a v + dv, a = exp(-gamma tau), dv of variance
+//                (2 gamma/m) int T_b(s) exp(-2 gamma (t1 - s)) ds (= (T_b/m)(1 - a^2) for a constant
+//                bath); the spins the same with gamma_rot and I. Its only equilibrium with elastic
+//                collisions is the Maxwellian at T_b (fluctuation-dissipation).
+// Both kick variances integrate the drive's schedule exactly over the stretch.
+//
+// Zero momentum. The kicks of a species in one stretch are N_s independent Gaussian vectors
+// conditioned on summing to zero, drawn in one pass without storing them: a Gaussian bridge. N iid
+// N(0, s^2) numbers conditioned on their sum S have the sequential law
+//   x_1 ~ N(S/N, s^2 (N - 1)/N), then the remaining N - 1 conditioned on S - x_1, ..., x_N = the rest,
+// so the last kick closes the sum to round-off. The species' grains are split into the engine's
+// fixed chunks: the chunk sums are drawn first by the same law (chunk c of n_c grains: N(R n_c/M,
+// s^2 n_c (M - n_c)/M) with R, M the sum and grains left), then each chunk bridges to its sum,
+// chunks in parallel, each from its own stream. Every kick then has the law of a kick minus the
+// species' mean kick; s^2 = sigma^2 N_s/(N_s - 1) makes each grain's kick variance exactly the
+// sigma^2 above (and the expected injected energy exactly the intended one).
+//
+// Exact energy (white noise, optional). The kicks are generated twice from the same streams: the
+// first time to sum B = m sum v.dv and A = m sum dv^2/2 (likewise for the spins), the second to
+// apply lambda dv with lambda > 0 the root of A lambda^2 + B lambda = Q, Q the intended energy
+// N_s (3/2) m sigma^2: the step injects Q to round-off, still with zero momentum.
+#include "roughgas/core/rng.hpp"
+#include "roughgas/core/vec.hpp"
+#include "roughgas/dsmc/run_spec.hpp"
+#include "roughgas/dsmc/species.hpp"
+
+#include <boost/random/normal_distribution.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <vector>
+
+namespace roughgas {
+
+// What one stretch's kicks do to the grains of one species, per component: v -> decay_v v + dv with
+// dv of variance var_v (each grain's, after the zero-sum conditioning), omega likewise.
+struct SpeciesKick {
+    double decay_v = 1, var_v = 0;
+    double decay_w = 1, var_w = 0;
+    bool moves() const { return var_v > 0 || var_w > 0 || decay_v != 1 || decay_w != 1; }
+};
+
+// The kicks of species `th` (mass m, moment of inertia I) over [t0, t1].
+inline SpeciesKick species_kick(ThermostatKind kind, const SpeciesThermostat& th, double m, double I, double t0,
+                                double t1) {
+    SpeciesKick k;
+    if (!(t1 > t0))
+        return k;
+    if (kind == ThermostatKind::white_noise) {
+        const double xi2_dt = th.drive.integral(t0, t1);
+        k.var_v = (1 - th.rotational_share) * xi2_dt;
+        k.var_w = th.rotational_share * m / I * xi2_dt;
+        return k;
+    }
+    const double tau = t1 - t0;
+    k.decay_v = std::exp(-th.friction * tau);
+    k.var_v = 2 * th.friction / m * th.drive.decaying_integral(t0, t1, 2 * th.friction);
+    k.decay_w = std::exp(-th.rotational_friction * tau);
+    k.var_w = 2 * th.rotational_friction / I * th.drive.decaying_integral(t0, t1, 2 * th.rotational_friction);
+    return k;
+}
+
+// The stream of one species' kicks in one step: the chunk sums (chunk = -1) or chunk `chunk`'s bridge.
+inline StreamKey kick_stream_key(std::uint64_t seed, std::uint64_t replica, std::uint64_t step, std::size_t species,
+                                 long chunk) {
+    return StreamKey{seed, Stream::thermostat, replica, step,
+                     (static_cast<std::uint64_t>(species) << 32) | static_cast<std::uint64_t>(chunk + 1)};
+}
+
+// A zero-sum Gaussian bridge over n draws of the vector sum `total` (the law above, per component,
+// scale s): next() gives the draws in order, the last one closing the sum.
+class GaussianBridge {
+  public:
+    GaussianBridge(std::size_t n, Vec3 total, double s) : left_(n), rest_(total), s_(s) {}
+    template <class Rng> Vec3 next(Rng& rng) {
+        if (left_ <= 1) {
+            left_ = 0;
+            const Vec3 x = rest_;
+            rest_ = Vec3{};
+            return x;
+        }
+        const double m = static_cast<double>(left_);
+        const double sd = s_ * std::sqrt((m - 1) / m);
+        const Vec3 x = (1.0 / m) * rest_ + Vec3{sd * normal_(rng), sd * normal_(rng), sd * normal_(rng)};
+        rest_ -= x;
+        --left_;
+        return x;
+    }
+
+  private:
+    std::size_t left_;
+    Vec3 rest_;
+    double s_;
+    boost::random::normal_distribution<double> normal_{0.0, 1.0};
+};
+
+// The sums of `chunks` chunks of sizes sizes[c] (summing to n) of n zero-sum draws of scale s.
+template <class Rng> std::vector<Vec3> chunk_sums(const std::vector<std::size_t>& sizes, double s, Rng& rng) {
+    std::size_t left = 0;
+    for (std::size_t n : sizes)
+        left += n;
+    boost::random::normal_distribution<double> normal(0.0, 1.0);
+    std::vector<Vec3> sums;
+    Vec3 rest{};
+    for (std::size_t c = 0; c < sizes.size(); ++c) {
+        const double M = static_cast<double>(left), nc = static_cast<double>(sizes[c]);
+        if (c + 1 == sizes.size() || sizes[c] == left) {
+            sums.push_back(rest);
+            rest = Vec3{};
+        } else {
+            const double sd = s * std::sqrt(nc * (M - nc) / M);
+            const Vec3 x = (nc / M) * rest + Vec3{sd * normal(rng), sd * normal(rng), sd * normal(rng)};
+            sums.push_back(x);
+            rest -= x;
+        }
+        left -= sizes[c];
+    }
+    return sums;
+}
+
+// The scale s of the bridge that gives each of n grains the kick variance `var`: var n/(n - 1)
+// (no kick for a single grain: its zero-sum kick is zero).
+inline double bridge_scale(double var, std::size_t n) {
+    return n > 1 ? std::sqrt(var * static_cast<double>(n) / static_cast<double>(n - 1)) : 0.0;
+}
+
+// lambda > 0 with A lambda^2 + B lambda = Q (A > 0, Q >= 0): the factor on a step's kicks that makes
+// them inject exactly Q. Written to avoid cancellation when B > 0.
+inline double exact_energy_factor(double A, double B, double Q) {
+    if (!(A > 0))
+        return 1.0;
+    const double d = std::sqrt(B * B + 4 * A * Q);
+    return B >= 0 ? 2 * Q / (B + d) : (d - B) / (2 * A);
+}
+
+} // namespace roughgas

@@ -1,0 +1,347 @@
+// The thermostat's kicks (dsmc/thermostat.hpp) and a driven engine (dsmc/engine.hpp, "Thermostat"):
+// the zero-sum bridge's law, momentum and energy to round-off, the injected energy, and the
+// Langevin bath's equilibrium. Every stochastic assertion states its sample and its tolerance in
+// standard errors; seeds are fixed.
+#include "roughgas/collision/restitution_policy.hpp"
+#include "roughgas/core/bytes.hpp"
+#include "roughgas/dsmc/engine.hpp"
+#include "roughgas/dsmc/init.hpp"
+#include "roughgas/dsmc/particles.hpp"
+#include "roughgas/dsmc/thermostat.hpp"
+#include "roughgas/observables/moments.hpp"
+
+#include "test_stats.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+namespace roughgas {
+namespace {
+
+using test::MeanErr;
+using test::mean_err;
+
+constexpr std::int64_t forever = std::numeric_limits<std::int64_t>::max();
+
+template <class Store, bool Mixture = false, class Policy>
+Engine<Store, Policy, Mixture> make_engine(const std::vector<SpeciesSpec>& species, std::int64_t N,
+                                           std::vector<Policy> policies, EngineOptions opt) {
+    const auto blocks = make_species_blocks(species, N);
+    Store store(static_cast<std::size_t>(N));
+    init_maxwellian(store, blocks, opt.seed, opt.replica);
+    return Engine<Store, Policy, Mixture>(blocks, std::move(policies), std::move(store), opt);
+}
+
+template <class E> Moments moments_of(const E& e) {
+    return compute_moments(e.store().velocities(), e.store().angular_velocities(), species_slices(e.species()));
+}
+
+template <class E> double total_energy(const E& e) {
+    double sum = 0;
+    for (const auto& b : e.species())
+        for (std::size_t i = b.offset; i < b.offset + b.count; ++i)
+            sum += 0.5 * b.grain.mass * norm2(e.store().v(i)) + 0.5 * b.moment_of_inertia() * norm2(e.store().w(i));
+    return sum;
+}
+
+// Per species, the total momentum and the total spin angular momentum.
+template <class E> std::vector<std::pair<Vec3, Vec3>> momenta(const E& e) {
+    std::vector<std::pair<Vec3, Vec3>> p;
+    for (const auto& b : e.species()) {
+        Vec3 P{}, L{};
+        for (std::size_t i = b.offset; i < b.offset + b.count; ++i) {
+            P += b.grain.mass * e.store().v(i);
+            L += b.moment_of_inertia() * e.store().w(i);
+        }
+        p.push_back({P, L});
+    }
+    return p;
+}
+
+SpeciesSpec grain(double T = 1, double T_rot = 1, double mass = 1) {
+    SpeciesSpec s; // R = 0.5 (sigma = 1), q = 0.4
+    s.mass = mass;
+    s.temperature = T;
+    s.rotational_temperature = T_rot;
+    return s;
+}
+
+ThermostatSpec white_noise(double strength, double share, std::size_t species = 1, bool exact = false) {
+    ThermostatSpec t;
+    t.kind = ThermostatKind::white_noise;
+    t.exact_energy = exact;
+    SpeciesThermostat s;
+    s.drive.value = {strength};
+    s.rotational_share = share;
+    t.species.assign(species, s);
+    return t;
+}
+
+ThermostatSpec langevin(double T_b, double gamma, double gamma_rot, std::size_t species = 1) {
+    ThermostatSpec t;
+    t.kind = ThermostatKind::langevin;
+    SpeciesThermostat s;
+    s.drive.value = {T_b};
+    s.friction = gamma;
+    s.rotational_friction = gamma_rot;
+    t.species.assign(species, s);
+    return t;
+}
+
+TEST(GaussianBridge, DrawsSumToTheTotalAndHaveTheConditionedLaw) {
+    // n iid N(0, s^2) conditioned on summing to 0: each draw has variance s^2 (1 - 1/n), any two
+    // the covariance -s^2/n, whatever their place in the sequence. 40000 trials of n = 5: the
+    // variances' standard errors are ~0.7 %, the covariances' ~0.006 s^2; tolerance 5 of them.
+    constexpr std::size_t n = 5, trials = 40000;
+    const double s = 1.7;
+    CollisionRng rng = make_collision_stream(StreamKey{3, Stream::test, 0, 0, 0});
+    double sum2[n] = {}, cov01 = 0, cov24 = 0, worst_sum = 0;
+    for (std::size_t t = 0; t < trials; ++t) {
+        GaussianBridge b(n, Vec3{}, s);
+        Vec3 x[n], total{};
+        for (std::size_t k = 0; k < n; ++k) {
+            x[k] = b.next(rng);
+            total += x[k];
+            sum2[k] += x[k].x * x[k].x;
+        }
+        cov01 += x[0].y * x[1].y;
+        cov24 += x[2].z * x[4].z;
+        worst_sum = std::max(worst_sum, norm(total));
+    }
+    EXPECT_LT(worst_sum, 1e-14);
+    const double var = s * s * (1 - 1.0 / n);
+    for (std::size_t k = 0; k < n; ++k)
+        EXPECT_NEAR(sum2[k] / trials / var, 1.0, 5 * std::sqrt(2.0 / trials)) << "draw " << k;
+    for (double c : {cov01, cov24})
+        EXPECT_NEAR(c / trials, -s * s / n, 5 * s * s / std::sqrt(static_cast<double>(trials)));
+}
+
+TEST(GaussianBridge, ChunkSumsHaveTheLawOfSumsOfZeroSumDraws) {
+    // Chunks of 3, 2, 4 of 9 zero-sum draws of scale s: chunk c's sum has variance s^2 n_c (9 - n_c)/9.
+    // 40000 trials: standard errors ~0.7 %, tolerance 5 of them; the sums close to round-off.
+    const std::vector<std::size_t> sizes{3, 2, 4};
+    constexpr std::size_t trials = 40000;
+    CollisionRng rng = make_collision_stream(StreamKey{4, Stream::test, 0, 0, 0});
+    std::vector<double> sum2(3, 0.0);
+    for (std::size_t t = 0; t < trials; ++t) {
+        const std::vector<Vec3> c = chunk_sums(sizes, 1.0, rng);
+        ASSERT_LT(norm(c[0] + c[1] + c[2]), 1e-14);
+        for (std::size_t k = 0; k < 3; ++k)
+            sum2[k] += c[k].x * c[k].x;
+    }
+    for (std::size_t k = 0; k < 3; ++k) {
+        const double nc = static_cast<double>(sizes[k]);
+        EXPECT_NEAR(sum2[k] / trials / (nc * (9 - nc) / 9), 1.0, 5 * std::sqrt(2.0 / trials)) << "chunk " << k;
+    }
+}
+
+TEST(Thermostat, KickVariancesIntegrateTheSchedule) {
+    // White noise over [0.5, 3] of a schedule 2 on [0, 1), 0.5 from 1 on: int = 2 x 0.5 + 0.5 x 2 = 2.
+    SpeciesThermostat th;
+    th.drive.t = {0, 1};
+    th.drive.value = {2, 0.5};
+    th.rotational_share = 0.25;
+    const double m = 2, I = 0.2;
+    SpeciesKick k = species_kick(ThermostatKind::white_noise, th, m, I, 0.5, 3.0);
+    EXPECT_DOUBLE_EQ(k.var_v, 0.75 * 2.0);
+    EXPECT_DOUBLE_EQ(k.var_w, 0.25 * m / I * 2.0);
+    // Langevin with a constant bath: the exact Ornstein-Uhlenbeck step, variance (T_b/m)(1 - a^2).
+    th.drive.t = {0};
+    th.drive.value = {3};
+    th.friction = 0.7;
+    th.rotational_friction = 0;
+    k = species_kick(ThermostatKind::langevin, th, m, I, 1.0, 1.4);
+    const double a = std::exp(-0.7 * 0.4);
+    EXPECT_DOUBLE_EQ(k.decay_v, a);
+    EXPECT_NEAR(k.var_v, 3.0 / m * (1 - a * a), 1e-15);
+    EXPECT_EQ(k.decay_w, 1.0); // no rotational friction: the spins feel no bath
+    EXPECT_EQ(k.var_w, 0.0);
+}
+
+TEST(DrivenEngine, KicksKeepTheMomentumToRoundOff) {
+    // A rough inelastic mixture (masses 1 and 3) under white noise with a rotational share: after
+    // 20 steps of kicks and collisions the total momentum is what the collisions alone leave (~0 from
+    // the start, ~1e-16 per grain per step of round-off), never the kicks' random sum (~sqrt(N xi0^2 t)
+    // ~ 10). The engine's recentring (above 1e-10 of the thermal speed) never fires.
+    const std::int64_t N = 4000;
+    std::vector<SpeciesSpec> sp{grain(), grain(1, 1, 3)};
+    sp[0].fraction = sp[1].fraction = 0.5;
+    auto e = make_engine<RoughPacked, true>(sp, N, std::vector(3, make_rough_constant(0.8, 0.3)),
+                                            EngineOptions{1.0, 1.0, 11, 0});
+    e.set_thermostat(white_noise(0.5, 0.3, 2));
+    e.run(forever, 20.0, IgnoreCollisions{});
+    ASSERT_GT(e.counters().steps, 10);
+    EXPECT_EQ(e.counters().recentrings, 0);
+    const double thermal = std::sqrt(moments_of(e).all.T_tr);
+    Vec3 P{};
+    for (const auto& [P_s, L_s] : momenta(e))
+        P += P_s;
+    EXPECT_LT(norm(P), 1e-12 * static_cast<double>(N) * thermal);
+    // Each species' kicks sum to zero on their own: kicks in steps of 1e-6 mean free times, with
+    // no collision between them (checked), leave every species' momentum and spin unchanged, though
+    // they heat the gas from T_tr = 1 to about 2.
+    auto f = make_engine<RoughPacked, true>(sp, N, std::vector(3, make_rough_constant(0.8, 0.3)),
+                                            EngineOptions{1.0, 1e-6, 12, 0});
+    const auto before = momenta(f);
+    f.set_thermostat(white_noise(1e6, 0.3, 2));
+    f.run(forever, 1.5e-6, IgnoreCollisions{});
+    ASSERT_GT(f.counters().steps, 5);
+    ASSERT_EQ(f.collisions(), 0);
+    EXPECT_GT(moments_of(f).all.T_tr, 1.5); // from 1: the kicks did act
+    const auto after = momenta(f);
+    for (std::size_t s = 0; s < 2; ++s) {
+        EXPECT_LT(norm(after[s].first - before[s].first), 1e-12 * static_cast<double>(N) * thermal) << s;
+        EXPECT_LT(norm(after[s].second - before[s].second), 1e-12 * static_cast<double>(N) * thermal) << s;
+    }
+}
+
+TEST(DrivenEngine, ExactEnergyInjectsTheIntendedEnergyToRoundOff) {
+    // Elastic grains (alpha = 1 and beta = -1 or 1: every collision keeps the energy to round-off)
+    // under white noise with exact_energy: the energy is the initial one plus N (3/2) m xi0^2 for
+    // every unit of kicked time, to round-off over some 10^5 collisions.
+    const std::int64_t N = 2000;
+    const double xi2 = 0.8;
+    {
+        auto e = make_engine<SmoothAoS>({grain()}, N, std::vector{make_smooth_constant(1.0)},
+                                        EngineOptions{1.0, 1.0, 5, 0});
+        e.set_thermostat(white_noise(xi2, 0.0, 1, true));
+        const double E0 = total_energy(e);
+        e.run(forever, 30.0, IgnoreCollisions{});
+        EXPECT_GT(e.collisions(), 50 * N);
+        const double want = E0 + 1.5 * N * xi2 * e.kicked_until();
+        EXPECT_NEAR(total_energy(e) / want, 1.0, 1e-11);
+    }
+    {
+        // Rough: the share eps goes to the spins, exactly too (T_rot's energy checked on its own
+        // would mix in the collisions' exchange; the total is exact).
+        auto e = make_engine<RoughPacked>({grain()}, N, std::vector{make_rough_constant(1.0, 1.0)},
+                                          EngineOptions{1.0, 1.0, 6, 0});
+        e.set_thermostat(white_noise(xi2, 0.4, 1, true));
+        const double E0 = total_energy(e);
+        e.run(forever, 30.0, IgnoreCollisions{});
+        const double want = E0 + 1.5 * N * xi2 * e.kicked_until();
+        EXPECT_NEAR(total_energy(e) / want, 1.0, 1e-11);
+    }
+}
+
+TEST(DrivenEngine, InjectedEnergyMatchesTheStrengthWithinStatistics) {
+    // Without exact_energy the injection is exact in expectation: 16 replicas of an elastic rough
+    // gas (N = 1000) kicked over t ~ 5 with eps = 0.5. The energy gained over N (3/2) xi0^2 t_kick
+    // is 1 in the mean; tolerance 4 standard errors of the replicas (each ~1 % here).
+    const std::int64_t N = 1000;
+    const double xi2 = 1.0;
+    std::vector<double> ratio;
+    for (std::uint64_t r = 0; r < 16; ++r) {
+        auto e = make_engine<RoughPacked>({grain()}, N, std::vector{make_rough_constant(1.0, 1.0)},
+                                          EngineOptions{1.0, 1.0, 9, r});
+        e.set_thermostat(white_noise(xi2, 0.5));
+        const double E0 = total_energy(e);
+        e.run(forever, 5.0, IgnoreCollisions{});
+        ratio.push_back((total_energy(e) - E0) / (1.5 * N * xi2 * e.kicked_until()));
+    }
+    const MeanErr m = mean_err(ratio);
+    EXPECT_NEAR(m.mean, 1.0, 4 * m.err) << "err " << m.err;
+    EXPECT_LT(m.err, 0.02); // the test resolves a 10 % error
+}
+
+// An elastic gas in a Langevin bath at T_b started ten times hotter: after 12 relaxation times
+// 1/(2 gamma) its temperatures are T_b and its cumulants zero. The Maxwellian at T_b is a fixed
+// point of both the exact Ornstein-Uhlenbeck step and of elastic collisions, so the splitting leaves
+// it unchanged: the tolerances are statistical only. Averages over R replicas of the final state,
+// tolerance 4 standard errors.
+template <class Store, bool Mixture, class Policy>
+void expect_bath_equilibrium(std::vector<SpeciesSpec> species, std::vector<Policy> policies, double gamma_rot,
+                             const char* what) {
+    const std::int64_t N = 2000;
+    const double T_b = 1.0, gamma = 0.5;
+    const std::size_t S = species.size();
+    std::vector<std::vector<double>> T_tr(S), T_rot(S), a20(S), a02(S);
+    for (std::uint64_t r = 0; r < 12; ++r) {
+        auto e = make_engine<Store, Mixture>(species, N, policies, EngineOptions{1.0, 1.0, 21, r});
+        e.set_thermostat(langevin(T_b, gamma, gamma_rot, S));
+        e.run(forever, 12.0 / gamma, IgnoreCollisions{});
+        const Moments m = moments_of(e);
+        for (std::size_t s = 0; s < S; ++s) {
+            const GroupMoments& g = Mixture ? m.species[s] : m.all;
+            T_tr[s].push_back(g.T_tr);
+            T_rot[s].push_back(g.T_rot);
+            a20[s].push_back(g.a20);
+            a02[s].push_back(g.a02);
+        }
+    }
+    for (std::size_t s = 0; s < S; ++s) {
+        for (const auto& [name, x, want] : {std::tuple{"T_tr", &T_tr[s], T_b}, std::tuple{"T_rot", &T_rot[s], T_b},
+                                            std::tuple{"a20", &a20[s], 0.0}, std::tuple{"a02", &a02[s], 0.0}}) {
+            const MeanErr m = mean_err(*x);
+            EXPECT_NEAR(m.mean, want, 4 * m.err) << what << ", species " << s << ": " << name << " err " << m.err;
+        }
+        EXPECT_LT(mean_err(T_tr[s]).err, 0.01 * T_b) << what; // resolves a 3 % error
+    }
+}
+
+TEST(DrivenEngine, LangevinBathMakesSmoothGrainsMaxwellianAtItsTemperature) {
+    // Smooth grains: the spins never collide; the rotational friction alone brings them to T_b.
+    expect_bath_equilibrium<SmoothAoS, false>({grain(10, 10)}, std::vector{make_smooth_constant(1.0)}, 0.5,
+                                              "smooth");
+}
+
+TEST(DrivenEngine, LangevinBathMakesRoughGrainsMaxwellianAtItsTemperature) {
+    // Perfectly rough elastic grains, the bath on the translations only: the spins reach T_b through
+    // the collisions (equipartition) from T_rot = 0.1 T_b.
+    expect_bath_equilibrium<RoughPacked, false>({grain(10, 0.1)}, std::vector{make_rough_constant(1.0, 1.0)}, 0.0,
+                                                "rough");
+}
+
+TEST(DrivenEngine, LangevinBathMakesAMixtureMaxwellianAtItsTemperature) {
+    std::vector<SpeciesSpec> sp{grain(10, 1, 1), grain(5, 20, 4)};
+    sp[0].fraction = 0.6;
+    sp[1].fraction = 0.4;
+    sp[1].radius = 0.7;
+    expect_bath_equilibrium<RoughPacked, true>(sp, std::vector(3, make_rough_constant(1.0, 1.0)), 0.3, "mixture");
+}
+
+template <class E> bool same_particles(const E& a, const E& b) {
+    for (std::size_t i = 0; i < a.particles(); ++i)
+        for (const auto& [x, y] : {std::pair{a.store().v(i), b.store().v(i)}, {a.store().w(i), b.store().w(i)}})
+            if (std::memcmp(&x, &y, sizeof x) != 0)
+                return false;
+    return true;
+}
+
+TEST(DrivenEngine, KicksDoNotDependOnTheThreadsAndResumeBitForBit) {
+    // Groups of a step on one or two threads, and a run saved and resumed mid-step: the same bits.
+    const std::int64_t N = 40000; // several chunks per species
+    const EngineOptions opt{1.0, 1.0, 13, 2, 2, 4, 1};
+    const auto make = [&](int threads) {
+        EngineOptions o = opt;
+        o.threads = threads;
+        auto e = make_engine<RoughPacked>({grain()}, N, std::vector{make_rough_constant(0.7, 0.2)}, o);
+        e.set_thermostat(white_noise(0.6, 0.2, 1, true));
+        return e;
+    };
+    auto a = make(1);
+    auto b = make(2);
+    a.run_collisions(3 * N + 5);
+    b.run_collisions(3 * N + 5);
+    ByteWriter w;
+    a.save_state(w);
+    const std::string saved = w.take();
+    auto c = make(2);
+    ByteReader r(saved);
+    c.load_state(r);
+    EXPECT_EQ(r.remaining(), 0u);
+    for (auto* e : {&a, &b, &c})
+        e->run(forever, e->time() + 7.3, IgnoreCollisions{});
+    EXPECT_TRUE(same_particles(a, b));
+    EXPECT_TRUE(same_particles(a, c));
+    EXPECT_EQ(a.kicked_until(), c.kicked_until());
+    // The kicks are within about half a step of the time (see "Thermostat" in dsmc/engine.hpp).
+    EXPECT_LT(std::abs(a.kicked_until() - a.time()), a.step_length());
+}
+
+} // namespace
+} // namespace roughgas
