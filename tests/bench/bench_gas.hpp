@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <string_view>
 #include <tuple>
 #include <utility>
@@ -41,12 +42,14 @@ template <class Store, class Policy, bool Mixture = false> class BenchGas {
   public:
     // groups = 0: auto_groups(N), what roughgas run uses (run_spec.hpp).
     BenchGas(std::int64_t N, const SpeciesSpec& species, const Policy& policy, int classes = 2,
-             int groups = 0, int threads = 1)
+             int groups = 0, int threads = 1, std::optional<ThermostatSpec> thermostat = std::nullopt)
         : e_(make_bench_engine<Store, Policy, Mixture>(N, species, policy, classes,
                                                        groups == 0 ? auto_groups(N) : groups, threads)),
           // A grouped run meets a collision target in parallel phases and a short serial tail
           // (engine.hpp): chunks of at least a step (N/2 collisions), as run_replica uses.
           chunk_(e_.groups() > 1 ? std::max<std::int64_t>(bench_chunk, N / 2) : bench_chunk) {
+        if (thermostat)
+            e_.set_thermostat(*thermostat);
         e_.run_collisions(N / 4); // half a collision per particle
         std::tie(v2_0_, w2_0_) = temperatures();
     }
@@ -62,11 +65,12 @@ template <class Store, class Policy, bool Mixture = false> class BenchGas {
 
     // The gas cools; velocity-dependent restitution would drift out of its regime (and out of the
     // tangential table's range), so v and omega are scaled back to the initial translational and
-    // rotational temperatures whenever one of them has halved. Call between timed chunks.
+    // rotational temperatures whenever one of them has halved (or doubled: a driven gas). Call between
+    // timed chunks.
     void rescale_if_cooled() {
         const auto [v2, w2] = temperatures();
-        if (v2 >= 0.5 * v2_0_ && w2 >= 0.5 * w2_0_)
-            return;
+        if (v2 >= 0.5 * v2_0_ && w2 >= 0.5 * w2_0_ && v2 <= 2 * v2_0_ && w2 <= 2 * w2_0_)
+            return; // (a driven gas may heat instead)
         const double fv = std::sqrt(v2_0_ / v2), fw = w2 > 0 ? std::sqrt(w2_0_ / w2) : 1.0;
         for (std::size_t i = 0; i < e_.store().size(); ++i) {
             e_.store().v(i) *= fv;
@@ -182,9 +186,38 @@ struct RoughAoS64Case : RoughConstantCase {
     static constexpr std::string_view name = "Layout_RoughAoS64";
     using store = RoughAoS;
 };
+// Driven gases (dsmc/thermostat.hpp): the constant kernels' gases heated by a thermostat whose power
+// about balances their cooling at T = 1 (Maxwellian estimate: smooth alpha = 0.9 loses
+// (1 - alpha^2)/3 x 4 sqrt(pi) ~ 0.45 of T per unit time; the rough gas some twice that), so that
+// they stay near the cooling gases' temperatures: what a driven run's kicks add to the same loop.
+inline ThermostatSpec bench_white_noise(double strength) {
+    ThermostatSpec t;
+    t.species.resize(1);
+    t.species[0].drive.value = {strength};
+    return t;
+}
+struct DrivenRoughConstantCase : RoughConstantCase {
+    static constexpr std::string_view name = "DrivenRoughConstant";
+    static ThermostatSpec thermostat() { return bench_white_noise(1.0); }
+};
+struct DrivenSmoothConstantCase : SmoothConstantCase {
+    static constexpr std::string_view name = "DrivenSmoothConstant";
+    static ThermostatSpec thermostat() { return bench_white_noise(0.45); }
+};
+struct LangevinRoughConstantCase : RoughConstantCase {
+    static constexpr std::string_view name = "LangevinRoughConstant";
+    static ThermostatSpec thermostat() {
+        ThermostatSpec t = bench_white_noise(1.0); // a bath at T_b = 1
+        t.kind = ThermostatKind::langevin;
+        t.species[0].friction = 1.0;
+        t.species[0].rotational_friction = 1.0;
+        return t;
+    }
+};
 using Cases =
     std::tuple<RoughConstantCase, SmoothConstantCase, SmoothElasticCase, CoulombCase, ViscoelasticSmoothCase,
-               ViscoelasticCase, BrilliantovCase, SmoothAoS32Case, SmoothPacked24Case, RoughAoS64Case>;
+               ViscoelasticCase, BrilliantovCase, SmoothAoS32Case, SmoothPacked24Case, RoughAoS64Case,
+               DrivenRoughConstantCase, DrivenSmoothConstantCase, LangevinRoughConstantCase>;
 
 // The store of a case: its own, else the one run_replica uses for its policy.
 template <class Case> struct CaseStore { using type = StoreFor<decltype(Case::policy())>; };
@@ -199,8 +232,11 @@ struct CaseStore<Case> {
 // The benchmark gas of Case on N grains and `threads` threads.
 template <class Case> auto make_case_gas(std::int64_t N, int threads) {
     using Policy = decltype(Case::policy());
+    std::optional<ThermostatSpec> thermostat;
+    if constexpr (requires { Case::thermostat(); })
+        thermostat = Case::thermostat();
     return BenchGas<typename CaseStore<Case>::type, Policy>(N, Case::species(), Case::policy(), 2, 0,
-                                                            threads);
+                                                            threads, thermostat);
 }
 
 } // namespace roughgas::bench

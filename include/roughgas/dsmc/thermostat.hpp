@@ -31,12 +31,11 @@
 // first time to sum B = m sum v.dv and A = m sum dv^2/2 (likewise for the spins), the second to
 // apply lambda dv with lambda > 0 the root of A lambda^2 + B lambda = Q, Q the intended energy
 // N_s (3/2) m sigma^2: the step injects Q to round-off, still with zero momentum.
+#include "roughgas/core/normal.hpp"
 #include "roughgas/core/rng.hpp"
 #include "roughgas/core/vec.hpp"
 #include "roughgas/dsmc/run_spec.hpp"
 #include "roughgas/dsmc/species.hpp"
-
-#include <boost/random/normal_distribution.hpp>
 
 #include <cmath>
 #include <cstddef>
@@ -93,9 +92,9 @@ class GaussianBridge {
             rest_ = Vec3{};
             return x;
         }
-        const double m = static_cast<double>(left_);
-        const double sd = s_ * std::sqrt((m - 1) / m);
-        const Vec3 x = (1.0 / m) * rest_ + Vec3{sd * normal_(rng), sd * normal_(rng), sd * normal_(rng)};
+        const double m = static_cast<double>(left_), inv = 1.0 / m; // one division, off the chain through rest_
+        const double sd = s_ * std::sqrt((m - 1) * inv);
+        const Vec3 x = inv * rest_ + Vec3{sd * normal_(rng), sd * normal_(rng), sd * normal_(rng)};
         rest_ -= x;
         --left_;
         return x;
@@ -105,7 +104,7 @@ class GaussianBridge {
     std::size_t left_;
     Vec3 rest_;
     double s_;
-    boost::random::normal_distribution<double> normal_{0.0, 1.0};
+    ZigguratNormal normal_;
 };
 
 // The sums of `chunks` chunks of sizes sizes[c] (summing to n) of n zero-sum draws of scale s.
@@ -113,7 +112,7 @@ template <class Rng> std::vector<Vec3> chunk_sums(const std::vector<std::size_t>
     std::size_t left = 0;
     for (std::size_t n : sizes)
         left += n;
-    boost::random::normal_distribution<double> normal(0.0, 1.0);
+    const ZigguratNormal normal;
     std::vector<Vec3> sums;
     Vec3 rest{};
     for (std::size_t c = 0; c < sizes.size(); ++c) {
