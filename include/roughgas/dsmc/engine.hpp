@@ -1088,8 +1088,11 @@ class Engine {
     }
 
     // Species s's kicks in chunk ch (grains lo .. hi - 1), from the chunk's own stream: applied
-    // (energy == nullptr) or only summed into *energy.
-    void kick_chunk(std::size_t s, std::size_t ch, std::size_t lo, std::size_t hi, const StepKick& k,
+    // (energy == nullptr) or only summed into *energy. Never inlined, like advance(): the team runs
+    // chunks inline on one thread and through its workers on several, and two inlined copies were
+    // contracted into FMAs differently (the exact-energy sums, and with them the kicks, differed in
+    // their last bits between one and two threads; tests/dsmc/thermostat_test.cpp).
+    [[gnu::noinline]] void kick_chunk(std::size_t s, std::size_t ch, std::size_t lo, std::size_t hi, const StepKick& k,
                     KickEnergy* energy) {
         CollisionRng rng = make_collision_stream(kick_stream_key(
             opt_.seed, opt_.replica, static_cast<std::uint64_t>(c_.steps), s, static_cast<long>(ch)));
