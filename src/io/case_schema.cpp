@@ -624,6 +624,8 @@ std::string KeySpec::type_name() const {
         return "[string, string, string]";
     case KeyType::string_list:
         return "[string, ...]";
+    case KeyType::real_pairs:
+        return "[[real, real], ...]";
     }
     return "?";
 }
