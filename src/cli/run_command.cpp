@@ -150,9 +150,9 @@ int run_run(const RunOptions& o, const Communicator& comm) {
 
 Subcommand add_run_command(CLI::App& parent, const Communicator& comm) {
     auto o = std::make_shared<RunOptions>();
-    CLI::App* app =
-        parent.add_subcommand("run", "run a DSMC simulation of a cooling or uniformly sheared gas, "
-                                     "homogeneous or in a box ([domain]), writing DIR/moments.csv");
+    CLI::App* app = parent.add_subcommand(
+        "run", "run a DSMC simulation of a cooling, thermostat-driven or uniformly sheared gas, "
+               "homogeneous or in a box ([domain]), writing DIR/moments.csv");
     CLI::Option* case_opt = app->add_option("CASE", o->case_file, "case file (TOML)");
     CLI::Option* out = app->add_option("--out", o->out, "output directory (moments.csv)");
     CLI::Option* set = add_set_option(*app, o->sets);

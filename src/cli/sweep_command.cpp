@@ -6,7 +6,7 @@
 // run in parallel over --threads (OpenMP, dynamic schedule); each point runs its replicas in turn
 // and is deterministic from the case's seed, so the files do not depend on the thread count.
 // The summary is the steady state of the point (observables/steady_state.hpp, io/steady_csv.hpp):
-// for driven runs (uniform shear, boxes whose walls heat or shear the gas: driven() in
+// for driven runs (uniform shear, a thermostat, boxes whose walls heat or shear the gas: driven() in
 // io/case_config.hpp) the steady window of T and P*_ij; for cooling runs the scaled homogeneous cooling
 // state (theta, a20, a02 stop drifting while T falls), averaged with batch-means errors.
 //

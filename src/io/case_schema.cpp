@@ -115,13 +115,61 @@ std::vector<Key> collision_keys(const std::string& table) {
     };
 }
 
+// The keys of [thermostat] that a [[species_thermostat]] may give for its species.
+std::vector<Key> thermostat_keys(const std::string& table) {
+    const std::string t = table + ".";
+    return {
+        Key(t + "strength", T::real)
+            .unit("length^2/time^3")
+            .when("required for kind = white_noise unless schedule is given")
+            .ge(0)
+            .doc("white_noise: the strength xi0^2 (velocity^2/time): every velocity component gets independent "
+                 "Gaussian kicks of variance xi0^2 dt, which alone raise T_tr at the rate m xi0^2; 0: no drive"),
+        Key(t + "bath_temperature", T::real)
+            .unit("energy")
+            .when("required for kind = langevin unless schedule is given")
+            .gt(0)
+            .doc("langevin: the temperature T_b of the bath (k_B = 1)"),
+        Key(t + "rotational_share", T::real)
+            .fallback(0.0)
+            .ge(0)
+            .le(1)
+            .doc("white_noise: the share eps of the injected power that kicks the spins instead of the "
+                 "velocities: dT_tr/dt = (1 - eps) m xi0^2 and dT_rot/dt = eps m xi0^2 from the kicks"),
+        Key(t + "friction", T::real)
+            .unit("1/time")
+            .when("required for kind = langevin")
+            .gt(0)
+            .doc("langevin: the friction gamma of the bath, dv = -gamma v dt + sqrt(2 gamma T_b/m) dW: "
+                 "dT_tr/dt = 2 gamma (T_b - T_tr) from the bath"),
+        Key(t + "rotational_friction", T::real)
+            .unit("1/time")
+            .fallback(0.0)
+            .ge(0)
+            .doc("langevin: the friction gamma_rot of the spins with the bath (the same law for omega, with the "
+                 "moment of inertia for the mass); 0: the spins feel no bath"),
+    };
+}
+
+// Appends the keys of a table of overrides (`keys`, made with its paths): each falls back to the
+// value of the same key of table `from`, and is described as that key "for `whom`".
+void add_overrides(std::vector<Key>& k, std::vector<Key> keys, const std::string& from, const std::string& whom) {
+    for (Key& c : keys) {
+        const KeySpec s = c.spec();
+        const std::string of = from + "." + std::string(s.name());
+        c.when("value of " + of).doc("as " + of + ", for " + whom);
+        k.push_back(std::move(c));
+    }
+}
+
 std::vector<Key> keys() {
     std::vector<Key> k = {
         // [run]
         Key("run.kind", T::string)
             .fallback(std::string("cooling"))
             .one_of(run_kind_names)
-            .doc("cooling: homogeneous cooling state; shear: uniform shear flow (needs [shear])"),
+            .doc("cooling: homogeneous cooling state (a driven gas with [thermostat]); shear: uniform shear flow "
+                 "(needs [shear])"),
         Key("run.particles", T::integer)
             .required()
             .ge(2)
@@ -259,12 +307,7 @@ std::vector<Key> keys() {
         Key("pair.species", T::string_pair)
             .required()
             .doc("the two species of the pair, e.g. [\"a\", \"b\"] (order irrelevant, one table per pair)"));
-    for (Key& c : collision_keys("pair")) {
-        KeySpec s = c.spec();
-        const std::string from = "collision." + std::string(s.name());
-        c.when("value of " + from).doc("as " + from + ", for this pair");
-        k.push_back(std::move(c));
-    }
+    add_overrides(k, collision_keys("pair"), "collision", "this pair");
     const std::vector<Key> rest = {
         // [material]
         Key("material.young_modulus", T::real).unit("Pa").required().gt(0).doc("Young's modulus Y"),
@@ -329,6 +372,34 @@ std::vector<Key> keys() {
             .doc("Strang splitting step h (stream h/2, collide h, stream h/2), in mean free times of the "
                  "state each step's collisions start from; the error of the steady P*_xy is O(h^2) "
                  "(docs/model.md); a sheared box ([domain]) steps by domain.time_step instead"),
+    };
+    k.insert(k.end(), rest.begin(), rest.end());
+    // [thermostat], then [[species_thermostat]] with the keys it may give
+    k.push_back(Key("thermostat.kind", T::string)
+                    .fallback(std::string("white_noise"))
+                    .one_of(thermostat_kind_names)
+                    .doc("white_noise: Gaussian kicks of the velocities (and, by rotational_share, of the spins) "
+                         "at every DSMC step; langevin: a heat bath at bath_temperature with friction"));
+    for (Key& t : thermostat_keys("thermostat"))
+        k.push_back(std::move(t));
+    k.push_back(Key("thermostat.exact_energy", T::boolean)
+                    .fallback(false)
+                    .doc("white_noise: each step's kicks of each species scaled so that they inject exactly the "
+                         "intended energy, N_s (3/2) m_s xi0^2 dt (split by rotational_share), not only on average"));
+    k.push_back(Key("thermostat.schedule", T::real_pairs)
+                    .unit("[time, strength or bath_temperature]")
+                    .when("unset: strength or bath_temperature, constant")
+                    .ge(0)
+                    .doc("the drive over time, piecewise constant, instead of strength (white_noise) or "
+                         "bath_temperature (langevin) for every species: [[t0, x0], [t1, x1], ...] drives with "
+                         "x_k from time t_k on (in the case's time unit, whichever clock the run counts); "
+                         "t0 = 0, times increasing, bath temperatures > 0"));
+    k.push_back(Key("species_thermostat.species", T::string)
+                    .required()
+                    .doc("the species whose thermostat the table sets (one table per species; the others take "
+                         "[thermostat]'s values)"));
+    add_overrides(k, thermostat_keys("species_thermostat"), "thermostat", "this species");
+    const std::vector<Key> box = {
         // [domain]
         Key("domain.size", T::real3)
             .unit("length")
@@ -461,7 +532,7 @@ std::vector<Key> keys() {
             .one_of(grid_spacing_names)
             .doc("spacing of both grids: log (geometric) or linear"),
     };
-    k.insert(k.end(), rest.begin(), rest.end());
+    k.insert(k.end(), box.begin(), box.end());
     // [wall_lower], [wall_upper], then each axis's own [wall_lower_x], ...: after [initial]
     std::vector<Key> walls;
     for (const WallTable& table : wall_tables()) {
@@ -624,6 +695,8 @@ std::string KeySpec::type_name() const {
         return "[string, string, string]";
     case KeyType::string_list:
         return "[string, ...]";
+    case KeyType::real_pairs:
+        return "[[real, real], ...]";
     }
     return "?";
 }
@@ -653,6 +726,10 @@ const std::vector<TableSpec>& case_tables() {
          "material of the grains (SI)"},
         {"contact", false, "optional", "how the contact of viscoelastic and brilliantov is integrated"},
         {"shear", false, "required for run.kind = shear", "uniform shear flow"},
+        {"thermostat", false, "optional (homogeneous, run.kind = cooling)",
+         "a thermostat that drives the gas, white noise or a Langevin bath (a driven gas: steady.csv)"},
+        {"species_thermostat", true, "optional (with [thermostat])",
+         "one species' thermostat (keys default to [thermostat])"},
         {"domain", false, "optional",
          "a spatially resolved run: grains with positions in a box of collision cells (docs/model.md §8)"},
         {"initial", false, "optional (with [domain])", "a wave on the uniform start of a spatially resolved run"},

@@ -42,6 +42,41 @@ std::vector<double> rows_apart(const std::vector<double>& times, std::int64_t pa
     return kept;
 }
 
+namespace {
+
+// One SpeciesThermostat per species, in the order of cfg.species: the species' values over
+// [thermostat]'s; a constant drive is a schedule of one value from t = 0.
+ThermostatSpec thermostat_spec(const CaseConfig& cfg) {
+    const ThermostatConfig& t = cfg.thermostat.value();
+    ThermostatSpec spec;
+    spec.kind = t.kind;
+    spec.exact_energy = t.exact_energy;
+    for (std::size_t i = 0; i < cfg.species.size(); ++i) {
+        const ThermostatValues v = thermostat_for(cfg, i);
+        SpeciesThermostat s;
+        if (t.schedule.empty()) {
+            const std::optional<double> x = t.kind == ThermostatKind::white_noise ? v.strength : v.bath_temperature;
+            if (!x)
+                throw std::invalid_argument("[thermostat] without a drive for species \"" + cfg.species[i].name + "\"");
+            s.drive = DriveSchedule{{0.0}, {*x}};
+        } else {
+            s.drive.t.clear();
+            s.drive.value.clear();
+            for (const std::array<double, 2>& p : t.schedule) {
+                s.drive.t.push_back(p[0]);
+                s.drive.value.push_back(p[1]);
+            }
+        }
+        s.rotational_share = v.rotational_share.value_or(0.0);
+        s.friction = v.friction.value_or(0.0);
+        s.rotational_friction = v.rotational_friction.value_or(0.0);
+        spec.species.push_back(s);
+    }
+    return spec;
+}
+
+} // namespace
+
 RunSpec run_spec_from_case(const CaseConfig& cfg) {
     RunSpec spec;
     if (cfg.run.kind == RunKind::shear) {
@@ -49,6 +84,8 @@ RunSpec run_spec_from_case(const CaseConfig& cfg) {
             throw std::invalid_argument("run.kind = \"shear\" without [shear]");
         spec.shear = ShearSpec{cfg.shear->rate, cfg.shear->time_step};
     }
+    if (cfg.thermostat)
+        spec.thermostat = thermostat_spec(cfg);
     if (cfg.domain) {
         DomainSpec d;
         d.size = cfg.domain->size;

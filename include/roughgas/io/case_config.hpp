@@ -154,6 +154,37 @@ struct ShearConfig {
     friend bool operator==(const ShearConfig&, const ShearConfig&) = default;
 };
 
+// [thermostat]: a driven homogeneous gas (ThermostatSpec, dsmc/run_spec.hpp).
+// Values of thermostat.kind, in the order of ThermostatKind.
+inline constexpr std::array<std::string_view, 2> thermostat_kind_names{"white_noise", "langevin"};
+constexpr std::string_view name(ThermostatKind k) {
+    return thermostat_kind_names[static_cast<std::size_t>(k)];
+}
+// The values of [thermostat] that a [[species_thermostat]] may set for its species. Those of the
+// other kind are refused, so they stay unset; in a [[species_thermostat]] what it does not give stays
+// unset (the species takes [thermostat]'s).
+struct ThermostatValues {
+    std::optional<double> strength;            // xi0^2 (white_noise; unset with a schedule)
+    std::optional<double> bath_temperature;    // T_b (langevin; unset with a schedule)
+    std::optional<double> rotational_share;    // eps (white_noise; [thermostat]: 0 if not given)
+    std::optional<double> friction;            // gamma (langevin)
+    std::optional<double> rotational_friction; // gamma_rot (langevin; [thermostat]: 0 if not given)
+    friend bool operator==(const ThermostatValues&, const ThermostatValues&) = default;
+};
+struct ThermostatConfig {
+    ThermostatKind kind = ThermostatKind::white_noise;
+    ThermostatValues values;
+    bool exact_energy = false;                   // white_noise
+    std::vector<std::array<double, 2>> schedule; // [time, drive] pairs; empty: the constant drive
+    friend bool operator==(const ThermostatConfig&, const ThermostatConfig&) = default;
+};
+// One [[species_thermostat]] table.
+struct SpeciesThermostatConfig {
+    std::string species;
+    ThermostatValues values; // what it gives
+    friend bool operator==(const SpeciesThermostatConfig&, const SpeciesThermostatConfig&) = default;
+};
+
 // [domain]: a spatially resolved run (dsmc/spatial_engine.hpp); Boundary and WallKind are the
 // solver's (dsmc/run_spec.hpp).
 inline constexpr std::array<std::string_view, 2> boundary_names{"periodic", "walls"};
@@ -241,6 +272,8 @@ struct CaseConfig {
     std::optional<MaterialConfig> material; // present iff [material] was given
     ContactConfig contact;
     std::optional<ShearConfig> shear; // present iff [shear] was given (required for kind = shear)
+    std::optional<ThermostatConfig> thermostat; // present iff [thermostat] was given: a driven gas
+    std::vector<SpeciesThermostatConfig> species_thermostats; // overrides of [thermostat] for species
     std::optional<DomainConfig> domain; // present iff [domain] was given: a spatially resolved run
     std::optional<InitialConfig> initial; // present iff [initial] was given
     std::optional<SpectraConfig> spectra; // present iff [spectra] was given
@@ -306,6 +339,21 @@ inline const CollisionConfig& collision_for(const CaseConfig& cfg, std::size_t i
     return cfg.collision;
 }
 
+// The thermostat of species i: its [[species_thermostat]]'s values, the others [thermostat]'s;
+// requires cfg.thermostat.
+inline ThermostatValues thermostat_for(const CaseConfig& cfg, std::size_t i) {
+    ThermostatValues v = cfg.thermostat.value().values;
+    for (const SpeciesThermostatConfig& s : cfg.species_thermostats)
+        if (s.species == cfg.species[i].name) {
+            for (auto field : {&ThermostatValues::strength, &ThermostatValues::bath_temperature,
+                               &ThermostatValues::rotational_share, &ThermostatValues::friction,
+                               &ThermostatValues::rotational_friction})
+                if (s.values.*field)
+                    v.*field = s.values.*field;
+        }
+    return v;
+}
+
 // The '#' line of the CSV files naming their units: SI when a pair integrates the viscoelastic
 // contact (its [material] is in SI, and so must the species' masses, radii and temperatures be);
 // otherwise the case's own units, whatever consistent ones it was written in.
@@ -319,10 +367,10 @@ inline std::string unit_system_note(const CaseConfig& cfg) {
 }
 
 // Runs that reach a steady state (steady.csv) rather than a scaled cooling state (scaled.csv):
-// uniform shear flow, and boxes whose walls drive the gas (a diffuse wall holds its temperature, a
-// moving wall shears).
+// uniform shear flow, a gas heated by a thermostat, and boxes whose walls drive the gas (a diffuse
+// wall holds its temperature, a moving wall shears).
 inline bool driven(const CaseConfig& c) {
-    if (c.run.kind == RunKind::shear)
+    if (c.run.kind == RunKind::shear || c.thermostat)
         return true;
     if (!c.domain || !c.domain->has_walls())
         return false;

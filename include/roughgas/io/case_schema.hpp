@@ -14,7 +14,10 @@ namespace roughgas {
 // key's bounds or choices; a string default applies to every element.
 // string_list: an array of distinct strings, at least one, each one of the key's choices; the
 // default is the elements separated by spaces.
-enum class KeyType { boolean, integer, real, string, string_pair, real3, integer3, string3, string_list };
+// real_pairs: an array of [real, real] pairs, at least one, each element within the key's bounds.
+enum class KeyType {
+    boolean, integer, real, string, string_pair, real3, integer3, string3, string_list, real_pairs
+};
 
 // How a missing key is resolved.
 enum class Need {
@@ -52,7 +55,8 @@ struct KeySpec {
     std::string allowed() const;
     std::string default_text() const; // "1.0", "\"cooling\"", "required", the note, or "unset"
     std::vector<std::string> default_list() const; // a string_list's default: its elements
-    std::string type_name() const;    // "real", "integer", "boolean", "string", "[string, string]", "[real, real, real]", ...
+    // "real", "integer", "boolean", "string", "[string, string]", "[real, real, real]", "[[real, real], ...]", ...
+    std::string type_name() const;
     bool allows(double x) const;      // within [lower, upper]
     bool allows(std::string_view s) const;
 };

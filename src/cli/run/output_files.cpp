@@ -3,7 +3,8 @@
 namespace roughgas::cli {
 
 std::vector<const char*> run_output_files(const CaseConfig& cfg) {
-    const bool steady = driven(cfg); // a steady state (uniform shear, driving walls): steady.csv
+    // A steady state (uniform shear, a thermostat, driving walls): steady.csv.
+    const bool steady = driven(cfg);
     const bool box = cfg.domain.has_value();
     std::vector<const char*> files = {moments_file};
     if (cfg.run.histogram_every > 0)

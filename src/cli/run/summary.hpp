@@ -1,7 +1,7 @@
 #pragma once
 // The summary of a run's rows (observables/steady_state.hpp, io/steady_csv.hpp): for a driven gas
-// (uniform shear, walls that heat or shear it: driven() in io/case_config.hpp) the steady state,
-// DIR/steady.csv, and for a box its profiles over the same window, DIR/steady_profiles.csv; for a
+// (uniform shear, a thermostat, walls that heat or shear it: driven() in io/case_config.hpp) the steady
+// state, DIR/steady.csv, and for a box its profiles over the same window, DIR/steady_profiles.csv; for a
 // cooling gas the scaled homogeneous cooling state, DIR/scaled.csv. The same detector and batch
 // means for `run` (over the rows averaged over the replicas) and for each point of `sweep`.
 #include "roughgas/io/csv_writer.hpp"

@@ -17,6 +17,7 @@
 #include "shear_table.hpp"
 #include "species_table.hpp"
 #include "spectra_table.hpp"
+#include "thermostat_table.hpp"
 #include "toml_access.hpp"
 #include "wall_tables.hpp"
 
@@ -41,6 +42,8 @@ CaseConfig build_tables(BuildContext& ctx) {
         c.material = build_material(ctx, Reader(m, "material"));
     c.contact = build_contact(Reader(root["contact"].as_table(), "contact"));
     c.shear = build_shear(root);
+    c.thermostat = build_thermostat(root);
+    c.species_thermostats = build_species_thermostats(root);
     c.domain = build_domain(ctx);
     build_walls(root, c);
     c.initial = build_initial(root);
@@ -55,6 +58,7 @@ void check_tables(BuildContext& ctx, const CaseConfig& c) {
     check_collisions(ctx, c); // records which models need [material]
     check_material(ctx, c);
     check_shear(ctx, c);
+    check_thermostat(ctx, c);
     if (c.domain) {
         check_domain(ctx, c);
         check_walls(ctx, c);

@@ -13,6 +13,7 @@
 #include "shear_table.hpp"
 #include "species_table.hpp"
 #include "spectra_table.hpp"
+#include "thermostat_table.hpp"
 #include "wall_tables.hpp"
 
 namespace roughgas {
@@ -28,6 +29,9 @@ std::string emit_case(const CaseConfig& c) {
     case_file::emit_contact(e, c.contact);
     if (c.shear)
         case_file::emit_shear(e, *c.shear);
+    if (c.thermostat)
+        case_file::emit_thermostat(e, *c.thermostat);
+    case_file::emit_species_thermostats(e, c.species_thermostats);
     if (c.initial)
         case_file::emit_initial(e, *c.initial);
     if (c.domain)

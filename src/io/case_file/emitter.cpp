@@ -57,6 +57,13 @@ void Emitter::put(std::string_view k, const std::array<std::string, 3>& x) {
     line(k, fmt::format("[{}, {}, {}]", quote(x[0]), quote(x[1]), quote(x[2])));
 }
 
+void Emitter::put(std::string_view k, const std::vector<std::array<double, 2>>& x) {
+    std::string text;
+    for (const std::array<double, 2>& p : x)
+        text += fmt::format("{}[{}, {}]", text.empty() ? "" : ", ", toml_real(p[0]), toml_real(p[1]));
+    line(k, "[" + text + "]");
+}
+
 void Emitter::put(std::string_view k, const std::optional<double>& x) {
     if (x)
         put(k, *x);

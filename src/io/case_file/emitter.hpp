@@ -24,6 +24,7 @@ class Emitter {
     void put(std::string_view k, const std::array<std::int64_t, 3>& x);
     void put(std::string_view k, const std::vector<std::string>& x);
     void put(std::string_view k, const std::array<std::string, 3>& x);
+    void put(std::string_view k, const std::vector<std::array<double, 2>>& x); // [[a, b], [c, d]]
     void put(std::string_view k, const std::optional<double>& x); // nothing for an unset key
     std::string str() const { return text_; }
 

@@ -70,6 +70,8 @@ std::string type_phrase(KeyType t) {
         return "an array of three strings";
     case KeyType::string_list:
         return "an array of distinct strings";
+    case KeyType::real_pairs:
+        return "an array of [real, real] pairs";
     }
     return "?";
 }

@@ -3,6 +3,7 @@
 #include "run_table.hpp"
 
 #include "messages.hpp"
+#include "thermostat_table.hpp"
 
 #include "roughgas/dsmc/species.hpp"
 #include "roughgas/observables/theory.hpp"
@@ -20,8 +21,9 @@ namespace {
 // cooling rate of its cooling state, docs/model.md §5): T_tr falls as exp(-zeta* s). Below about
 // T_tr/m = 1e-300 (in the case's units) the squares of the velocities underflow and the run would stop
 // with an error partway; refused before any work (cooling_reach: the theory's trajectory from the
-// species' temperatures). Not for a box whose walls drive the gas (a diffuse or moving wall holds
-// it at a steady state); with initial.from, run_states.cpp checks it from the saved state's.
+// species' temperatures). Not for a gas a thermostat heats, nor a box whose walls drive it (a diffuse
+// or moving wall holds it at a steady state); with initial.from, run_states.cpp checks it from the
+// saved state's.
 void check_cooling_reach(BuildContext& ctx, const CaseConfig& c) {
     const std::size_t S = c.species.size();
     std::vector<HcsSpecies> species;
@@ -68,6 +70,12 @@ void check_cooling_reach(BuildContext& ctx, const CaseConfig& c) {
                             "underflow) at about {:.4g} collisions per particle: end it before "
                             "(run.end < {:.4g})",
                             c.run.end, reach, reach));
+}
+
+// A gas that nothing drives: not driven(), or held by a thermostat that injects nothing (white
+// noise of strength 0 throughout), which is refused with [domain] and so the only drive there is.
+bool cools_freely(const CaseConfig& c) {
+    return !driven(c) || (c.thermostat && !c.domain && !thermostat_heats(c));
 }
 
 // The Maxwell kernel is the reference model with a known answer for constant alpha, beta
@@ -179,7 +187,7 @@ void check_run(BuildContext& ctx, const CaseConfig& c) {
                             c.run.histogram_every_time, *c.run.end_time));
     if (c.run.kernel == CollisionKernel::maxwell)
         check_maxwell_kernel(ctx, c);
-    else if (c.run.kind == RunKind::cooling && ctx.use() == CaseUse::run && !driven(c) &&
+    else if (c.run.kind == RunKind::cooling && ctx.use() == CaseUse::run && cools_freely(c) &&
              !(c.initial && !c.initial->from.empty()))
         check_cooling_reach(ctx, c); // from a saved state: its own temperatures (io/run_states.cpp)
     if (!c.run.time_clock() && c.run.histogram_every > c.run.end) {

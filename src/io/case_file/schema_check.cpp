@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace roughgas::case_file {
@@ -172,6 +173,21 @@ class SchemaCheck {
                         d_.add(key, fmt::format("{}: \"{}\" is given twice", shown, a->get(i)->as_string()->get()),
                                &n);
             }
+            return;
+        }
+        case KeyType::real_pairs: {
+            // At least one pair, each of two reals checked as a key of type real (bounds).
+            const toml::array* a = n.as_array();
+            const auto is_pair = [](const toml::node& e) { return e.is_array() && e.as_array()->size() == 2; };
+            if (a == nullptr || a->empty() || !std::all_of(a->begin(), a->end(), is_pair)) {
+                d_.add(key, fmt::format("{}: must be {}, at least one", shown, type_phrase(s.type)), &n);
+                return;
+            }
+            KeySpec element = s;
+            element.type = KeyType::real;
+            for (std::size_t i = 0; i < a->size(); ++i)
+                for (std::size_t j = 0; j < 2; ++j)
+                    value(element, *a->get(i)->as_array()->get(j), fmt::format("{}[{}][{}]", key, i, j));
             return;
         }
         case KeyType::string: {

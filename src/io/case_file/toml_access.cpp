@@ -112,6 +112,14 @@ std::vector<std::string> Reader::strings(std::string_view k) const {
     return spec(k).default_list();
 }
 
+std::vector<std::array<double, 2>> Reader::real_pairs(std::string_view k) const {
+    std::vector<std::array<double, 2>> pairs;
+    if (const toml::array* a = node(k) ? node(k)->as_array() : nullptr)
+        for (const toml::node& e : *a)
+            pairs.push_back({*as_real(*e.as_array()->get(0)), *as_real(*e.as_array()->get(1))});
+    return pairs;
+}
+
 const KeySpec& Reader::spec(std::string_view k) const {
     return *find_key(table_ + "." + std::string(k));
 }

@@ -41,6 +41,7 @@ class Reader {
     std::array<std::int64_t, 3> integer3(std::string_view k) const;
     std::array<std::string, 3> string3(std::string_view k) const;
     std::vector<std::string> strings(std::string_view k) const;
+    std::vector<std::array<double, 2>> real_pairs(std::string_view k) const; // empty when missing
     // The enumerator whose name (`names`, in enumerator order) the key holds.
     template <class E, std::size_t N>
     E choice(std::string_view k, const std::array<std::string_view, N>& names) const {
