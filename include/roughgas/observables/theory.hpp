@@ -66,7 +66,7 @@
 // DSMC with the Maxwell kernel follows the system (tests/dsmc/maxwell_test.cpp).
 //
 // A driven gas: these rates plus a thermostat's sources (observables/driven_theory.hpp), integrated by
-// HcsTrajectory's thermostat constructor.
+// HcsTrajectory's thermostat constructor; its steady states in observables/driven_steady_state.hpp.
 #include "roughgas/dsmc/run_spec.hpp"
 
 #include <cstddef>
