@@ -14,7 +14,8 @@
 // and their sum gives T_tr^{3/2} = m xi^2/(G [A - B + (C - B) theta]) (the injected power m xi^2 equals the
 // collisional loss of T_tr + T_rot). Smooth spheres (beta = -1, B = C = 0): T_tr^{3/2} = (1 - eps) m xi^2/(G A);
 // T_rot stays at its initial value (eps = 0: theta undefined, NaN) or grows without bound (eps > 0:
-// theta = +infinity). Vega Reyes & Santos (2015) and Torrente et al. (2019) give the eps = 0 theta.
+// theta = +infinity). (Rough spheres under this thermostat: Vega Reyes & Santos 2015, Torrente et al.
+// 2019; the closed forms here follow from the equations above.)
 // The steady state in reduced variables does not depend on xi: T_tr scales as (m xi^2)^{2/3}.
 //
 // Equal spheres in a Langevin bath at T_b (frictions gamma, gamma_rot): dT_rot/dt = 0 gives T_rot as a

@@ -25,9 +25,9 @@
 //   a2 = (1/2 - alpha^2)/(K - 3(d + 2)/16),
 // which is the formula above; the cooling state's mu_4 = (d + 2)(1 + a2) mu_2 gives from the same K their
 //   a2 = 16 (1 - alpha)(1 - 2 alpha^2)/(9 + 24d - (41 - 8d) alpha + 30 alpha^2 (1 - alpha))
-// (observables/sonine_cooling_state.hpp at d = 3). tests/observables/driven_theory_test.cpp checks all three.
-// At alpha = 0.9, d = 3: a2 = -0.0118 (the cooling state's
-// a2 is -0.0146: the noise keeps the distribution closer to the Maxwellian). a2 = 0 at alpha = 1/sqrt(2).
+// (observables/sonine_cooling_state.hpp at d = 3); tests/observables/white_noise_sonine_test.cpp checks
+// all three. At alpha = 0.9, d = 3: a2 = -0.0118 (the cooling state's a2 is -0.0146: the noise keeps
+// the distribution closer to the Maxwellian). a2 = 0 at alpha = 1/sqrt(2).
 //
 // The cooling rate of this f is the Maxwellian one times (1 + 3 a2/16) (in any d; R_c2 above):
 //   zeta(T) = G A sqrt(T) (1 + 3 a2/16),   A = (1 - alpha^2)/4,  G = (16/3) n sigma^2 sqrt(pi/m),
