@@ -3,17 +3,55 @@
 
 #include "roughgas/observables/driven_theory.hpp"
 
-#include <Eigen/Dense>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace roughgas {
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 constexpr double inf = std::numeric_limits<double>::infinity();
+
+using Vector = std::vector<double>;
+
+bool finite(const Vector& x) {
+    return std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); });
+}
+
+// The solution of J x = b (J n x n, row-major) by Gaussian elimination with partial pivoting;
+// nullopt for a singular or non-finite J.
+std::optional<Vector> solve(Vector J, Vector b) {
+    const std::size_t n = b.size();
+    for (std::size_t c = 0; c < n; ++c) {
+        std::size_t p = c;
+        for (std::size_t r = c + 1; r < n; ++r)
+            if (std::abs(J[r * n + c]) > std::abs(J[p * n + c]))
+                p = r;
+        if (!(std::abs(J[p * n + c]) > 0))
+            return std::nullopt;
+        for (std::size_t k = 0; k < n; ++k)
+            std::swap(J[c * n + k], J[p * n + k]);
+        std::swap(b[c], b[p]);
+        for (std::size_t r = c + 1; r < n; ++r) {
+            const double f = J[r * n + c] / J[c * n + c];
+            for (std::size_t k = c; k < n; ++k)
+                J[r * n + k] -= f * J[c * n + k];
+            b[r] -= f * b[c];
+        }
+    }
+    Vector x(n);
+    for (std::size_t c = n; c-- > 0;) {
+        double sum = b[c];
+        for (std::size_t k = c + 1; k < n; ++k)
+            sum -= J[c * n + k] * x[k];
+        x[c] = sum / J[c * n + c];
+    }
+    if (!finite(x))
+        return std::nullopt;
+    return x;
+}
 
 // What the steady state of species s's spins is when no collision couples them to the translation
 // (beta = -1 with every partner present): unknown == false means an ordinary unknown.
@@ -53,31 +91,31 @@ class Residual {
                 rot_.push_back(s);
     }
     std::size_t size() const { return S_ + rot_.size(); }
-    HcsTemperatures temperatures(const Eigen::VectorXd& u) const {
+    HcsTemperatures temperatures(const Vector& u) const {
         HcsTemperatures T{std::vector<double>(S_), std::vector<double>(S_, 0.0)};
         for (std::size_t s = 0; s < S_; ++s)
-            T.T_tr[s] = std::exp(u[static_cast<Eigen::Index>(s)]);
+            T.T_tr[s] = std::exp(u[s]);
         for (std::size_t k = 0; k < rot_.size(); ++k)
-            T.T_rot[rot_[k]] = std::exp(u[static_cast<Eigen::Index>(S_ + k)]);
+            T.T_rot[rot_[k]] = std::exp(u[S_ + k]);
         return T;
     }
-    Eigen::VectorXd unknowns(const HcsTemperatures& T) const {
-        Eigen::VectorXd u(static_cast<Eigen::Index>(size()));
+    Vector unknowns(const HcsTemperatures& T) const {
+        Vector u(size());
         for (std::size_t s = 0; s < S_; ++s)
-            u[static_cast<Eigen::Index>(s)] = std::log(T.T_tr[s]);
+            u[s] = std::log(T.T_tr[s]);
         for (std::size_t k = 0; k < rot_.size(); ++k)
-            u[static_cast<Eigen::Index>(S_ + k)] = std::log(T.T_rot[rot_[k]]);
+            u[S_ + k] = std::log(T.T_rot[rot_[k]]);
         return u;
     }
-    Eigen::VectorXd operator()(const Eigen::VectorXd& u) const {
+    Vector operator()(const Vector& u) const {
         const HcsTemperatures T = temperatures(u);
         std::vector<double> dT_tr(S_), dT_rot(S_);
         driven_rates(theory_, th_, 0.0, T.T_tr, T.T_rot, dT_tr, dT_rot);
-        Eigen::VectorXd r(static_cast<Eigen::Index>(size()));
+        Vector r(size());
         for (std::size_t s = 0; s < S_; ++s)
-            r[static_cast<Eigen::Index>(s)] = dT_tr[s] / T.T_tr[s];
+            r[s] = dT_tr[s] / T.T_tr[s];
         for (std::size_t k = 0; k < rot_.size(); ++k)
-            r[static_cast<Eigen::Index>(S_ + k)] = dT_rot[rot_[k]] / T.T_rot[rot_[k]];
+            r[S_ + k] = dT_rot[rot_[k]] / T.T_rot[rot_[k]];
         return r;
     }
 
@@ -91,27 +129,33 @@ class Residual {
 
 // Newton's method in u = ln T from u: the root, or nullopt if it does not converge to 1e-13 in u
 // within 40 iterations (steps limited to a factor e in each temperature).
-std::optional<Eigen::VectorXd> newton(const Residual& F, Eigen::VectorXd u) {
-    const Eigen::Index n = u.size();
+std::optional<Vector> newton(const Residual& F, Vector u) {
+    const std::size_t n = u.size();
     for (int it = 0; it < 40; ++it) {
-        const Eigen::VectorXd r = F(u);
-        if (!r.allFinite())
+        Vector r = F(u);
+        if (!finite(r))
             return std::nullopt;
-        Eigen::MatrixXd J(n, n);
-        for (Eigen::Index k = 0; k < n; ++k) { // central differences: O(h^2) = 1e-12 relative
+        Vector J(n * n);
+        for (std::size_t k = 0; k < n; ++k) { // central differences: O(h^2) = 1e-12 relative
             const double h = 1e-6;
-            Eigen::VectorXd up = u, dn = u;
+            Vector up = u, dn = u;
             up[k] += h;
             dn[k] -= h;
-            J.col(k) = (F(up) - F(dn)) / (2 * h);
+            const Vector fp = F(up), fm = F(dn);
+            for (std::size_t i = 0; i < n; ++i)
+                J[i * n + k] = (fp[i] - fm[i]) / (2 * h);
         }
-        Eigen::VectorXd du = J.fullPivLu().solve(-r);
-        if (!du.allFinite())
+        for (double& x : r)
+            x = -x;
+        std::optional<Vector> du = solve(std::move(J), std::move(r));
+        if (!du)
             return std::nullopt;
-        const double big = du.cwiseAbs().maxCoeff();
-        if (big > 1)
-            du /= big;
-        u += du;
+        double big = 0;
+        for (double x : *du)
+            big = std::max(big, std::abs(x));
+        const double scale = big > 1 ? 1 / big : 1.0;
+        for (std::size_t i = 0; i < n; ++i)
+            u[i] += scale * (*du)[i];
         if (big < 1e-13)
             return u;
     }
@@ -186,7 +230,7 @@ std::optional<DrivenSteadyState> driven_steady_state(const HcsTheory& theory, co
     // Relax in time, then try Newton's method; again after more relaxation if it fails.
     HcsTemperatures T = guess(theory, th);
     HcsTrajectory trajectory(theory, T, th);
-    std::optional<Eigen::VectorXd> root;
+    std::optional<Vector> root;
     double t = 0;
     for (int round = 0; round < 200 && !root; ++round) {
         HcsTemperatures probe = T;

@@ -166,6 +166,21 @@ TEST(DrivenSteadyState, MixtureUnderWhiteNoise) {
         EXPECT_NEAR(dR[k] / (mix.species()[k].mass * 0.5), 0.0, 1e-12);
     }
     EXPECT_NEAR(0.3 * u->T_tr_ratio[0] + 0.7 * u->T_tr_ratio[1], 1.0, 1e-14);
+    // The same state as the end of a trajectory from elsewhere, for white noise and for a bath with
+    // different frictions per species (some 10^3 collision times: relaxed to round-off).
+    ThermostatSpec bath = langevin_thermostat(2, constant_drive(1.2), 0.3, 0.1);
+    bath.species[1].friction = 0.05;
+    bath.species[1].rotational_friction = 0.0;
+    for (const ThermostatSpec& th : {wn, bath}) {
+        const std::optional<DrivenSteadyState> ss = driven_steady_state(mix, th);
+        ASSERT_TRUE(ss);
+        HcsTrajectory tr(mix, {{3.0, 0.2}, {0.1, 4.0}}, th);
+        const HcsTemperatures T = tr.at(1e3 / collision_frequency(mix, ss->T));
+        for (std::size_t k = 0; k < 2; ++k) {
+            EXPECT_NEAR(T.T_tr[k] / ss->T.T_tr[k], 1.0, 1e-8) << k;
+            EXPECT_NEAR(T.T_rot[k] / ss->T.T_rot[k], 1.0, 1e-8) << k;
+        }
+    }
 }
 
 TEST(DrivenSteadyState, MaxwellKernelSteadyStateSolvesItsLinearSystem) {

@@ -26,9 +26,11 @@
 // and T_rot(T_b) <= T_b (B <= C: eta <= q/(1 + q)). Elastic grains (alpha = 1, beta = +-1): T_tr = T_rot
 // = T_b (with gamma_rot = 0 and beta = -1 T_rot is that of the start: NaN here).
 //
-// Any gas (mixtures, the Maxwell kernel, per-species drives): the equations are relaxed in time from
-// a guess (HcsTrajectory with the drives held at their last values) until they change by less than
-// 1e-4 relative per relaxation time, then solved by Newton's method in ln T to 1e-13. Mixtures do not
+// Any gas (mixtures, the Maxwell kernel, per-species drives): Newton's method in ln T (to 1e-13) from
+// a guess (per species the equal-sphere closed form with its own pair's alpha, beta, or the bath's
+// temperature); where it does not converge, the equations are relaxed in time (HcsTrajectory with the
+// drives held at their last values) by some 20 collision or friction times and Newton's method is
+// tried again, up to 200 times. Mixtures do not
 // share their temperatures (non-equipartition: Barrat & Trizac 2002 for smooth grains under white
 // noise), which T_tr_ratio reports.
 #include "roughgas/dsmc/run_spec.hpp"
