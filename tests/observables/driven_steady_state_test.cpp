@@ -82,6 +82,25 @@ TEST(DrivenSteadyState, InelasticLangevinBathCoolsBelowIt) {
             EXPECT_NEAR(s->T.T_tr[0] / c.T_tr, 1.0, 1e-11) << alpha << " " << beta;
             EXPECT_NEAR(s->T.T_rot[0] / c.T_rot, 1.0, 1e-11) << alpha << " " << beta;
         }
+    // Only the spins in the bath (gamma = 0): the collisions heat the translation from them.
+    const EqualSphereSteadyState spins = langevin_steady_state(0.9, 0.2, 0.4, 1.0, 1.0, 1.0, 1.5, 0.0, 0.4);
+    EXPECT_GT(spins.T_tr, 0.1);
+    EXPECT_LT(spins.T_tr, spins.T_rot);
+    const std::optional<DrivenSteadyState> s =
+        driven_steady_state(one_species(0.9, 0.2), langevin_thermostat(1, constant_drive(1.5), 0.0, 0.4));
+    ASSERT_TRUE(s);
+    EXPECT_NEAR(s->T.T_tr[0] / spins.T_tr, 1.0, 1e-11);
+    EXPECT_NEAR(s->T.T_rot[0] / spins.T_rot, 1.0, 1e-11);
+    // Smooth grains whose spins feel no bath: T_rot is whatever it was (NaN), T_tr that of smooth spheres.
+    const EqualSphereSteadyState smooth = langevin_steady_state(0.8, -1.0, 0.4, 1.0, 1.0, 1.0, 1.5, 0.3, 0.0);
+    EXPECT_TRUE(std::isnan(smooth.T_rot));
+    const std::optional<DrivenSteadyState> ss =
+        driven_steady_state(one_species(0.8, -1.0), langevin_thermostat(1, constant_drive(1.5), 0.3, 0.0));
+    ASSERT_TRUE(ss);
+    EXPECT_NEAR(ss->T.T_tr[0] / smooth.T_tr, 1.0, 1e-11);
+    EXPECT_TRUE(std::isnan(ss->T.T_rot[0]));
+    const EqualSphereCoefficients c = equal_sphere_coefficients(0.8, -1.0, 0.4, 1.0, 1.0, 1.0);
+    EXPECT_NEAR(-c.G * c.A * std::pow(smooth.T_tr, 1.5) + 0.6 * (1.5 - smooth.T_tr), 0.0, 1e-13);
 }
 
 TEST(DrivenSteadyState, WhiteNoiseThetaDoesNotDependOnAlpha) {
