@@ -82,6 +82,11 @@ TEST(DrivenSteadyState, InelasticLangevinBathCoolsBelowIt) {
             EXPECT_NEAR(s->T.T_tr[0] / c.T_tr, 1.0, 1e-11) << alpha << " " << beta;
             EXPECT_NEAR(s->T.T_rot[0] / c.T_rot, 1.0, 1e-11) << alpha << " " << beta;
         }
+    // scripts/driven_theory_reference.py (scipy's DOP853 to t = 400, no closed form): alpha = 0.9,
+    // beta = 0.4, T_b = 1.5, gamma = 0.4, gamma_rot = 0.1.
+    const EqualSphereSteadyState ref = langevin_steady_state(0.9, 0.4, 0.4, 1.0, 1.0, 1.0, 1.5, 0.4, 0.1);
+    EXPECT_NEAR(ref.T_tr, 0.627948742105, 1e-11);
+    EXPECT_NEAR(ref.T_rot, 0.371679411193, 1e-11);
     // Only the spins in the bath (gamma = 0): the collisions heat the translation from them.
     const EqualSphereSteadyState spins = langevin_steady_state(0.9, 0.2, 0.4, 1.0, 1.0, 1.0, 1.5, 0.0, 0.4);
     EXPECT_GT(spins.T_tr, 0.1);

@@ -38,8 +38,8 @@ TEST(Mpemba, HotterSampleWithLowThetaOvertakesTheColderOne) {
                 1e-14);
     const std::optional<double> t = mpemba_crossing_time(mc.theory, mc.thermostat, mc.A, mc.B, 3.0);
     ASSERT_TRUE(t);
-    // scipy's DOP853 (rtol 1e-13) and brentq on the same equations: t_c = 0.282396774451, 2.0021
-    // collision times at the steady state's 4 sqrt(pi) collisions per unit time.
+    // scripts/driven_theory_reference.py (scipy's DOP853, rtol 1e-13, and brentq on the same equations):
+    // t_c = 0.282396774451, 2.0021 collision times at the steady state's 4 sqrt(pi) collisions per unit time.
     EXPECT_NEAR(*t, 0.282396774451, 1e-8);
     const std::optional<double> again = mpemba_crossing_time(mc.theory, mc.thermostat, mc.A, mc.B, 3.0);
     ASSERT_TRUE(again);
