@@ -409,7 +409,8 @@ const std::map<std::string, std::string>& meanings() {
         {"theta_theory", "T_rot_theory/T_tr_theory"},
         {"zeta_star", "reduced cooling rate -ln(T_tr/T_tr,p)/(coll_per_particle - coll_per_particle,p), p "
                       "the previous row: the translational temperature's decay per collision per particle (cooling "
-                      "runs; NaN at t = 0 and where either T_tr is 0; constant in the scaled homogeneous cooling state)"},
+                      "runs; NaN at t = 0 and where either T_tr is 0; constant in the scaled homogeneous cooling state; "
+                      "with a thermostat the net decay, the thermostat's heating included: 0 in the steady state)"},
         {"zeta_star_theory", "-(dT_tr/dt)/(T_tr nu_c) of the Maxwellian approximation at t, nu_c its collisions "
                              "per particle and unit time (constant alpha, beta; (1 - alpha^2)/3 for smooth "
                              "spheres); with a thermostat the collisions' part of dT_tr/dt alone, without the "
