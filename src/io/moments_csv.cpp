@@ -102,9 +102,21 @@ MomentsTable::MomentsTable(const RunSpec& spec)
         prev_T_tr_.assign(static_cast<std::size_t>(replicas_), std::numeric_limits<double>::quiet_NaN());
         prev_cpp_ = prev_T_tr_;
     }
-    // The theory columns describe free cooling: not written for shear runs.
-    if (std::optional<HcsTheory> th = spec.shear ? std::nullopt : hcs_theory(spec)) {
-        trajectory_.emplace(std::move(*th), initial_temperatures(spec));
+    // The theory columns describe the homogeneous gas, freely cooling or driven by a thermostat
+    // (observables/driven_theory.hpp): not written for shear runs, nor for a driven gas that starts
+    // without energy (its scaled variables need some).
+    std::optional<HcsTheory> th = spec.shear ? std::nullopt : hcs_theory(spec);
+    const HcsTemperatures T0 = initial_temperatures(spec);
+    if (th && spec.thermostat) {
+        double E0 = 0;
+        for (std::size_t s = 0; s < T0.T_tr.size(); ++s)
+            E0 += T0.T_tr[s] + T0.T_rot[s];
+        if (E0 > 0)
+            trajectory_.emplace(std::move(*th), T0, *spec.thermostat);
+    } else if (th) {
+        trajectory_.emplace(std::move(*th), T0);
+    }
+    if (trajectory_) {
         columns_.push_back({"T_tr_theory", "energy"});
         columns_.push_back({"T_rot_theory", "energy"});
         columns_.push_back({"theta_theory", "-"});
@@ -127,8 +139,8 @@ MomentsTable::MomentsTable(const RunSpec& spec)
         // The scaled cooling state in the first Sonine approximation, the same in every row, where
         // it applies (observables/sonine_cooling_state.hpp): one species, whose restitution is
         // constant, with the hard-sphere kernel. NaN where it has no value: theta, a02 and a11 of
-        // smooth grains, everything where the approximation has no cooling state.
-        if (spec.species.size() == 1 && !trajectory_->theory().maxwell()) {
+        // smooth grains, everything where the approximation has no cooling state. Cooling runs only.
+        if (spec.species.size() == 1 && !trajectory_->theory().maxwell() && !spec.thermostat) {
             const ConstantRestitution& r = trajectory_->theory().pairs()[0];
             const std::optional<SonineCoolingState> s = sonine_cooling_state(r.alpha, r.beta, spec.species[0].inertia);
             const auto value = [&](double SonineCoolingState::*field) {
@@ -390,20 +402,25 @@ const std::map<std::string, std::string>& meanings() {
                    "density, (2/N) sum of (m v^2/2) sin(k.x) over the mean of m v^2/2"},
         {"T_tr_theory",
          "T_tr of the Maxwellian approximation at t (constant alpha, beta; Haff's law when smooth); with "
-         "run.kernel = maxwell the exact solution of its linear ODEs"},
-        {"T_rot_theory", "T_rot of the Maxwellian approximation at t (constant alpha, beta)"},
+         "run.kernel = maxwell the exact solution of its linear ODEs; with a thermostat the same equations "
+         "with its sources added (the driven gas, docs/model.md), integrated through the drive's schedule"},
+        {"T_rot_theory", "T_rot of the Maxwellian approximation at t (constant alpha, beta; driven with a "
+                         "thermostat, as T_tr_theory)"},
         {"theta_theory", "T_rot_theory/T_tr_theory"},
         {"zeta_star", "reduced cooling rate -ln(T_tr/T_tr,p)/(coll_per_particle - coll_per_particle,p), p "
                       "the previous row: the translational temperature's decay per collision per particle (cooling "
-                      "runs; NaN at t = 0 and where either T_tr is 0; constant in the scaled homogeneous cooling state)"},
+                      "runs; NaN at t = 0 and where either T_tr is 0; constant in the scaled homogeneous cooling state; "
+                      "with a thermostat the net decay, the thermostat's heating included: 0 in the steady state)"},
         {"zeta_star_theory", "-(dT_tr/dt)/(T_tr nu_c) of the Maxwellian approximation at t, nu_c its collisions "
                              "per particle and unit time (constant alpha, beta; (1 - alpha^2)/3 for smooth "
-                             "spheres)"},
+                             "spheres); with a thermostat the collisions' part of dT_tr/dt alone, without the "
+                             "thermostat's sources: the collisional cooling per collision, > 0 in the steady "
+                             "state"},
         {"theta_sonine",
          "theta of the scaled homogeneous cooling state in the first Sonine approximation, its cumulants "
          "linearised, theta solved on the branch of the Maxwellian one (Santos, Kremer & dos Santos 2011; "
          "docs/model.md): the same in every row; one species with constant alpha, beta and the hard-sphere "
-         "kernel; NaN for smooth grains (no scaled theta) and where the approximation has no cooling state"},
+         "kernel, cooling runs (no thermostat); NaN for smooth grains (no scaled theta) and where the approximation has no cooling state"},
         {"zeta_star_sonine", "zeta_star of the same state, (2/3) R_c2/(1 - a20/16) with its cumulants (as "
                              "theta_sonine; for smooth grains with van Noije & Ernst's a2)"},
         {"a20_sonine", "a20 of the same state (as theta_sonine; van Noije & Ernst's a2 for smooth grains)"},

@@ -2,6 +2,7 @@
 #include "roughgas/observables/theory.hpp"
 
 #include "roughgas/collision/pair_constants.hpp"
+#include "roughgas/observables/driven_theory.hpp"
 
 #include <boost/numeric/odeint/integrate/integrate_adaptive.hpp>
 #include <boost/numeric/odeint/stepper/controlled_runge_kutta.hpp>
@@ -162,11 +163,12 @@ std::pair<double, double> weighted_frequency(const HcsTheory& theory, const HcsT
     }
     return {nu, x};
 }
+} // namespace
+
 double collision_frequency(const HcsTheory& theory, const HcsTemperatures& T) {
     const auto [nu, x] = weighted_frequency(theory, T);
     return nu / x;
 }
-} // namespace
 
 double reduced_cooling_rate(const HcsTheory& theory, const HcsTemperatures& T) {
     const std::size_t S = theory.species_count();
@@ -277,6 +279,14 @@ HcsTrajectory::HcsTrajectory(HcsTheory theory, HcsTemperatures initial, double r
         }
 }
 
+HcsTrajectory::HcsTrajectory(HcsTheory theory, HcsTemperatures initial, ThermostatSpec thermostat, double rel_tol)
+    : HcsTrajectory(std::move(theory), std::move(initial), rel_tol, /*closed_form=*/false) {
+    check_thermostat(thermostat, theory_.species_count());
+    require(E0_ > 0, "a driven trajectory needs an initial temperature > 0");
+    switches_ = drive_switch_times(thermostat);
+    thermostat_ = std::move(thermostat);
+}
+
 HcsTemperatures HcsTrajectory::current() const {
     const std::size_t S = theory_.species_count();
     HcsTemperatures T{std::vector<double>(S), std::vector<double>(S)};
@@ -293,7 +303,6 @@ HcsTemperatures HcsTrajectory::current() const {
 
 HcsTemperatures HcsTrajectory::at(double t) {
     require(std::isfinite(t) && t >= t_, "times must be finite and non-decreasing from 0");
-    const std::size_t S = theory_.species_count();
     if (haff_) {
         const HcsSpecies& sp = theory_.species()[0];
         t_ = t;
@@ -305,8 +314,23 @@ HcsTemperatures HcsTrajectory::at(double t) {
         t_ = t;
         return current();
     }
+    // Piece by piece between the drive's switch times (none without a thermostat).
+    for (double s : switches_)
+        if (s > t_ && s < t)
+            advance(s);
+    advance(t);
+    return current();
+}
+
+void HcsTrajectory::advance(double t) {
+    if (!(t > t_))
+        return;
+    const std::size_t S = theory_.species_count();
+    // The drive over this piece: constant, its value at the piece's start (DriveSchedule::at is
+    // right-continuous), so the right-hand side never sees the next piece's value at t itself.
+    const double drive_time = t_;
     using State = std::vector<double>;
-    std::vector<double> p_tr(S), p_rot(S), f_tr(S), f_rot(S);
+    std::vector<double> p_tr(S), p_rot(S), f_tr(S), f_rot(S), T_tr(S), T_rot(S), src_tr(S), src_rot(S);
     // In E0 units (the rates are homogeneous of degree 3/2; degree 1 for the Maxwell kernel, below):
     // dT_k/dt = E^{3/2} F_k(p), so
     // d ln E/dt = E^{1/2} sum F(p), dp_k/dt = E^{1/2} (F_k(p) - p_k sum F(p)). Written that way,
@@ -323,15 +347,34 @@ HcsTemperatures HcsTrajectory::at(double t) {
             p_rot[s] = pos(y[1 + S + s]) * inv;
         }
         theory_.rates(p_tr, p_rot, f_tr, f_rot);
+        // The Maxwell kernel's rates are linear in the temperatures (degree 1): no E^{1/2} factor.
+        const double root_E = theory_.maxwell() ? 1.0 : scale * std::exp(0.5 * y[0]);
+        // g = (dT_k/dt)/E: the collisions' E^{1/2} F_k(p), and the thermostat's sources at T = E p over E
+        // (not homogeneous in E; they vanish for a cooling gas).
+        for (std::size_t s = 0; s < S; ++s) {
+            f_tr[s] *= root_E;
+            f_rot[s] *= root_E;
+        }
+        if (thermostat_) {
+            const double E = E0_ * std::exp(y[0]);
+            for (std::size_t s = 0; s < S; ++s) {
+                T_tr[s] = E * p_tr[s];
+                T_rot[s] = E * p_rot[s];
+                src_tr[s] = src_rot[s] = 0;
+            }
+            add_thermostat_sources(*thermostat_, theory_.species(), drive_time, T_tr, T_rot, src_tr, src_rot);
+            for (std::size_t s = 0; s < S; ++s) {
+                f_tr[s] += src_tr[s] / E;
+                f_rot[s] += src_rot[s] / E;
+            }
+        }
         double sum = 0;
         for (std::size_t s = 0; s < S; ++s)
             sum += f_tr[s] + f_rot[s];
-        // The Maxwell kernel's rates are linear in the temperatures (degree 1): no E^{1/2} factor.
-        const double root_E = theory_.maxwell() ? 1.0 : scale * std::exp(0.5 * y[0]);
-        dydt[0] = root_E * sum;
+        dydt[0] = sum;
         for (std::size_t s = 0; s < S; ++s) {
-            dydt[1 + s] = root_E * (f_tr[s] - p_tr[s] * sum);
-            dydt[1 + S + s] = root_E * (f_rot[s] - p_rot[s] * sum);
+            dydt[1 + s] = f_tr[s] - p_tr[s] * sum;
+            dydt[1 + S + s] = f_rot[s] - p_rot[s] * sum;
         }
     };
     namespace odeint = boost::numeric::odeint;
@@ -357,7 +400,6 @@ HcsTemperatures HcsTrajectory::at(double t) {
     });
     dt_ = std::max(dt_, last_dt);
     t_ = t;
-    return current();
 }
 
 // --- from a run ---

@@ -3,6 +3,7 @@
 #include "roughgas/io/moments_csv.hpp"
 
 #include "roughgas/dsmc/run.hpp"
+#include "roughgas/observables/driven_theory.hpp"
 #include "roughgas/observables/sonine_cooling_state.hpp"
 
 #include <gtest/gtest.h>
@@ -100,6 +101,34 @@ TEST(MomentsTable, MeanAndStandardErrorOverReplicas) {
     EXPECT_NEAR(out[5], std::sqrt((0.04 + 0.01 + 0.09) / 6), 1e-15); // T_tr_err
     HcsTrajectory th(HcsTheory({{1, 0.5, 0.4, 1}}, {{0.9, 0.0}}, 1.0), {{1.0}, {1.0}});
     EXPECT_NEAR(out[out.size() - 9], th.at(0.2).T_tr[0], 1e-12); // theory at the mean t
+}
+
+// A driven run (spec.thermostat) writes the driven theory in the same columns: the trajectory with
+// the thermostat's sources through its schedule (observables/driven_theory.hpp), zeta_star_theory the
+// collisions' part alone; no _sonine columns (they describe the cooling state).
+TEST(MomentsTable, DrivenRunsCarryTheDrivenTheory) {
+    RunSpec spec = one_species(1, ConstantRestitution{0.8, 0.2});
+    spec.thermostat = white_noise_thermostat(1, DriveSchedule{{0.0, 1.0}, {2.0, 0.5}}, 0.1);
+    MomentsTable table(spec);
+    EXPECT_TRUE(table.has_theory());
+    EXPECT_FALSE(table.has_sonine());
+    const std::vector<std::string> names = table.names();
+    ASSERT_EQ(names.back(), "zeta_star_theory");
+    const HcsTheory theory({{1, 0.5, 0.4, 1}}, {{0.8, 0.2}}, 1.0);
+    HcsTrajectory driven(theory, {{1.0}, {1.0}}, *spec.thermostat);
+    HcsTrajectory cooling(theory, {{1.0}, {1.0}});
+    for (double t : {0.0, 0.5, 2.0}) {
+        const std::vector<double> r = row(t, t, 1.0, 1.0);
+        const std::vector<std::span<const double>> rows{r};
+        const std::vector<double> out = table.combine(rows);
+        const HcsTemperatures T = driven.at(t);
+        EXPECT_NEAR(out[out.size() - 4] / T.T_tr[0], 1.0, 1e-12) << t; // T_tr_theory
+        EXPECT_NEAR(out[out.size() - 3] / T.T_rot[0], 1.0, 1e-12) << t;
+        EXPECT_NEAR(out.back(), reduced_cooling_rate(theory, T), 1e-12) << t;
+        if (t > 0) { // heated: above the cooling gas
+            EXPECT_GT(T.T_tr[0], 1.5 * cooling.at(t).T_tr[0]) << t;
+        }
+    }
 }
 
 // The first-Sonine scaled state: its five values in every row, after the Maxwellian theory; written

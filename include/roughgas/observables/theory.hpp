@@ -64,6 +64,9 @@
 // system. Checks: alpha = beta = 1 conserves T_tr + T_rot (kappa = q/(1 + q) for equal spheres);
 // beta = -1 gives dT_tr/dt = -nu (1 - alpha^2) T_tr/6 (tests/observables/theory_test.cpp), and the
 // DSMC with the Maxwell kernel follows the system (tests/dsmc/maxwell_test.cpp).
+//
+// A driven gas: these rates plus a thermostat's sources (observables/driven_theory.hpp), integrated by
+// HcsTrajectory's thermostat constructor; its steady states in observables/driven_steady_state.hpp.
 #include "roughgas/dsmc/run_spec.hpp"
 
 #include <cstddef>
@@ -132,22 +135,35 @@ class HcsTheory {
 // decay per collision per particle. Equal smooth spheres: G A sqrt(T)/(4 n sigma^2 sqrt(pi T/m)) =
 // (1 - alpha^2)/3, for any T.
 double reduced_cooling_rate(const HcsTheory& theory, const HcsTemperatures& T);
+// nu_c above: collisions per particle and unit time at T (equal spheres: 4 n sigma^2 sqrt(pi T_tr/m)).
+double collision_frequency(const HcsTheory& theory, const HcsTemperatures& T);
 
 // The solution from `initial` at t = 0, evaluated at non-decreasing times: each call integrates on
 // from the previous one (Dormand-Prince 5(4), adaptive, relative tolerance `rel_tol`). The state is
 // integrated as (ln E, T_k/E) with E the sum of all temperatures, so it is scale-free: a gas that
 // cools through 40 decades is integrated as accurately as one that cools through one.
 // With `closed_form` (default) a one-species smooth gas (beta = -1) uses Haff's law instead.
+// Driven (the constructor with a thermostat, observables/driven_theory.hpp): the same variables with
+// the thermostat's sources S_k added, d ln E/dt = sum_k dT_k/dt / E and d(T_k/E)/dt =
+// (dT_k/dt - (T_k/E) sum dT/dt)/E; E then tends to the steady state's instead of 0, which the error
+// control (relative in E and in each T_k/E) follows as well. The drive is piecewise constant: each
+// call integrates piece by piece between the drive's switch times, so no step straddles a jump of
+// the right-hand side.
 class HcsTrajectory {
   public:
     HcsTrajectory(HcsTheory theory, HcsTemperatures initial, double rel_tol = 1e-10, bool closed_form = true);
+    // Throws std::invalid_argument for a thermostat check_thermostat refuses, and for initial
+    // temperatures that are all 0 (the scaled variables need E > 0).
+    HcsTrajectory(HcsTheory theory, HcsTemperatures initial, ThermostatSpec thermostat, double rel_tol = 1e-10);
     // Throws std::invalid_argument if t is earlier than the previous call's t (or < 0).
     HcsTemperatures at(double t);
     const HcsTheory& theory() const { return theory_; }
+    const std::optional<ThermostatSpec>& thermostat() const { return thermostat_; }
     std::size_t steps() const { return steps_; } // integration steps so far
 
   private:
     HcsTemperatures current() const;
+    void advance(double t); // integrates to t within one piece of the drive
     HcsTheory theory_;
     HcsTemperatures initial_;
     double rel_tol_;
@@ -156,6 +172,8 @@ class HcsTrajectory {
     double E0_ = 0;
     std::vector<double> y_; // ln(E/E0), then T_tr,s/E, T_rot,s/E
     std::size_t steps_ = 0;
+    std::optional<ThermostatSpec> thermostat_;
+    std::vector<double> switches_; // the drive's switch times (drive_switch_times)
 };
 
 // How many collisions per particle the gas of `theory`, started at `initial`, cools until the smallest
