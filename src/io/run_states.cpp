@@ -120,7 +120,7 @@ std::string attach_initial_state(RunSpec& spec, const CaseConfig& cfg, const std
                                      "gives them (a box of the same size)",
                                      dir));
     const std::string d = dir;
-    spec.domain->initial_state = [d, files, want](int replica) {
+    spec.initial_state = [d, files, want](int replica) {
         const fs::path path = state_file_path(d, static_cast<std::uint64_t>(replica) % files);
         StateFile f;
         try {

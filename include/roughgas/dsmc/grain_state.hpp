@@ -17,7 +17,7 @@ struct GrainState {
                                           // shear run, homogeneous or a box, about the flow)
 };
 
-// Per replica, the state a box run starts from (DomainSpec::initial_state).
+// Per replica, the state a box run starts from (RunSpec::initial_state).
 using GrainStateSource = std::function<GrainState(int replica)>;
 // Receives each finished replica's last state (RunSpec::final_state), on the replica's thread.
 using GrainStateSink = std::function<void(int replica, const GrainState&)>;
