@@ -229,10 +229,13 @@ struct RunSpec {
     std::optional<ThermostatSpec> thermostat;
     // Positions, streaming and collision cells instead of the homogeneous gas ([domain]).
     std::optional<DomainSpec> domain;
-    // Set (a box, with `domain`): each replica starts from this state (initial.from) instead of the
-    // Maxwellian at the species' temperatures: the velocities and spins, the positions too when the
-    // state is of a box of the same size (else uniform), then DomainSpec::initial's wave
-    // (dsmc/spatial_engine.hpp).
+    // Set: each replica starts from this state (initial.from) instead of the Maxwellian at the
+    // species' temperatures; time and collisions count from 0, the row at t = 0 is the state.
+    //   homogeneous  the velocities and spins (a box's positions are not used), the total momentum
+    //                removed (dsmc/init.hpp init_from_state);
+    //   box          the velocities and spins, the positions too when the state is of a box of the
+    //                same size (else uniform), then DomainSpec::initial's wave (dsmc/spatial_engine.hpp).
+    // A resumed homogeneous replica does not call it (its checkpoint holds the grains); a box does.
     GrainStateSource initial_state;
     // Set: called with each replica's state when it finishes (not when it stops early).
     GrainStateSink final_state;
