@@ -2,8 +2,9 @@
 // a run that saved its grains (run.save_state) starts a second run whose row at t = 0 is the saved
 // gas's last row (the same grains, the mean velocity removed: equal to round-off); replica r takes
 // the file of replica r modulo the files; a box's state starts a homogeneous run with its velocities
-// and spins; what does not fit is refused before any work (exit 2, naming initial.from); and a
-// cooling gas continued from its own state cools on as the run that never stopped. Box runs from
+// and spins; what does not fit is refused before any work (exit 2, naming initial.from), and so is
+// a cooling run past the state's own reach of the floating-point floor; and a cooling gas continued
+// from its own state cools on as the run that never stopped. Box runs from
 // saved states: tests/io/box_cli_test.cpp.
 #include "io_test_support.hpp"
 
@@ -130,6 +131,24 @@ TEST(InitialState, WhatDoesNotFitIsRefused) {
     }
 }
 
+// A cooling gas started from a state cools from the state's temperatures: its end is checked against
+// the state's own reach of T_tr/m = 1e-300 (replica 0's), before any work, by `run` and `check`.
+TEST(InitialState, ACoolingRunFromAStateIsRefusedPastTheStatesReach) {
+    const test::ScratchDir dir;
+    const std::string c = replaced(cooling_case(2000, 1, 0.3), "alpha = 0.8", "alpha = 0.5");
+    const fs::path prepare = dir.write("prepare.toml", saving(c));
+    ASSERT_EQ(test::run_roughgas("run " + q(prepare) + " --quiet --out " + q(dir / "saved"), dir).status, 0);
+    const fs::path f = dir.write("from.toml", from(c, dir / "saved"));
+    const std::string far = " --set run.end_time=1e200 --set run.output_spacing=log";
+    for (const std::string& cmd : {"check " + q(f) + far, "run " + q(f) + far + " --out " + q(dir / "out")}) {
+        const test::CommandResult r = test::run_roughgas(cmd, dir);
+        EXPECT_EQ(r.status, 2) << cmd << "\n" << r.err;
+        EXPECT_NE(r.err.find("the state of initial.from"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("reaches T_tr/m = 1e-300"), std::string::npos) << r.err;
+    }
+    EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
 // A cooling gas saved at t = 0.5 and continued to t = 1 cools on as one run to t = 1: T_tr and
 // theta at the end agree within the replicas' errors (4 replicas of 5000 grains each way).
 TEST(InitialState, ACoolingGasContinuedFromItsStateCoolsOnAsOneRun) {
@@ -139,8 +158,8 @@ TEST(InitialState, ACoolingGasContinuedFromItsStateCoolsOnAsOneRun) {
     ASSERT_EQ(test::run_roughgas("run " + q(prepare) + " --quiet --out " + q(dir / "first"), dir).status, 0);
     const fs::path start = dir.write("start.toml", from(half, dir / "first"));
     ASSERT_EQ(test::run_roughgas("run " + q(start) + " --quiet --out " + q(dir / "second"), dir).status, 0);
-    const fs::path whole = dir.write("whole.toml", replaced(replaced(half, "end_time = 0.500000", "end_time = 1.000000"),
-                                                            "seed = 7", "seed = 11"));
+    const fs::path whole = dir.write(
+        "whole.toml", replaced(replaced(half, "end_time = 0.500000", "end_time = 1.000000"), "seed = 7", "seed = 11"));
     ASSERT_EQ(test::run_roughgas("run " + q(whole) + " --quiet --out " + q(dir / "whole"), dir).status, 0);
     const auto s = test::read_csv(dir / "second" / "moments.csv"), w = test::read_csv(dir / "whole" / "moments.csv");
     EXPECT_NEAR(w.at("t").back(), 1.0, 1e-12);
