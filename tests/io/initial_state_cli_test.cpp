@@ -150,10 +150,11 @@ TEST(InitialState, ACoolingRunFromAStateIsRefusedPastTheStatesReach) {
 }
 
 // A cooling gas saved at t = 0.5 and continued to t = 1 cools on as one run to t = 1: T_tr and
-// theta at the end agree within the replicas' errors (4 replicas of 5000 grains each way).
+// theta at the end agree within 4.5 combined errors of 16 replicas of 1250 grains each way
+// (Student's t of 15 degrees of freedom: a false alarm about one time in 2500 per column).
 TEST(InitialState, ACoolingGasContinuedFromItsStateCoolsOnAsOneRun) {
     const test::ScratchDir dir;
-    const std::string half = cooling_case(5000, 4, 0.5);
+    const std::string half = cooling_case(1250, 16, 0.5);
     const fs::path prepare = dir.write("prepare.toml", saving(half));
     ASSERT_EQ(test::run_roughgas("run " + q(prepare) + " --quiet --out " + q(dir / "first"), dir).status, 0);
     const fs::path start = dir.write("start.toml", from(half, dir / "first"));
@@ -166,7 +167,7 @@ TEST(InitialState, ACoolingGasContinuedFromItsStateCoolsOnAsOneRun) {
     EXPECT_NEAR(s.at("t").back(), 0.5, 1e-12);
     for (const char* col : {"T_tr", "theta"}) {
         const double err = std::hypot(s.at(std::string(col) + "_err").back(), w.at(std::string(col) + "_err").back());
-        EXPECT_NEAR(s.at(col).back(), w.at(col).back(), 4 * err) << col;
+        EXPECT_NEAR(s.at(col).back(), w.at(col).back(), 4.5 * err) << col;
     }
 }
 
