@@ -124,7 +124,12 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
     const std::size_t N = static_cast<std::size_t>(spec.particles);
     const auto rep = static_cast<std::uint64_t>(replica);
     Store store(N);
-    init_maxwellian(store, blocks, spec.seed, rep);
+    // A saved state (RunSpec::initial_state) starts a new run; a resumed one takes its grains from
+    // the checkpoint below, so it does not read the state again.
+    if (spec.initial_state && !(ckpt && !ckpt->resume.empty()))
+        init_from_state(store, blocks, spec.initial_state(replica));
+    else
+        init_maxwellian(store, blocks, spec.seed, rep);
     Engine<Store, Policy, Mixture, Kernel> engine(
         blocks, std::move(policies), std::move(store),
         EngineOptions{spec.density, spec.step, spec.seed, rep, spec.speed_classes, effective_groups(spec),

@@ -62,7 +62,7 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
     const DomainSpec& domain = *spec.domain;
     SpatialEngine<Policy, General> engine(domain, blocks, std::move(policies), spec.density, spec.seed,
                                           static_cast<std::uint64_t>(replica), std::max(1, spec.threads),
-                                          spec.kernel);
+                                          spec.kernel, spec.initial_state);
     const double N = static_cast<double>(engine.particles());
     const std::size_t S = blocks.size();
     const std::vector<SpeciesSlice> slices = species_slices(blocks);

@@ -118,8 +118,10 @@ std::size_t box_bytes_per_particle(const DomainSpec& d) {
 }
 
 std::size_t memory_per_particle_bound(const RunSpec& spec) {
-    // A state saved or read (dsmc/grain_state.hpp): its copy and the file's bytes, at the end or start.
-    const std::size_t state = spec.final_state || (spec.domain && spec.domain->initial_state) ? 6 * sizeof(Vec3) : 0;
+    // A state saved or read, by a box or the homogeneous gas (dsmc/grain_state.hpp): its copy and the
+    // file's bytes, at the end or start, each at most positions, velocities and spins (a homogeneous
+    // run may start from a box's state, whose positions it reads and drops).
+    const std::size_t state = spec.final_state || spec.initial_state ? 6 * sizeof(Vec3) : 0;
     if (spec.domain) // the store, and at most one count of the sort per grain
         return box_bytes_per_particle(*spec.domain) + sizeof(std::uint32_t) + state;
     // The largest store (a 64-byte rough grain), its index and class key, a shear row's spins.

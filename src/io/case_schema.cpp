@@ -475,9 +475,11 @@ std::vector<Key> keys() {
             .doc("start from the last state of an earlier run with run.save_state = true: the output "
                  "directory DIR (relative to the working directory); replica r takes DIR/state/replica_r.bin "
                  "(r modulo the files there). The species (names, masses, radii) and their grain counts must "
-                 "be the same; velocities and spins are taken as they were, positions too from a box of the "
-                 "same size (else uniform); a wave of initial.mode is added on top, in units of the state's "
-                 "thermal speed"),
+                 "be the same; velocities and spins are taken as they were; time and collisions count from 0, "
+                 "the row at t = 0 being the state. A homogeneous run (no [domain]) takes the velocities and "
+                 "spins (of a box's state too), less their mean velocity; a box takes the positions too from a "
+                 "box of the same size (else uniform), and a wave of initial.mode is added on top, in units of "
+                 "the state's thermal speed. Not with run.kernel = \"maxwell\""),
         // [spectra]
         Key("spectra.modes", T::integer)
             .fallback(std::int64_t{3})
@@ -732,7 +734,8 @@ const std::vector<TableSpec>& case_tables() {
          "one species' thermostat (keys default to [thermostat])"},
         {"domain", false, "optional",
          "a spatially resolved run: grains with positions in a box of collision cells (docs/model.md §8)"},
-        {"initial", false, "optional (with [domain])", "a wave on the uniform start of a spatially resolved run"},
+        {"initial", false, "optional",
+         "how the run starts: from a saved state (initial.from), and a wave on a spatially resolved run's start"},
         {"spectra", false, "optional (with a periodic [domain])",
          "Fourier spectra of the box's fields at every output row: spectra.csv and modes.csv (docs/model.md §8)"},
         {"fields", false, "optional (with [domain])",

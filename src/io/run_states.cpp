@@ -83,7 +83,7 @@ void check_cooling_reach_from(const StateFile& state, const RunSpec& spec, const
 } // namespace
 
 std::string attach_initial_state(RunSpec& spec, const CaseConfig& cfg, const std::string& case_file) {
-    if (!cfg.initial || cfg.initial->from.empty() || !spec.domain)
+    if (!cfg.initial || cfg.initial->from.empty())
         return "";
     const std::string& dir = cfg.initial->from;
     const auto refuse = [&](const std::string& why) {
@@ -113,14 +113,15 @@ std::string attach_initial_state(RunSpec& spec, const CaseConfig& cfg, const std
                                  state_file_path(dir, 0).string(), have, asked));
     }
     check_cooling_reach_from(first, spec, cfg, case_file, dir);
-    const bool placed = !first.grains.x.empty() && first.grains.box == spec.domain->size;
+    const bool positions = !first.grains.x.empty();
+    const bool placed = positions && spec.domain && first.grains.box == spec.domain->size;
     if (placed && spec.domain->initial.mode == Perturbation::density)
         throw InputError(case_file, "initial.mode",
                          fmt::format("initial.mode = \"density\" needs fresh positions, but initial.from = \"{}\" "
                                      "gives them (a box of the same size)",
                                      dir));
     const std::string d = dir;
-    spec.domain->initial_state = [d, files, want](int replica) {
+    spec.initial_state = [d, files, want](int replica) {
         const fs::path path = state_file_path(d, static_cast<std::uint64_t>(replica) % files);
         StateFile f;
         try {
@@ -132,11 +133,16 @@ std::string attach_initial_state(RunSpec& spec, const CaseConfig& cfg, const std
             throw std::runtime_error(path.string() + ": other species or grain counts than replica 0's file");
         return std::move(f.grains);
     };
+    // The homogeneous gas takes the velocities and spins only (dsmc/init.hpp init_from_state).
+    const char* const how = spec.domain ? (placed ? "with their positions" : "at uniform random positions")
+                            : positions ? "their velocities and spins only (the homogeneous gas has no positions), "
+                                          "the mean velocity removed; time and collisions count from 0"
+                                        : "their velocities and spins, the mean velocity removed; time and "
+                                          "collisions count from 0";
     return fmt::format("initial state: the grains of {} ({} file{}, replica r takes file r mod {}; replica 0's at "
                        "t = {:.6g}, {:.6g} collisions per particle), {}",
                        state_dir(dir).string(), files, files > 1 ? "s" : "", files, first.grains.t,
-                       first.grains.coll_per_particle,
-                       placed ? "with their positions" : "at uniform random positions");
+                       first.grains.coll_per_particle, how);
 }
 
 void attach_final_state(RunSpec& spec, const CaseConfig& cfg, const fs::path& out) {

@@ -326,9 +326,9 @@ TEST(SpatialEngine, SmoothGrainsKeepTheirSpinsThroughTheSort) {
     const SpatialEngine<SmoothConstant> start(d, one_species(3000), {make_smooth_constant(0.9)}, dilute, 9, 0, 1);
     GrainState g = start.grain_state();
     g.w = g.v;
-    DomainSpec from = d;
-    from.initial_state = [&](int) { return g; };
-    SpatialEngine<SmoothConstant> a(from, one_species(3000), {make_smooth_constant(0.9)}, dilute, 9, 0, 2);
+    const GrainStateSource from = [&](int) { return g; };
+    SpatialEngine<SmoothConstant> a(d, one_species(3000), {make_smooth_constant(0.9)}, dilute, 9, 0, 2,
+                                    CollisionKernel::hard_sphere, from);
     const auto expect_spins_are_velocities = [](SpatialEngine<SmoothConstant>& e) {
         const std::vector<Vec3>& w = e.angular_velocities();
         for (std::size_t i = 0; i < e.particles(); ++i)
@@ -393,7 +393,7 @@ TEST(SpatialEngine, SaveAndRestoreContinueTheSameTrajectoryWithWallsAndAMixture)
             << i;
 }
 
-// A state to start from (DomainSpec::initial_state): its grains' velocities and spins are taken as
+// A state to start from (RunSpec::initial_state): its grains' velocities and spins are taken as
 // they are, with their positions when the state's box has the engine's size (the same (x, v) pairs,
 // in cell order) and at new uniform positions otherwise; a sheared box adds its flow
 // u_x = a (y - L_y/2) (and removes the total momentum) and gives it back in grain_state() (the
@@ -413,12 +413,13 @@ TEST(SpatialEngine, StartsFromAGivenState) {
         return p;
     };
     DomainSpec same = d, other = cube(30.0, 5), sheared = d;
-    for (DomainSpec* s : {&same, &other, &sheared})
-        s->initial_state = [&](int) { return g; };
+    const GrainStateSource from = [&](int) { return g; };
+    const CollisionKernel hs = CollisionKernel::hard_sphere;
     sheared.shear_rate = 0.01;
-    SpatialEngine<RoughConstant> b(same, one_species(3000), {make_rough_constant(0.7, 0.2)}, 0.1, 9, 3, 1);
+    SpatialEngine<RoughConstant> b(same, one_species(3000), {make_rough_constant(0.7, 0.2)}, 0.1, 9, 3, 1, hs, from);
     EXPECT_EQ(pairs(b.positions(), b.velocities()), pairs(g.x, g.v));
-    SpatialEngine<RoughConstant> c(other, one_species(3000), {make_rough_constant(0.7, 0.2)}, 0.1, 9, 3, 1);
+    SpatialEngine<RoughConstant> c(other, one_species(3000), {make_rough_constant(0.7, 0.2)}, 0.1, 9, 3, 1, hs,
+                                   from);
     EXPECT_NE(pairs(c.positions(), c.velocities()), pairs(g.x, g.v));
     std::vector<std::array<double, 3>> vg, vc; // the same velocities and spins, other positions
     for (std::size_t i = 0; i < g.v.size(); ++i) {
@@ -428,7 +429,8 @@ TEST(SpatialEngine, StartsFromAGivenState) {
     std::sort(vg.begin(), vg.end());
     std::sort(vc.begin(), vc.end());
     EXPECT_EQ(vg, vc);
-    SpatialEngine<RoughConstant, true> e(sheared, one_species(3000), {make_rough_constant(0.7, 0.2)}, 0.1, 9, 3, 1);
+    SpatialEngine<RoughConstant, true> e(sheared, one_species(3000), {make_rough_constant(0.7, 0.2)}, 0.1, 9, 3, 1,
+                                         hs, from);
     const GrainState back = e.grain_state();
     for (std::size_t i = 0; i < g.v.size(); ++i) {
         const double flow = 0.01 * (e.positions()[i].y - 12.5);

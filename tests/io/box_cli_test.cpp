@@ -587,8 +587,9 @@ TEST(BoxCli, SmallBoxCoolsAsTheHomogeneousGas) {
 // same grains: equal to round-off), at uniform positions; a box started from a box of the same size
 // takes the positions too (the box's last row again). Refused before any work (exit 2, nothing
 // written): a directory without state files, other species or grain counts, a density wave on
-// positions taken over, a saved state without [domain], an output directory holding a state
-// without --force, and the state's own directory as the output directory even with --force.
+// positions taken over, the Maxwell kernel, an output directory holding a state without --force,
+// and the state's own directory as the output directory even with --force. (A homogeneous run from
+// a saved state: tests/io/initial_state_cli_test.cpp.)
 TEST(BoxCli, StartsFromTheSavedStateOfAnEarlierRun) {
     const test::ScratchDir dir;
     const std::string c = box_case(3000, 1, 10.0);
@@ -622,8 +623,6 @@ TEST(BoxCli, StartsFromTheSavedStateOfAnEarlierRun) {
         {replaced(from_hom, "particles = 3000", "particles = 3001"), "initial.from", "3000 grains"},
         {c + "\n[initial]\nmode = \"density\"\nfrom = " + q(dir / "box") + "\n", "initial.mode",
          "needs fresh positions"},
-        {c.substr(0, c.find("[domain]")) + "[initial]\nfrom = " + q(dir / "hom") + "\n", "initial.from",
-         "without [domain]"},
         {replaced(from_hom, "seed = 4", "seed = 4\nkernel = \"maxwell\""), "initial.from",
          "run.kernel = \"maxwell\""},
     };

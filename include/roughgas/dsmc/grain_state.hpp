@@ -1,6 +1,6 @@
 #pragma once
-// The grains of one replica at the end of a run (run.save_state), for a box run to start from
-// (initial.from, docs/model.md §8): every grain's velocity and spin in the run's species-block order
+// The grains of one replica at the end of a run (run.save_state), for a later run to start from
+// (initial.from, docs/model.md): every grain's velocity and spin in the run's species-block order
 // (dsmc/species.hpp), and its position when the run was a box.
 #include "roughgas/core/vec.hpp"
 
@@ -17,7 +17,7 @@ struct GrainState {
                                           // shear run, homogeneous or a box, about the flow)
 };
 
-// Per replica, the state a box run starts from (DomainSpec::initial_state).
+// Per replica, the state a run starts from (RunSpec::initial_state).
 using GrainStateSource = std::function<GrainState(int replica)>;
 // Receives each finished replica's last state (RunSpec::final_state), on the replica's thread.
 using GrainStateSink = std::function<void(int replica, const GrainState&)>;

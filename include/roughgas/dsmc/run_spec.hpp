@@ -117,9 +117,6 @@ struct DomainSpec {
     InitialSpec initial;
     std::optional<SpectraSpec> spectra; // set: spectra.csv and modes.csv (periodic boxes)
     std::optional<FieldsSpec> fields;   // set: cell fields at output rows
-    // Set: the grains start from this state (velocities and spins; positions when it comes from a
-    // box of the same size, else uniform) instead of the Maxwellian; `initial`'s wave is added.
-    GrainStateSource initial_state;
 
     bool walled(int axis) const { return boundary[static_cast<std::size_t>(axis)] == Boundary::walls; }
     // The wall at 0 (upper: at L) of `axis`.
@@ -232,6 +229,14 @@ struct RunSpec {
     std::optional<ThermostatSpec> thermostat;
     // Positions, streaming and collision cells instead of the homogeneous gas ([domain]).
     std::optional<DomainSpec> domain;
+    // Set: each replica starts from this state (initial.from) instead of the Maxwellian at the
+    // species' temperatures; time and collisions count from 0, the row at t = 0 is the state.
+    //   homogeneous  the velocities and spins (a box's positions are not used), the total momentum
+    //                removed (dsmc/init.hpp init_from_state);
+    //   box          the velocities and spins, the positions too when the state is of a box of the
+    //                same size (else uniform), then DomainSpec::initial's wave (dsmc/spatial_engine.hpp).
+    // A resumed homogeneous replica does not call it (its checkpoint holds the grains); a box does.
+    GrainStateSource initial_state;
     // Set: called with each replica's state when it finishes (not when it stops early).
     GrainStateSink final_state;
 };

@@ -135,9 +135,11 @@ template <class Policy, bool General = false> class SpatialEngine {
     // `kernel`: hard spheres, or the Maxwell kernel of the homogeneous engine (every pair of species
     // (a, b) in a cell collides at the constant rate pi sigma_ab^2 u_ab F / V_c, u_ab from the
     // species' initial temperatures, the impact normal uniform on the approaching hemisphere).
+    // `initial_state` set: the grains start from initial_state(replica) instead (RunSpec::initial_state).
     SpatialEngine(const DomainSpec& domain, std::vector<SpeciesBlock> blocks, std::vector<Policy> policies,
                   double density, std::uint64_t seed, std::uint64_t replica, int threads,
-                  CollisionKernel kernel = CollisionKernel::hard_sphere)
+                  CollisionKernel kernel = CollisionKernel::hard_sphere,
+                  const GrainStateSource& initial_state = {})
         : domain_(domain), blocks_(std::move(blocks)), types_(make_pair_types(blocks_)),
           policies_(std::move(policies)), density_(density), seed_(seed), replica_(replica),
           team_(std::make_unique<WorkerTeam>(std::max(1, threads))), maxwell_(kernel == CollisionKernel::maxwell) {
@@ -188,8 +190,9 @@ template <class Policy, bool General = false> class SpatialEngine {
             k_[a] = 2.0 * std::numbers::pi * wave.wave[a] / domain_.size[a];
         const bool density_wave = wave.mode == Perturbation::density;
         GrainState from;
-        if (domain_.initial_state) {
-            from = domain_.initial_state(static_cast<int>(replica));
+        const bool from_state = static_cast<bool>(initial_state);
+        if (from_state) {
+            from = initial_state(static_cast<int>(replica));
             if (from.v.size() != particles_ || from.w.size() != particles_ ||
                 (!from.x.empty() && from.x.size() != particles_))
                 throw std::invalid_argument("SpatialEngine: the initial state has another number of grains");
@@ -219,13 +222,13 @@ template <class Policy, bool General = false> class SpatialEngine {
         }
         if (nearest_)
             last_.assign(particles_, no_partner);
-        if (domain_.initial_state) {
+        if (from_state) {
             std::copy(from.v.begin(), from.v.end(), v_.begin());
             std::copy(from.w.begin(), from.w.end(), w_.begin());
         } else {
             init_maxwellian(*this, blocks_, seed, replica);
         }
-        perturb_velocities();
+        perturb_velocities(from_state);
         if (domain_.lees_edwards()) { // the uniform shear flow u_x = a (y - L_y/2) of the images
             for (std::size_t i = 0; i < particles_; ++i)
                 v_[i].x += domain_.shear_rate * (x_[i].y - 0.5 * domain_.size[1]);
@@ -596,8 +599,9 @@ template <class Policy, bool General = false> class SpatialEngine {
     }
 
     // The initial wave of InitialSpec on the Maxwellian velocities (after the total momentum was
-    // removed: a whole number of wavelengths carries none).
-    void perturb_velocities() {
+    // removed: a whole number of wavelengths carries none), or on those of a state the run starts
+    // from (`from_state`).
+    void perturb_velocities(bool from_state) {
         const InitialSpec& wave = domain_.initial;
         if (wave.mode == Perturbation::none || wave.mode == Perturbation::density)
             return;
@@ -606,7 +610,7 @@ template <class Policy, bool General = false> class SpatialEngine {
         double T = 0, m = 0;
         for (const SpeciesBlock& b : blocks_) {
             m += b.grain.mass * static_cast<double>(b.count);
-            if (!domain_.initial_state) {
+            if (!from_state) {
                 T += b.temperature * static_cast<double>(b.count);
                 continue;
             }

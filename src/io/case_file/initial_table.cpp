@@ -25,15 +25,11 @@ std::optional<InitialConfig> build_initial(const toml::table& root) {
 }
 
 void check_initial(BuildContext& ctx, const CaseConfig& c) {
-    if (c.initial && !c.initial->from.empty() && !c.domain)
-        ctx.add("initial.from", fmt::format("initial.from = \"{}\" without [domain]: a saved state starts a box "
-                                            "run (give the box in [domain])",
-                                            c.initial->from));
     if (c.initial && !c.initial->from.empty() && c.run.kernel == CollisionKernel::maxwell)
         ctx.add("initial.from",
                 fmt::format("initial.from = \"{}\" with run.kernel = \"maxwell\": the kernel's rates come from "
                             "the species' temperatures in this case, not from the saved grains' (start a Maxwell "
-                            "box from its Maxwellian)",
+                            "kernel run from its Maxwellian)",
                             c.initial->from));
     if (c.initial && c.initial->mode != Perturbation::none) {
         if (!c.domain)

@@ -1,7 +1,9 @@
 #pragma once
-// [initial]: how a spatially resolved run starts: a wave on the uniform gas, or a saved state.
-// Its checks: both need [domain], a saved state a kernel that takes its temperatures from the grains,
-// a wave a wave number other than 0 and a wavelength of at least two cells.
+// [initial]: how a run starts: from a saved state (any run), and a box's wave on its start.
+// Its checks: a saved state needs a kernel that takes its temperatures from the grains; a wave
+// (initial.mode) needs [domain], a wave number other than 0 and a wavelength of at least two cells.
+// initial.amplitude and initial.wave only shape a wave: without one (a homogeneous run) they are not
+// read, and the resolved case always holds them.
 #include "build_context.hpp"
 #include "emitter.hpp"
 #include "roughgas/io/case_config.hpp"
