@@ -11,6 +11,7 @@
 #include "roughgas/dsmc/init.hpp"
 #include "roughgas/dsmc/particles.hpp"
 #include "roughgas/dsmc/shear.hpp"
+#include "roughgas/dsmc/thermostat.hpp"
 #include "roughgas/observables/moments.hpp"
 #include "roughgas/observables/pressure.hpp"
 
@@ -171,7 +172,9 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
 
     const auto emit = [&] {
         Vec3 Omega{};
-        const Moments m = moments_now(Omega);
+        Moments m = moments_now(Omega);
+        if (spec.thermostat) // the moments at the row's time, not at the kicks' (dsmc/thermostat.hpp)
+            m = moments_at_drive_time(m, slices, *spec.thermostat, engine.time(), engine.kicked_until());
         const double t = engine.time();
         const std::int64_t c = engine.collisions();
         const double dt = t - t_prev;

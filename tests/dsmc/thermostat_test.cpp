@@ -7,6 +7,7 @@
 #include "roughgas/dsmc/engine.hpp"
 #include "roughgas/dsmc/init.hpp"
 #include "roughgas/dsmc/particles.hpp"
+#include "roughgas/core/normal.hpp"
 #include "roughgas/dsmc/thermostat.hpp"
 #include "roughgas/observables/moments.hpp"
 
@@ -15,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <tuple>
 #include <cstring>
 #include <limits>
 #include <vector>
@@ -305,6 +307,77 @@ TEST(DrivenEngine, LangevinBathMakesAMixtureMaxwellianAtItsTemperature) {
     sp[1].fraction = 0.4;
     sp[1].radius = 0.7;
     expect_bath_equilibrium<RoughPacked, true>(sp, std::vector(3, make_rough_constant(1.0, 1.0)), 0.3, "mixture");
+}
+
+
+TEST(DrivenMoments, TheKickMapMovesEveryMomentAsKickingTheGrainsDoes) {
+    // A rough gas with cumulants (a cooled rough state) kicked by hand with one Langevin step of a bath
+    // at T_b = 2 (v and omega decayed, then Gaussians added). moments_at_drive_time with the same step
+    // (as a lag of the kicks) predicts the kicked grains' moments: N = 2e5 grains, tolerance 5
+    // sampling errors of a cumulant near a Maxwellian (sqrt(8/N) ~ 0.006), and T within 5e-3.
+    const std::int64_t N = 200000;
+    auto e = make_engine<RoughPacked>({grain(1, 3)}, N, std::vector{make_rough_constant(0.6, 0.4)},
+                                      EngineOptions{1.0, 1.0, 31, 0});
+    e.run_collisions(4 * N); // cumulants away from 0
+    const auto slices = species_slices(e.species());
+    const Moments before = moments_of(e);
+    ASSERT_GT(std::abs(before.all.a20) + std::abs(before.all.a11), 0.02);
+    ThermostatSpec th = langevin(1.0, 0.0, 0.0);
+    const double gamma = 0.5, gamma_rot = 0.25, tau = 0.45;
+    th.species[0].friction = gamma;
+    th.species[0].rotational_friction = gamma_rot;
+    th.species[0].drive.value = {2.0};
+    const SpeciesKick k = species_kick(th.kind, th.species[0], 1.0, slices[0].moment_of_inertia, 0.0, tau);
+    CollisionRng rng = make_collision_stream(StreamKey{5, Stream::test, 0, 0, 0});
+    const ZigguratNormal normal;
+    for (std::size_t i = 0; i < e.particles(); ++i) {
+        const double sv = std::sqrt(k.var_v), sw = std::sqrt(k.var_w);
+        e.store().v(i) = k.decay_v * e.store().v(i) + Vec3{sv * normal(rng), sv * normal(rng), sv * normal(rng)};
+        e.store().w(i) = k.decay_w * e.store().w(i) + Vec3{sw * normal(rng), sw * normal(rng), sw * normal(rng)};
+    }
+    const Moments after = moments_of(e);
+    // The row at t = tau of a gas whose kicks reached only t = 0: the map forward over [0, tau].
+    const Moments predicted = moments_at_drive_time(before, slices, th, tau, 0.0);
+    EXPECT_NEAR(predicted.all.T_tr / after.all.T_tr, 1.0, 5e-3);
+    EXPECT_NEAR(predicted.all.T_rot / after.all.T_rot, 1.0, 5e-3);
+    for (const auto& [name, p, a] : {std::tuple{"a20", predicted.all.a20, after.all.a20},
+                                     std::tuple{"a02", predicted.all.a02, after.all.a02},
+                                     std::tuple{"a11", predicted.all.a11, after.all.a11},
+                                     std::tuple{"A_cw", predicted.all.A_cw, after.all.A_cw}})
+        EXPECT_NEAR(p, a, 5 * std::sqrt(8.0 / N)) << name; // cumulant errors ~sqrt(8/N) near a Maxwellian
+    // The inverse: a gas ahead of its row by the same step gives back the moments before.
+    const Moments back = moments_at_drive_time(predicted, slices, th, 0.0, tau);
+    EXPECT_NEAR(back.all.T_tr / before.all.T_tr, 1.0, 1e-12);
+    EXPECT_NEAR(back.all.a20, before.all.a20, 1e-12);
+    EXPECT_NEAR(back.all.a11, before.all.a11, 1e-12);
+    EXPECT_NEAR(back.all.A_cw, before.all.A_cw, 1e-12);
+}
+
+TEST(DrivenMoments, RowsCarryNoSawtoothOfTheKicks) {
+    // Smooth grains, alpha = 0.7, white noise, steps of one mean free time: within a step the grains'
+    // T_tr falls by ~17 % (the kicks come at its start). Rows taken at 2000 points spread over the steps'
+    // phases: the grains' T_tr in the first half of the steps exceeds the second half's by ~8 %, the
+    // rows' (moments_at_drive_time) agree within 4 standard errors of the halves' difference.
+    const std::int64_t N = 20000;
+    auto e = make_engine<SmoothAoS>({grain()}, N, std::vector{make_smooth_constant(0.7)},
+                                    EngineOptions{1.0, 1.0, 41, 0});
+    const ThermostatSpec th = white_noise(1.0, 0.0);
+    e.set_thermostat(th);
+    e.run_collisions(30 * N);
+    const auto slices = species_slices(e.species());
+    std::vector<double> raw[2], row[2];
+    for (int k = 0; k < 2000; ++k) {
+        e.run_collisions(e.collisions() + N / 7 + 13); // about 0.29 steps apart: every phase
+        const Moments m = moments_of(e);
+        const int half = e.kicked_until() > e.time() ? 0 : 1; // kicks ahead: the step's first half
+        raw[half].push_back(m.all.T_tr);
+        row[half].push_back(moments_at_drive_time(m, slices, th, e.time(), e.kicked_until()).all.T_tr);
+    }
+    const MeanErr r0 = mean_err(raw[0]), r1 = mean_err(raw[1]), c0 = mean_err(row[0]), c1 = mean_err(row[1]);
+    EXPECT_GT(r0.mean / r1.mean, 1.05); // the sawtooth the rows must not show
+    const double err = std::hypot(c0.err, c1.err) / c1.mean;
+    EXPECT_NEAR(c0.mean / c1.mean, 1.0, 4 * err) << "err " << err;
+    EXPECT_LT(err, 0.005);
 }
 
 template <class E> bool same_particles(const E& a, const E& b) {

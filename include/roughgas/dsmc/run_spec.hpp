@@ -140,7 +140,8 @@ struct DomainSpec {
     bool general_flight() const { return has_walls() || has_gravity() || lees_edwards(); }
 };
 
-// A thermostat: energy fed to the grains at every DSMC step (dsmc/thermostat.hpp, docs/model.md §9).
+// A thermostat: energy fed to the grains at every DSMC step (dsmc/thermostat.hpp; docs/model.md, "The
+// DSMC" and "Maxwellian theory of the driven gas").
 //   white_noise  every velocity component gets an independent Gaussian kick of variance xi0^2 dt
 //                (xi0^2 the strength, velocity^2/time), so that the kicks alone give dT_tr/dt = m xi0^2;
 //                the share eps (rotational_share) of that power goes to the spins instead, by kicks of

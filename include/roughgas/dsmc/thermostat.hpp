@@ -1,5 +1,5 @@
 #pragma once
-// A thermostat's kicks over a stretch of time (run_spec.hpp ThermostatSpec; docs/model.md §9):
+// A thermostat's kicks over a stretch of time (run_spec.hpp ThermostatSpec; docs/model.md, "The DSMC"):
 // what every grain's velocity and spin become, as the pure functions the engines call once per
 // step in their pass over the grains.
 //
@@ -40,6 +40,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <stdexcept>
 #include <vector>
 
@@ -145,5 +146,26 @@ inline double exact_energy_factor(double A, double B, double Q) {
     const double d = std::sqrt(B * B + 4 * A * Q);
     return B >= 0 ? 2 * Q / (B + d) : (d - B) / (2 * A);
 }
+
+} // namespace roughgas
+
+namespace roughgas {
+
+// The moments a row reports for a driven gas at time t whose kicks reached t_kick (Engine::kicked_until):
+// the moments of the gas at t as the continuous drive has it, to the splitting's O(L^2). The kicks of
+// a step are given at its start and lead the time by up to half a step there (lag by up to half a
+// step at its end): left alone, a row's T_tr would carry a sawtooth of +-(1/2) x (the drive's power
+// over T) x (step length), +-8 % for smooth grains at alpha = 0.7 under white noise with steps of one
+// mean free time. A kick over [t_a, t_b] maps c -> a c + g, g Gaussian of variance s^2 per component
+// independent of c (and omega -> b omega + h, variance r^2), so that
+//   <c^2> -> a^2 <c^2> + 3 s^2,   <c^4> -> a^4 <c^4> + 10 a^2 s^2 <c^2> + 15 s^4,
+//   <c^2 w^2> -> a^2 b^2 <c^2 w^2> + 3 r^2 a^2 <c^2> + 3 s^2 b^2 <w^2> + 9 s^2 r^2,
+//   <(c.w)^2> -> a^2 b^2 <(c.w)^2> + r^2 a^2 <c^2> + s^2 b^2 <w^2> + 3 s^2 r^2
+// (exact in expectation). A gas behind its drive (t_kick < t) gets the kick over [t_kick, t] this way;
+// one ahead of it (t_kick > t) has the kick over [t, t_kick] undone by the inverse map. The mixture's
+// moments are rebuilt from the species' (docs/model.md §5). The grains themselves are not changed:
+// histograms, fields and saved states are the grains as they are.
+Moments moments_at_drive_time(const Moments& m, std::span<const SpeciesSlice> species,
+                              const ThermostatSpec& thermostat, double t, double t_kick);
 
 } // namespace roughgas
