@@ -6,7 +6,9 @@
 #include "roughgas/observables/longitudinal_modes.hpp"
 #include "roughgas/observables/profiles.hpp"
 #include "roughgas/observables/shear_mode.hpp"
+#include "roughgas/observables/driven_steady_state.hpp"
 #include "roughgas/observables/sonine_cooling_state.hpp"
+#include "roughgas/observables/white_noise_sonine.hpp"
 
 #include <fmt/format.h>
 
@@ -152,6 +154,31 @@ MomentsTable::MomentsTable(const RunSpec& spec)
                 sonine_.push_back(value(field));
             for (const char* name : {"theta_sonine", "zeta_star_sonine", "a20_sonine", "a02_sonine", "a11_sonine"})
                 columns_.push_back({name, "-"});
+        }
+        // A driven gas: its steady state in the Maxwellian approximation under the thermostat's final
+        // drives (observables/driven_steady_state.hpp; NaN where there is none), and for one species of
+        // smooth grains under plain white noise the first Sonine approximation's steady T_tr and a2
+        // (van Noije & Ernst 1998; observables/white_noise_sonine.hpp): the same in every row.
+        if (spec.thermostat) {
+            const std::optional<DrivenSteadyState> st = driven_steady_state(trajectory_->theory(), *spec.thermostat);
+            const double nan = std::numeric_limits<double>::quiet_NaN();
+            constant_theory_.push_back(st ? st->T_tr : nan);
+            constant_theory_.push_back(st ? st->T_rot : nan);
+            constant_theory_.push_back(st ? st->theta : nan);
+            for (const char* name : {"T_tr_steady_theory", "T_rot_steady_theory", "theta_steady_theory"})
+                columns_.push_back({name, std::string_view(name).starts_with("theta") ? "-" : "energy"});
+            const HcsTheory& th = trajectory_->theory();
+            const SpeciesThermostat& drive = spec.thermostat->species[0];
+            if (th.species_count() == 1 && !th.maxwell() && th.pairs()[0].beta == -1 &&
+                spec.thermostat->kind == ThermostatKind::white_noise && drive.rotational_share == 0) {
+                const HcsSpecies& g = th.species()[0];
+                const WhiteNoiseSonineState s = white_noise_sonine_state(
+                    th.pairs()[0].alpha, g.mass, 2 * g.radius, th.density(), drive.drive.value.back());
+                constant_theory_.push_back(s.T_tr);
+                constant_theory_.push_back(s.a2);
+                columns_.push_back({"T_tr_sonine", "energy"});
+                columns_.push_back({"a20_sonine", "-"});
+            }
         }
     }
 }
@@ -354,6 +381,7 @@ std::vector<double> MomentsTable::combine(std::span<const std::span<const double
         }
         out.push_back(reduced_cooling_rate(th, T));
         out.insert(out.end(), sonine_.begin(), sonine_.end());
+        out.insert(out.end(), constant_theory_.begin(), constant_theory_.end());
     }
     return out;
 }
@@ -423,7 +451,16 @@ const std::map<std::string, std::string>& meanings() {
          "kernel, cooling runs (no thermostat); NaN for smooth grains (no scaled theta) and where the approximation has no cooling state"},
         {"zeta_star_sonine", "zeta_star of the same state, (2/3) R_c2/(1 - a20/16) with its cumulants (as "
                              "theta_sonine; for smooth grains with van Noije & Ernst's a2)"},
-        {"a20_sonine", "a20 of the same state (as theta_sonine; van Noije & Ernst's a2 for smooth grains)"},
+        {"a20_sonine", "a20 of the same state (as theta_sonine; van Noije & Ernst's a2 for smooth grains); with a "
+                       "thermostat (one species of smooth grains, white noise without rotational share, hard-sphere "
+                       "kernel) van Noije & Ernst's steady a2 under white noise"},
+        {"T_tr_sonine", "the steady T_tr of smooth grains under white noise in the first Sonine approximation, "
+                        "(m xi0^2/(G A (1 + 3 a2/16)))^(2/3) at the final strength (as a20_sonine with a thermostat): "
+                        "the same in every row"},
+        {"T_tr_steady_theory", "the steady T_tr of the Maxwellian approximation under the thermostat's final drives "
+                               "(driven runs with constant alpha, beta; NaN where there is none): the same in every row"},
+        {"T_rot_steady_theory", "the steady T_rot of the same state (as T_tr_steady_theory)"},
+        {"theta_steady_theory", "T_rot_steady_theory/T_tr_steady_theory"},
         {"a02_sonine", "a02 of the same state (as theta_sonine; NaN for smooth grains, whose spins keep their "
                        "initial distribution)"},
         {"a11_sonine", "a11 of the same state (as a02_sonine)"},
@@ -508,6 +545,15 @@ std::string moments_columns_markdown() {
     const MomentsTable t1(one);
     for (const Column& c : t1.columns())
         if (!c.name.ends_with("_err") || c.name == "t_err")
+            add(c);
+    RunSpec driven = one; // a driven gas of smooth grains: its steady-state columns after the cooling ones
+    driven.pairs = {ConstantRestitution{0.9, -1.0}};
+    driven.thermostat = ThermostatSpec{};
+    driven.thermostat->species.resize(1);
+    driven.thermostat->species[0].drive.value = {1.0};
+    const MomentsTable t6(driven);
+    for (const Column& c : t6.columns())
+        if (!c.name.ends_with("_err"))
             add(c);
     RunSpec shear = one; // the shear columns come after the base columns
     shear.shear = ShearSpec{};

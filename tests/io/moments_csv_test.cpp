@@ -1,6 +1,7 @@
 // The rows of moments.csv (io/moments_csv.hpp): columns, replica statistics, theory, and the
 // no-silent-NaN rule.
 #include "roughgas/io/moments_csv.hpp"
+#include "roughgas/observables/driven_steady_state.hpp"
 
 #include "roughgas/dsmc/run.hpp"
 #include "roughgas/observables/driven_theory.hpp"
@@ -113,7 +114,8 @@ TEST(MomentsTable, DrivenRunsCarryTheDrivenTheory) {
     EXPECT_TRUE(table.has_theory());
     EXPECT_FALSE(table.has_sonine());
     const std::vector<std::string> names = table.names();
-    ASSERT_EQ(names.back(), "zeta_star_theory");
+    ASSERT_EQ(names.back(), "theta_steady_theory"); // after the trajectory's columns, the steady state's
+    ASSERT_EQ(names[names.size() - 4], "zeta_star_theory");
     const HcsTheory theory({{1, 0.5, 0.4, 1}}, {{0.8, 0.2}}, 1.0);
     HcsTrajectory driven(theory, {{1.0}, {1.0}}, *spec.thermostat);
     HcsTrajectory cooling(theory, {{1.0}, {1.0}});
@@ -122,9 +124,15 @@ TEST(MomentsTable, DrivenRunsCarryTheDrivenTheory) {
         const std::vector<std::span<const double>> rows{r};
         const std::vector<double> out = table.combine(rows);
         const HcsTemperatures T = driven.at(t);
-        EXPECT_NEAR(out[out.size() - 4] / T.T_tr[0], 1.0, 1e-12) << t; // T_tr_theory
-        EXPECT_NEAR(out[out.size() - 3] / T.T_rot[0], 1.0, 1e-12) << t;
-        EXPECT_NEAR(out.back(), reduced_cooling_rate(theory, T), 1e-12) << t;
+        EXPECT_NEAR(out[out.size() - 7] / T.T_tr[0], 1.0, 1e-12) << t; // T_tr_theory
+        EXPECT_NEAR(out[out.size() - 6] / T.T_rot[0], 1.0, 1e-12) << t;
+        EXPECT_NEAR(out[out.size() - 4], reduced_cooling_rate(theory, T), 1e-12) << t;
+        // The steady state under the final drive, the same in every row.
+        const std::optional<DrivenSteadyState> st = driven_steady_state(theory, *spec.thermostat);
+        ASSERT_TRUE(st);
+        EXPECT_EQ(out[out.size() - 3], st->T_tr) << t;
+        EXPECT_EQ(out[out.size() - 2], st->T_rot) << t;
+        EXPECT_EQ(out.back(), st->theta) << t;
         if (t > 0) { // heated: above the cooling gas
             EXPECT_GT(T.T_tr[0], 1.5 * cooling.at(t).T_tr[0]) << t;
         }

@@ -17,6 +17,9 @@
 //                                                      cooling state in the first Sonine approximation,
 //                                                      observables/sonine_cooling_state.hpp, the same
 //                                                      in every row)
+//   T_tr_steady_theory, T_rot_steady_theory, theta_steady_theory, then T_tr_sonine, a20_sonine
+//                                                     (driven runs: the steady state's theory, the same
+//                                                      in every row)
 // and the rule that no value is NaN or infinite unless it is undefined by definition.
 #include "roughgas/dsmc/output_columns.hpp"
 #include "roughgas/dsmc/run_spec.hpp"
@@ -119,6 +122,7 @@ class MomentsTable {
     int replicas_ = 1;
     std::optional<HcsTrajectory> trajectory_;
     std::vector<double> sonine_; // the *_sonine columns' values (empty: not written)
+    std::vector<double> constant_theory_; // a driven gas's steady-state columns (empty: not written)
     bool zeta_ = false;                          // cooling runs: the zeta_star column
     std::vector<double> prev_T_tr_, prev_cpp_;  // per replica, its previous row's (NaN: none yet)
 };

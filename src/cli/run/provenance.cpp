@@ -89,9 +89,18 @@ RunProvenance run_provenance(const RunSetup& setup, const MomentsTable& table, b
         if (root)
             std::cerr << "roughgas run: warning: " << w << '\n';
     }
-    if (table.has_theory())
+    if (table.has_theory() && spec.thermostat)
+        prov.notes.push_back("*_theory: Maxwellian approximation for constant alpha, beta of the gas driven by its "
+                             "thermostat at the row's t (observables/driven_theory.hpp); *_steady_theory: its steady "
+                             "state under the final drives; T_tr_sonine, a20_sonine (smooth grains, white noise): the "
+                             "first Sonine approximation's steady state");
+    else if (table.has_theory())
         prov.notes.push_back("*_theory: Maxwellian approximation for constant alpha, beta at the row's t "
                              "(observables/theory.hpp; Haff's law for smooth spheres)");
+    if (spec.thermostat)
+        prov.notes.push_back("thermostat: the kicks of a step come at its start, half a step ahead of the time "
+                             "there; the rows' moments are taken at the rows' t (the kicks' map of the moments, "
+                             "dsmc/thermostat.hpp), histograms and saved states are the grains as they are");
     if (table.has_sonine())
         prov.notes.push_back("*_sonine: the scaled cooling state in the first Sonine approximation, the same in "
                              "every row (observables/sonine_cooling_state.hpp)");
