@@ -94,7 +94,7 @@ ThermostatSpec langevin(double T_b, double gamma, double gamma_rot, std::size_t 
     return t;
 }
 
-TEST(GaussianBridge, DrawsSumToTheTotalAndHaveTheConditionedLaw) {
+TEST(ZeroSumKicks, DrawsSumToTheTotalAndHaveTheConditionedLaw) {
     // n iid N(0, s^2) conditioned on summing to 0: each draw has variance s^2 (1 - 1/n), any two
     // the covariance -s^2/n, whatever their place in the sequence. 40000 trials of n = 5: the
     // variances' standard errors are ~0.7 %, the covariances' ~0.006 s^2; tolerance 5 of them.
@@ -102,11 +102,11 @@ TEST(GaussianBridge, DrawsSumToTheTotalAndHaveTheConditionedLaw) {
     const double s = 1.7;
     CollisionRng rng = make_collision_stream(StreamKey{3, Stream::test, 0, 0, 0});
     double sum2[n] = {}, cov01 = 0, cov24 = 0, worst_sum = 0;
+    std::vector<Vec3> x;
     for (std::size_t t = 0; t < trials; ++t) {
-        GaussianBridge b(n, Vec3{}, s);
-        Vec3 x[n], total{};
+        draw_zero_sum(n, Vec3{}, s, rng, x);
+        Vec3 total{};
         for (std::size_t k = 0; k < n; ++k) {
-            x[k] = b.next(rng);
             total += x[k];
             sum2[k] += x[k].x * x[k].x;
         }
@@ -120,9 +120,15 @@ TEST(GaussianBridge, DrawsSumToTheTotalAndHaveTheConditionedLaw) {
         EXPECT_NEAR(sum2[k] / trials / var, 1.0, 5 * std::sqrt(2.0 / trials)) << "draw " << k;
     for (double c : {cov01, cov24})
         EXPECT_NEAR(c / trials, -s * s / n, 5 * s * s / std::sqrt(static_cast<double>(trials)));
+    // A given total: the draws' sum is it, their mean total/n.
+    draw_zero_sum(7, Vec3{7, -14, 3.5}, s, rng, x);
+    Vec3 total{};
+    for (const Vec3& y : x)
+        total += y;
+    EXPECT_LT(norm(total - Vec3{7, -14, 3.5}), 1e-13);
 }
 
-TEST(GaussianBridge, ChunkSumsHaveTheLawOfSumsOfZeroSumDraws) {
+TEST(ZeroSumKicks, ChunkSumsHaveTheLawOfSumsOfZeroSumDraws) {
     // Chunks of 3, 2, 4 of 9 zero-sum draws of scale s: chunk c's sum has variance s^2 n_c (9 - n_c)/9.
     // 40000 trials: standard errors ~0.7 %, tolerance 5 of them; the sums close to round-off.
     const std::vector<std::size_t> sizes{3, 2, 4};
