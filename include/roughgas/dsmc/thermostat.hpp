@@ -146,4 +146,88 @@ inline double exact_energy_factor(double A, double B, double Q) {
     return B >= 0 ? 2 * Q / (B + d) : (d - B) / (2 * A);
 }
 
+// Per species, one step's kicks as an engine applies them: what they do, the bridge's scales, the
+// exact-energy factors, the chunks' sums.
+struct StepKick {
+    SpeciesKick kick;
+    double scale_v = 0, scale_w = 0, lambda_v = 1, lambda_w = 1;
+    std::vector<Vec3> sums_v, sums_w;
+};
+// What a step's kicks would inject into a chunk's grains: A = sum m dv^2/2, B = sum m v.dv (and the
+// same for the spins with I).
+struct KickEnergy {
+    double A_v = 0, B_v = 0, A_w = 0, B_w = 0;
+    KickEnergy& operator+=(const KickEnergy& o) {
+        A_v += o.A_v, B_v += o.B_v, A_w += o.A_w, B_w += o.B_w;
+        return *this;
+    }
+};
+
+// Where one step's kicks of a species come from: the streams' key (seed, replica, step, species)
+// and the species' grains (count n, mass m, moment of inertia I).
+struct KickSource {
+    std::uint64_t seed = 0, replica = 0, step = 0;
+    std::size_t species = 0, n = 0;
+    double m = 1, I = 1;
+};
+
+// Chunk ch's kicks (its grains, in order, are v(0 .. count - 1) and w(..)), from the chunk's own
+// stream: applied (energy == nullptr) or only summed into *energy. The engines call it from a
+// function of theirs that is never inlined (see Engine::kick_chunk).
+template <class V, class W>
+void kick_grains(const KickSource& src, std::size_t ch, std::size_t count, const StepKick& k, V&& v_of, W&& w_of,
+                 KickEnergy* energy) {
+    CollisionRng rng =
+        make_collision_stream(kick_stream_key(src.seed, src.replica, src.step, src.species, static_cast<long>(ch)));
+    GaussianBridge dv(count, k.sums_v[ch], k.scale_v), dw(count, k.sums_w[ch], k.scale_w);
+    const bool spins = k.kick.var_w > 0 || k.kick.decay_w != 1;
+    const double m = src.m, I = src.I;
+    for (std::size_t q = 0; q < count; ++q) {
+        const Vec3 kv = dv.next(rng);
+        Vec3& v = v_of(q);
+        if (energy) {
+            energy->A_v += 0.5 * m * norm2(kv);
+            energy->B_v += m * dot(v, kv);
+        } else {
+            v = k.kick.decay_v * v + k.lambda_v * kv;
+        }
+        if (!spins)
+            continue;
+        const Vec3 kw = dw.next(rng);
+        Vec3& w = w_of(q);
+        if (energy) {
+            energy->A_w += 0.5 * I * norm2(kw);
+            energy->B_w += I * dot(w, kw);
+        } else {
+            w = k.kick.decay_w * w + k.lambda_w * kw;
+        }
+    }
+}
+
+// A species' kicks of one step over its chunks of sizes[ch] grains: the bridge's scales, the chunks'
+// sums and, with `exact_energy`, the factors on the kicks. `sum_chunk(ch, energy)` sums chunk ch's
+// kicks (kick_grains with energy set) and `for_chunks(C, f)` runs f over the chunks, on any threads:
+// the chunks' sums are combined in chunk order, so the factors do not depend on the threads.
+template <class ForChunks, class SumChunk>
+void prepare_step_kick(const KickSource& src, const std::vector<std::size_t>& sizes, bool exact_energy, StepKick& k,
+                       ForChunks&& for_chunks, SumChunk&& sum_chunk) {
+    k.scale_v = bridge_scale(k.kick.var_v, src.n);
+    k.scale_w = bridge_scale(k.kick.var_w, src.n);
+    k.lambda_v = k.lambda_w = 1;
+    CollisionRng rng = make_collision_stream(kick_stream_key(src.seed, src.replica, src.step, src.species, -1));
+    k.sums_v = chunk_sums(sizes, k.scale_v, rng);
+    k.sums_w = chunk_sums(sizes, k.scale_w, rng);
+    if (!exact_energy)
+        return;
+    const std::size_t C = sizes.size();
+    std::vector<KickEnergy> parts(C);
+    for_chunks(C, [&](std::size_t ch) { sum_chunk(ch, &parts[ch]); });
+    KickEnergy e;
+    for (const KickEnergy& p : parts) // in chunk order: independent of the threads
+        e += p;
+    const double N = static_cast<double>(src.n);
+    k.lambda_v = exact_energy_factor(e.A_v, e.B_v, 1.5 * N * src.m * k.kick.var_v);
+    k.lambda_w = exact_energy_factor(e.A_w, e.B_w, 1.5 * N * src.I * k.kick.var_w);
+}
+
 } // namespace roughgas
