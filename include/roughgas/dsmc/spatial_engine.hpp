@@ -59,9 +59,9 @@
 // ahead at the step's start, half a step behind at its end. The law, the per-species zero-sum bridge
 // over the chunks and the streams (seed, thermostat, replica, step, species and chunk) are the
 // homogeneous engine's, with the flight's chunks: fixed by the species' grain counts, so the kicks
-// depend neither on the threads nor on the cells. A kick changes velocities only: a heated box keeps
-// its positions, walls and gravity; each species' kicks of a step sum to zero momentum, so they never
-// push the gas, walls or not. A sheared box (Lees-Edwards) takes no thermostat: uniform shear flow
+// depend neither on the threads nor on the cells. A kick changes velocities and spins only: a heated
+// box keeps its positions, walls and gravity; each species' kicks of a step sum to zero momentum, so
+// they never push the gas, walls or not. A sheared box (Lees-Edwards) takes no thermostat: uniform shear flow
 // heats the gas itself.
 //
 // Compiled twice: `General` = false for a periodic box without gravity (a flight that only adds and
@@ -535,9 +535,9 @@ template <class Policy, bool General = false> class SpatialEngine {
     }
 
     // The complete state (positions, velocities, spins, time, step and collision counts, with
-    // nearest partners the identities and last partners): a run
-    // continued from it draws the same numbers as one without the stop (the streams are keyed by
-    // the step).
+    // nearest partners the identities and last partners, with a thermostat the time its kicks
+    // reached): a run continued from it draws the same numbers as one without the stop (the streams
+    // are keyed by the step).
     void save(ByteWriter& out) const {
         for (int a = 0; a < 3; ++a) { // positions, velocities, spins (in store order)
             out.u64(particles_);
