@@ -15,6 +15,7 @@
 #                              --from 20 and --from 300, --times 4
 #   docs/box_cooling_3d_{spectra,fields}.png  roughgas run cases/box_cooling_3d.toml, plot_spectra.py, plot_fields.py
 #   docs/box_cooling_3d_{medium,strong}_roughness_fields.png  the rough cubes, plot_fields.py --from 60 and 300
+#   docs/box_heated_white_noise_spectra.png  roughgas run cases/box_heated_white_noise.toml, plot_spectra.py --times 4
 # Not redrawn here (minutes of CPU each): docs/accuracy.png, the work-precision study of
 # docs/accuracy.md (scripts/bench_accuracy.py); docs/transport_errors.png, the study of
 # docs/validation.md (scripts/transport_errors.py --collisions 3000 --plot docs/transport_errors.png,
@@ -82,5 +83,8 @@ for c in medium:20 strong:300; do
   "$roughgas" run "$root/cases/$r.toml" --out "$work/$r" --force --quiet
   "$py" "$root/scripts/plot_fields.py" "$work/$r" --from "${c##*:}" --times 4 --out "$root/docs/${r}_fields.png"
 done
+"$roughgas" run "$root/cases/box_heated_white_noise.toml" --out "$work/box_heated_white_noise" --force --quiet
+"$py" "$root/scripts/plot_spectra.py" "$work/box_heated_white_noise" --times 4 \
+    --out "$root/docs/box_heated_white_noise_spectra.png"
 
-echo "docs_figures: redrew docs/ice_normal.png, fig2c_tangential.png, hcs_mixture.png, usf_rough.png, usf_sweep_alpha.png, box_*.png (with the spectra of box_shear_mode, box_cooling_slab and box_cooling_3d, and the fields of the three cooling slabs and the three cubes)"
+echo "docs_figures: redrew docs/ice_normal.png, fig2c_tangential.png, hcs_mixture.png, usf_rough.png, usf_sweep_alpha.png, box_*.png (with the spectra of box_shear_mode, box_cooling_slab, box_cooling_3d and box_heated_white_noise, and the fields of the three cooling slabs and the three cubes)"

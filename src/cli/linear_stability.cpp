@@ -16,6 +16,9 @@ namespace roughgas::cli {
 std::optional<std::string> linear_stability_note(const RunSpec& spec) {
     if (!spec.domain || spec.shear || spec.domain->has_walls() || spec.domain->has_gravity())
         return std::nullopt;
+    if (spec.thermostat)
+        return std::string("a heated box: the critical lengths of the cooling state do not apply (the steady state "
+                           "of white noise has no linear instability: van Noije, Ernst, Brito & Orza 1997)");
     const std::optional<ShearModeTheory> theory = shear_mode_theory(spec);
     if (!theory)
         return std::string("shear mode: the Navier-Stokes critical length is given for grains of one species "

@@ -63,6 +63,8 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
     SpatialEngine<Policy, General> engine(domain, blocks, std::move(policies), spec.density, spec.seed,
                                           static_cast<std::uint64_t>(replica), std::max(1, spec.threads),
                                           spec.kernel, spec.initial_state);
+    if (spec.thermostat) // a uniformly heated box (before a resume's restore: its state holds the kicks' time)
+        engine.set_thermostat(*spec.thermostat);
     const double N = static_cast<double>(engine.particles());
     const std::size_t S = blocks.size();
     const std::vector<SpeciesSlice> slices = species_slices(blocks);
@@ -72,7 +74,8 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
     const std::string kernel = std::string("box of ") + std::to_string(engine.cells()) + " cells" +
                                (domain.has_walls() ? ", walls" : "") + (domain.has_gravity() ? ", gravity" : "") +
                                (domain.lees_edwards() ? ", Lees-Edwards" : "") +
-                               (spec.kernel == CollisionKernel::maxwell ? ", Maxwell kernel" : "") + ", " +
+                               (spec.kernel == CollisionKernel::maxwell ? ", Maxwell kernel" : "") +
+                               (spec.thermostat ? ", thermostat" : "") + ", " +
                                std::string(Policy::name);
 
     std::vector<double> outputs = spec.output_times;

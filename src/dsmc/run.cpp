@@ -73,6 +73,8 @@ void validate(const RunSpec& spec) {
                 "a sheared box has Lees-Edwards boundaries at the shear rate, and only a sheared box");
         require(!spec.domain->lees_edwards() || (!spec.domain->walled(0) && !spec.domain->walled(1)),
                 "Lees-Edwards boundaries need x and y periodic");
+        require(!spec.thermostat || !spec.domain->lees_edwards(),
+                "a sheared box (Lees-Edwards) takes no thermostat: uniform shear flow heats the gas itself");
         require(spec.histogram_times.empty(), "a spatially resolved run writes no histograms");
         require(spec.domain->profile_axis >= 0 && spec.domain->profile_axis <= 2, "the profile axis must be 0, 1 or 2");
         require(!spec.domain->spectra || (!spec.domain->has_walls() && !spec.domain->lees_edwards()),

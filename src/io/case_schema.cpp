@@ -728,8 +728,9 @@ const std::vector<TableSpec>& case_tables() {
          "material of the grains (SI)"},
         {"contact", false, "optional", "how the contact of viscoelastic and brilliantov is integrated"},
         {"shear", false, "required for run.kind = shear", "uniform shear flow"},
-        {"thermostat", false, "optional (homogeneous, run.kind = cooling)",
-         "a thermostat that drives the gas, white noise or a Langevin bath (a driven gas: steady.csv)"},
+        {"thermostat", false, "optional (run.kind = cooling)",
+         "a thermostat that drives the gas, white noise or a Langevin bath, homogeneous or every grain of a box "
+         "(a driven gas: steady.csv)"},
         {"species_thermostat", true, "optional (with [thermostat])",
          "one species' thermostat (keys default to [thermostat])"},
         {"domain", false, "optional",

@@ -242,6 +242,27 @@ TEST(ReplicaCheckpoints, ShearResumesBetweenStrangStepsBitForBit) {
     expect_checkpoints_are_exact(spec, 0.35, 12);
 }
 
+TEST(ReplicaCheckpoints, HeatedBoxResumesBitForBit) {
+    // A periodic box heated by white noise (exact energy, a share to the spins): its state holds the
+    // time the kicks reached; states every 0.35 collisions per particle fall between the box's steps.
+    RunSpec spec = cooling_spec();
+    spec.histogram_times.clear();
+    spec.density = 0.05;
+    DomainSpec d;
+    d.size = {30, 30, 30};
+    d.cells = {4, 4, 4};
+    spec.domain = d;
+    ThermostatSpec th;
+    th.kind = ThermostatKind::white_noise;
+    th.exact_energy = true;
+    SpeciesThermostat s;
+    s.drive.value = {0.2};
+    s.rotational_share = 0.2;
+    th.species = {s};
+    spec.thermostat = th;
+    expect_checkpoints_are_exact(spec, 0.35, 12);
+}
+
 TEST(ReplicaCheckpoints, StopSavesTheStateAndReturnsStopped) {
     for (const RunSpec& spec : {cooling_spec(), shear_spec()}) {
         const Outcome whole = run(spec);

@@ -12,6 +12,7 @@
 #include "roughgas/observables/moments.hpp"
 
 #include "test_stats.hpp"
+#include "thermostat_specs.hpp"
 
 #include <gtest/gtest.h>
 
@@ -25,7 +26,10 @@ namespace roughgas {
 namespace {
 
 using test::MeanErr;
+using test::grain;
+using test::langevin;
 using test::mean_err;
+using test::white_noise;
 
 constexpr std::int64_t forever = std::numeric_limits<std::int64_t>::max();
 
@@ -62,36 +66,6 @@ template <class E> std::vector<std::pair<Vec3, Vec3>> momenta(const E& e) {
         p.push_back({P, L});
     }
     return p;
-}
-
-SpeciesSpec grain(double T = 1, double T_rot = 1, double mass = 1) {
-    SpeciesSpec s; // R = 0.5 (sigma = 1), q = 0.4
-    s.mass = mass;
-    s.temperature = T;
-    s.rotational_temperature = T_rot;
-    return s;
-}
-
-ThermostatSpec white_noise(double strength, double share, std::size_t species = 1, bool exact = false) {
-    ThermostatSpec t;
-    t.kind = ThermostatKind::white_noise;
-    t.exact_energy = exact;
-    SpeciesThermostat s;
-    s.drive.value = {strength};
-    s.rotational_share = share;
-    t.species.assign(species, s);
-    return t;
-}
-
-ThermostatSpec langevin(double T_b, double gamma, double gamma_rot, std::size_t species = 1) {
-    ThermostatSpec t;
-    t.kind = ThermostatKind::langevin;
-    SpeciesThermostat s;
-    s.drive.value = {T_b};
-    s.friction = gamma;
-    s.rotational_friction = gamma_rot;
-    t.species.assign(species, s);
-    return t;
 }
 
 TEST(ZeroSumKicks, DrawsSumToTheTotalAndHaveTheConditionedLaw) {

@@ -1011,23 +1011,6 @@ class Engine {
     // outputs, combined in chunk order afterwards, so the results do not depend on the threads).
     template <class F> void for_chunks(std::size_t C, F&& f) { team_->for_each(C, f); }
 
-    // Per species, the current step's kicks: what they do, the bridge's scales, the exact-energy
-    // factors, the chunks' sums.
-    struct StepKick {
-        SpeciesKick kick;
-        double scale_v = 0, scale_w = 0, lambda_v = 1, lambda_w = 1;
-        std::vector<Vec3> sums_v, sums_w;
-    };
-    // What a step's kicks would inject into a chunk's grains: A = sum m dv^2/2, B = sum m v.dv (and the
-    // same for the spins with I).
-    struct KickEnergy {
-        double A_v = 0, B_v = 0, A_w = 0, B_w = 0;
-        KickEnergy& operator+=(const KickEnergy& o) {
-            A_v += o.A_v, B_v += o.B_v, A_w += o.A_w, B_w += o.B_w;
-            return *this;
-        }
-    };
-
     // The thermostat's kicks of the step starting now (see "Thermostat"): over [t_kick_, t0 + L/2], L the
     // step length at the last step start's collision frequency (the initial state's at the first).
     // Returns whether any grain is kicked.
@@ -1056,35 +1039,28 @@ class Engine {
         return any;
     }
 
+    // Where species s's kicks of this step come from (dsmc/thermostat.hpp).
+    KickSource kick_source(std::size_t s) const {
+        const SpeciesBlock& sp = species_[s];
+        return KickSource{opt_.seed, opt_.replica, static_cast<std::uint64_t>(c_.steps), s, sp.count,
+                          sp.grain.mass, sp.moment_of_inertia()};
+    }
+
     // Species s's kicks of this step in C chunks of `chunk` grains: the bridge's scales, the chunks'
-    // sums (dsmc/thermostat.hpp) and, for exact energy, the factors on the kicks (a first pass that
-    // draws them without applying them).
+    // sums and, for exact energy, the factors on the kicks (a first pass that draws them without
+    // applying them; prepare_step_kick, dsmc/thermostat.hpp).
     void prepare_kicks(std::size_t s, std::size_t chunk, std::size_t C, StepKick& k) {
         const std::size_t n_s = species_[s].count;
-        k.scale_v = bridge_scale(k.kick.var_v, n_s);
-        k.scale_w = bridge_scale(k.kick.var_w, n_s);
-        k.lambda_v = k.lambda_w = 1;
         std::vector<std::size_t> sizes(C);
         for (std::size_t ch = 0; ch < C; ++ch)
             sizes[ch] = std::min(chunk, n_s - ch * chunk);
-        CollisionRng rng = make_collision_stream(kick_stream_key(opt_.seed, opt_.replica,
-                                                                 static_cast<std::uint64_t>(c_.steps), s, -1));
-        k.sums_v = chunk_sums(sizes, k.scale_v, rng);
-        k.sums_w = chunk_sums(sizes, k.scale_w, rng);
-        if (!thermostat_->exact_energy)
-            return;
-        std::vector<KickEnergy> parts(C);
-        for_chunks(C, [&](std::size_t ch) {
-            const std::size_t lo = species_[s].offset + ch * chunk;
-            kick_chunk(s, ch, lo, std::min(lo + chunk, species_[s].offset + n_s), k, &parts[ch]);
-        });
-        KickEnergy e;
-        for (const KickEnergy& p : parts) // in chunk order: independent of the threads
-            e += p;
-        const SpeciesBlock& sp = species_[s];
-        const double N = static_cast<double>(n_s);
-        k.lambda_v = exact_energy_factor(e.A_v, e.B_v, 1.5 * N * sp.grain.mass * k.kick.var_v);
-        k.lambda_w = exact_energy_factor(e.A_w, e.B_w, 1.5 * N * sp.moment_of_inertia() * k.kick.var_w);
+        prepare_step_kick(
+            kick_source(s), sizes, thermostat_->exact_energy, k,
+            [&](std::size_t chunks, auto&& f) { for_chunks(chunks, f); },
+            [&](std::size_t ch, KickEnergy* e) {
+                const std::size_t lo = species_[s].offset + ch * chunk;
+                kick_chunk(s, ch, lo, std::min(lo + chunk, species_[s].offset + n_s), k, e);
+            });
     }
 
     // Species s's kicks in chunk ch (grains lo .. hi - 1), from the chunk's own stream: applied
@@ -1093,32 +1069,10 @@ class Engine {
     // contracted into FMAs differently (the exact-energy sums, and with them the kicks, differed in
     // their last bits between one and two threads; tests/dsmc/thermostat_test.cpp).
     [[gnu::noinline]] void kick_chunk(std::size_t s, std::size_t ch, std::size_t lo, std::size_t hi, const StepKick& k,
-                    KickEnergy* energy) {
-        CollisionRng rng = make_collision_stream(kick_stream_key(
-            opt_.seed, opt_.replica, static_cast<std::uint64_t>(c_.steps), s, static_cast<long>(ch)));
-        GaussianBridge dv(hi - lo, k.sums_v[ch], k.scale_v), dw(hi - lo, k.sums_w[ch], k.scale_w);
-        const bool spins = k.kick.var_w > 0 || k.kick.decay_w != 1;
-        const double m = species_[s].grain.mass, I = species_[s].moment_of_inertia();
-        for (std::size_t i = lo; i < hi; ++i) {
-            const Vec3 kv = dv.next(rng);
-            Vec3& v = store_.v(i);
-            if (energy) {
-                energy->A_v += 0.5 * m * norm2(kv);
-                energy->B_v += m * dot(v, kv);
-            } else {
-                v = k.kick.decay_v * v + k.lambda_v * kv;
-            }
-            if (!spins)
-                continue;
-            const Vec3 kw = dw.next(rng);
-            Vec3& w = store_.w(i);
-            if (energy) {
-                energy->A_w += 0.5 * I * norm2(kw);
-                energy->B_w += I * dot(w, kw);
-            } else {
-                w = k.kick.decay_w * w + k.lambda_w * kw;
-            }
-        }
+                                      KickEnergy* energy) {
+        kick_grains(
+            kick_source(s), ch, hi - lo, k, [&](std::size_t q) -> Vec3& { return store_.v(lo + q); },
+            [&](std::size_t q) -> Vec3& { return store_.w(lo + q); }, energy);
     }
 
     // Refreshes the partition, the classes, bounds and frame, sets the step length, and starts the

@@ -51,6 +51,19 @@
 // gather them into store order (angular_velocities()), so every output is the same, bit for bit,
 // as if the spins had moved with their grains.
 //
+// Thermostat (set_thermostat; dsmc/thermostat.hpp): a uniformly heated gas. Each step starts with
+// the kicks, in the flight's pass over the grains: each chunk of the flight (65536 grains of one
+// species) kicks its grains' velocities (and spins) before flying them, so the kicks cost no pass of
+// their own (with exact energy, one pass more that sums what the kicks would inject). The kicks of
+// the step starting at t0 cover [kicked_until(), t0 + dt/2], as in the homogeneous engine: half a step
+// ahead at the step's start, half a step behind at its end. The law, the per-species zero-sum bridge
+// over the chunks and the streams (seed, thermostat, replica, step, species and chunk) are the
+// homogeneous engine's, with the flight's chunks: fixed by the species' grain counts, so the kicks
+// depend neither on the threads nor on the cells. A kick changes velocities and spins only: a heated
+// box keeps its positions, walls and gravity; each species' kicks of a step sum to zero momentum, so
+// they never push the gas, walls or not. A sheared box (Lees-Edwards) takes no thermostat: uniform shear flow
+// heats the gas itself.
+//
 // Compiled twice: `General` = false for a periodic box without gravity (a flight that only adds and
 // wraps), true for walls or gravity (the exact crossing times, the walls' random emission from the
 // stream (seed, wall_emission, replica, step, chunk) and their momentum and energy tallies).
@@ -69,6 +82,7 @@
 #include "roughgas/dsmc/init.hpp"
 #include "roughgas/dsmc/run_spec.hpp"
 #include "roughgas/dsmc/species.hpp"
+#include "roughgas/dsmc/thermostat.hpp"
 #include "roughgas/observables/moments.hpp"
 #include "roughgas/observables/profiles.hpp"
 
@@ -79,6 +93,7 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -262,9 +277,25 @@ template <class Policy, bool General = false> class SpatialEngine {
     Vec3& v(std::size_t i) { return v_[i]; }
     Vec3& w(std::size_t i) { return spin(i); }
 
-    // One step of length dt: flight, sort, collisions. `obs(record, pair_type)` sees every collision
-    // (ForkableObserver of dsmc/engine.hpp: a copy per work unit, merged in unit order).
+    // The thermostat that drives the gas (see "Thermostat"): set before the first step, and before
+    // restore() (its state holds the time the kicks reached).
+    void set_thermostat(ThermostatSpec th) {
+        if (th.species.size() != blocks_.size())
+            throw std::invalid_argument("SpatialEngine: one thermostat entry per species");
+        if (domain_.lees_edwards())
+            throw std::invalid_argument("SpatialEngine: a sheared box (Lees-Edwards) takes no thermostat: uniform "
+                                        "shear flow heats the gas itself");
+        thermostat_ = std::move(th);
+        kicks_.assign(blocks_.size(), {});
+    }
+    const std::optional<ThermostatSpec>& thermostat() const { return thermostat_; }
+    // The time up to which the thermostat's kicks have been given (see "Thermostat").
+    double kicked_until() const { return t_kick_; }
+
+    // One step of length dt: kicks and flight, sort, collisions. `obs(record, pair_type)` sees every
+    // collision (ForkableObserver of dsmc/engine.hpp: a copy per work unit, merged in unit order).
     template <class Observer> void step(double dt, Observer& obs) {
+        plan_kicks(dt);
         if constexpr (General)
             stream_general(dt);
         else
@@ -504,9 +535,9 @@ template <class Policy, bool General = false> class SpatialEngine {
     }
 
     // The complete state (positions, velocities, spins, time, step and collision counts, with
-    // nearest partners the identities and last partners): a run
-    // continued from it draws the same numbers as one without the stop (the streams are keyed by
-    // the step).
+    // nearest partners the identities and last partners, with a thermostat the time its kicks
+    // reached): a run continued from it draws the same numbers as one without the stop (the streams
+    // are keyed by the step).
     void save(ByteWriter& out) const {
         for (int a = 0; a < 3; ++a) { // positions, velocities, spins (in store order)
             out.u64(particles_);
@@ -528,6 +559,8 @@ template <class Policy, bool General = false> class SpatialEngine {
             for (const std::vector<std::uint32_t>* a : {&id_, &last_})
                 for (std::uint32_t q : *a)
                     out.put(q);
+        if (thermostat_)
+            out.f64(t_kick_);
     }
     void restore(ByteReader& in) {
         // Smooth grains' spins arrive in store order: into x2_ until the identities are known.
@@ -556,6 +589,8 @@ template <class Policy, bool General = false> class SpatialEngine {
             for (std::size_t i = 0; i < particles_; ++i)
                 id_[i] = static_cast<std::uint32_t>(i);
         }
+        if (thermostat_)
+            t_kick_ = in.f64();
         if constexpr (!rough)
             for (std::size_t i = 0; i < particles_; ++i)
                 w_[id_[i]] = x2_[i];
@@ -649,13 +684,94 @@ template <class Policy, bool General = false> class SpatialEngine {
         return k;
     }
 
-    // Free flight, wrapped into the box. A pass of its own: folded into the sort's first pass, which
-    // reads every position too, the step is no faster (N = 1e6, one thread).
+    // The flight's chunks: flight_chunk grains of one species (the last of each species shorter),
+    // species after species; chunk ch of species s is the species' ch-th.
+    static constexpr std::size_t flight_chunk = 65536;
+    struct FlightChunk {
+        std::size_t species, index, first, last;
+    };
+    std::vector<FlightChunk> flight_chunks() const {
+        std::vector<FlightChunk> chunks;
+        for (std::size_t s = 0; s < blocks_.size(); ++s)
+            for (std::size_t f = blocks_[s].offset, ch = 0; f < blocks_[s].offset + blocks_[s].count;
+                 f += flight_chunk, ++ch)
+                chunks.push_back({s, ch, f, std::min(f + flight_chunk, blocks_[s].offset + blocks_[s].count)});
+        return chunks;
+    }
+
+    // The thermostat's kicks of the step [t_, t_ + dt] (see "Thermostat"): over [t_kick_, t_ + dt/2],
+    // per species what they do, the bridge's scales, the chunks' sums and, with exact energy, the
+    // factors on the kicks (a pass over the grains that sums what the kicks would inject). kicking_
+    // says whether any grain is kicked.
+    void plan_kicks(double dt) {
+        kicking_ = false;
+        if (!thermostat_)
+            return;
+        const double t1 = t_ + 0.5 * dt;
+        if (!(t1 > t_kick_))
+            return;
+        for (std::size_t s = 0; s < blocks_.size(); ++s) {
+            const SpeciesBlock& b = blocks_[s];
+            kicks_[s].kick = species_kick(thermostat_->kind, thermostat_->species[s], b.grain.mass,
+                                          b.moment_of_inertia(), t_kick_, t1);
+            kicking_ |= kicks_[s].kick.moves();
+        }
+        t_kick_ = t1;
+        if (!kicking_)
+            return;
+        const std::vector<FlightChunk> chunks = flight_chunks();
+        for (std::size_t s = 0; s < blocks_.size(); ++s) {
+            if (!kicks_[s].kick.moves())
+                continue;
+            std::vector<std::size_t> sizes;
+            std::size_t first = 0; // the species' first chunk
+            for (std::size_t u = 0; u < chunks.size(); ++u)
+                if (chunks[u].species == s) {
+                    if (sizes.empty())
+                        first = u;
+                    sizes.push_back(chunks[u].last - chunks[u].first);
+                }
+            prepare_step_kick(
+                kick_source(s), sizes, thermostat_->exact_energy, kicks_[s],
+                [&](std::size_t C, auto&& f) { team_->for_each(C, f); },
+                [&](std::size_t ch, KickEnergy* e) {
+                    const FlightChunk& c = chunks[first + ch];
+                    kick_chunk(s, ch, c.first, c.last, kicks_[s], e);
+                });
+        }
+    }
+
+    // Where species s's kicks of this step come from (dsmc/thermostat.hpp).
+    KickSource kick_source(std::size_t s) const {
+        const SpeciesBlock& b = blocks_[s];
+        return KickSource{seed_, replica_, static_cast<std::uint64_t>(steps_), s, b.count, b.grain.mass,
+                          b.moment_of_inertia()};
+    }
+
+    // Species s's kicks in its chunk ch (grains lo .. hi - 1): applied (energy == nullptr) or only
+    // summed into *energy. Never inlined: the team runs chunks inline on one thread and through its
+    // workers on several, and inlined copies may be contracted into FMAs differently (the
+    // homogeneous engine's kick_chunk says what that broke).
+    [[gnu::noinline]] void kick_chunk(std::size_t s, std::size_t ch, std::size_t lo, std::size_t hi, const StepKick& k,
+                                      KickEnergy* energy) {
+        kick_grains(
+            kick_source(s), ch, hi - lo, k, [&](std::size_t q) -> Vec3& { return v_[lo + q]; },
+            [&](std::size_t q) -> Vec3& { return spin(lo + q); }, energy);
+    }
+
+    // The kicks of a flight chunk, if the step has any for its species.
+    void kick(const FlightChunk& c) {
+        if (kicking_ && kicks_[c.species].kick.moves())
+            kick_chunk(c.species, c.index, c.first, c.last, kicks_[c.species], nullptr);
+    }
+
+    // Free flight, wrapped into the box, after the chunk's kicks. A pass of its own: folded into the
+    // sort's first pass, which reads every position too, the step is no faster (N = 1e6, one thread).
     void stream(double dt) {
-        const std::size_t chunk = 65536, units = (particles_ + chunk - 1) / chunk;
-        team_->for_each(units, [&](std::size_t u) {
-            const std::size_t end = std::min(particles_, (u + 1) * chunk);
-            for (std::size_t i = u * chunk; i < end; ++i) {
+        const std::vector<FlightChunk> chunks = flight_chunks();
+        team_->for_each(chunks.size(), [&](std::size_t u) {
+            kick(chunks[u]);
+            for (std::size_t i = chunks[u].first; i < chunks[u].last; ++i) {
                 double* q[3] = {&x_[i].x, &x_[i].y, &x_[i].z};
                 const double dq[3] = {v_[i].x * dt, v_[i].y * dt, v_[i].z * dt};
                 for (int a = 0; a < 3; ++a) {
@@ -706,21 +822,15 @@ template <class Policy, bool General = false> class SpatialEngine {
         return best;
     }
 
-    // The flight with walls or gravity (the header's step 1): chunks of one species' grains, each
-    // with its stream and wall tallies, merged in chunk order.
+    // The flight with walls or gravity (the header's step 1), after the chunk's kicks: chunks of one
+    // species' grains, each with its stream and wall tallies, merged in chunk order.
     void stream_general(double dt) {
-        struct Chunk {
-            std::size_t species, first, last;
-        };
-        std::vector<Chunk> chunks;
-        const std::size_t chunk = 65536;
-        for (std::size_t s = 0; s < blocks_.size(); ++s)
-            for (std::size_t f = blocks_[s].offset; f < blocks_[s].offset + blocks_[s].count; f += chunk)
-                chunks.push_back({s, f, std::min(f + chunk, blocks_[s].offset + blocks_[s].count)});
+        const std::vector<FlightChunk> chunks = flight_chunks();
         // Each chunk's tallies in cache lines of their own (written at every wall hit; core/own_lines.hpp).
         std::vector<OwnLines<WallFluxes>> flux(chunks.size());
         team_->for_each(chunks.size(), [&](std::size_t u) {
             CollisionRng rng = make_collision_stream(StreamKey{seed_, Stream::wall_emission, replica_, static_cast<std::uint64_t>(steps_), u});
+            kick(chunks[u]);
             for (std::size_t i = chunks[u].first; i < chunks[u].last; ++i)
                 fly(i, chunks[u].species, dt, rng, flux[u].value);
         });
@@ -1099,6 +1209,12 @@ template <class Policy, bool General = false> class SpatialEngine {
     std::array<double, 3> cells_per_length_{};
     double t_ = 0;
     std::int64_t steps_ = 0, collisions_ = 0;
+    // The thermostat (unset: no drive), the time its kicks reached, per species the current step's
+    // kicks, and whether the current step kicks any grain.
+    std::optional<ThermostatSpec> thermostat_;
+    double t_kick_ = 0;
+    std::vector<StepKick> kicks_;
+    bool kicking_ = false;
 };
 
 } // namespace roughgas

@@ -17,15 +17,15 @@
 // Both kick variances integrate the drive's schedule exactly over the stretch.
 //
 // Zero momentum. The kicks of a species in one stretch are N_s independent Gaussian vectors
-// conditioned on summing to zero, drawn in one pass without storing them: a Gaussian bridge. N iid
-// N(0, s^2) numbers conditioned on their sum S have the sequential law
-//   x_1 ~ N(S/N, s^2 (N - 1)/N), then the remaining N - 1 conditioned on S - x_1, ..., x_N = the rest,
-// so the last kick closes the sum to round-off. The species' grains are split into the engine's
-// fixed chunks: the chunk sums are drawn first by the same law (chunk c of n_c grains: N(R n_c/M,
-// s^2 n_c (M - n_c)/M) with R, M the sum and grains left), then each chunk bridges to its sum,
-// chunks in parallel, each from its own stream. Every kick then has the law of a kick minus the
-// species' mean kick; s^2 = sigma^2 N_s/(N_s - 1) makes each grain's kick variance exactly the
-// sigma^2 above (and the expected injected energy exactly the intended one).
+// conditioned on summing to zero. N iid N(0, s^2) numbers conditioned on their sum S have the
+// sequential law x_1 ~ N(S/N, s^2 (N - 1)/N), then the remaining N - 1 conditioned on S - x_1, ...
+// (a Gaussian bridge). The species' grains are split into the engine's fixed chunks: the chunk sums
+// are drawn first by that law (chunk c of n_c grains: N(R n_c/M, s^2 n_c (M - n_c)/M) with R, M the
+// sum and grains left), then each chunk's kicks as n_c iid Gaussians less their mean plus the chunk's
+// sum over n_c (the same conditioned law, without a division or square root per grain), chunks in
+// parallel, each from its own stream. Every kick then has the law of a kick minus the species' mean
+// kick; s^2 = sigma^2 N_s/(N_s - 1) makes each grain's kick variance exactly the sigma^2 above (and
+// the expected injected energy exactly the intended one).
 //
 // Exact energy (white noise, optional). The kicks are generated twice from the same streams: the
 // first time to sum B = m sum v.dv and A = m sum dv^2/2 (likewise for the spins), the second to
@@ -81,36 +81,9 @@ inline StreamKey kick_stream_key(std::uint64_t seed, std::uint64_t replica, std:
                      (static_cast<std::uint64_t>(species) << 32) | static_cast<std::uint64_t>(chunk + 1)};
 }
 
-// A zero-sum Gaussian bridge over n draws of the vector sum `total` (the law above, per component,
-// scale s): next() gives the draws in order, the last one closing the sum.
-class GaussianBridge {
-  public:
-    GaussianBridge(std::size_t n, Vec3 total, double s) : left_(n), rest_(total), s_(s) {}
-    template <class Rng> Vec3 next(Rng& rng) {
-        if (left_ <= 1) {
-            left_ = 0;
-            const Vec3 x = rest_;
-            rest_ = Vec3{};
-            return x;
-        }
-        const double m = static_cast<double>(left_), inv = 1.0 / m; // one division, off the chain through rest_
-        const double sd = s_ * std::sqrt((m - 1) * inv);
-        const Vec3 x = inv * rest_ + Vec3{sd * normal_(rng), sd * normal_(rng), sd * normal_(rng)};
-        rest_ -= x;
-        --left_;
-        return x;
-    }
-
-  private:
-    std::size_t left_;
-    Vec3 rest_;
-    double s_;
-    ZigguratNormal normal_;
-};
-
 // A chunk's n zero-sum kicks of scale s with the vector sum `total`, into out[0 .. n): n iid
 // Gaussians z_i (scale s per component) less their mean plus total/n. Given their sum, iid Gaussians
-// are z_i - mean(z) + sum/n (Gaussian conditioning), so this is the law of the bridge above in two
+// are z_i - mean(z) + sum/n (Gaussian conditioning), so this is the law of the sequential bridge in two
 // loops over a buffer in cache, without a division or a square root per grain. The sum is `total`
 // to round-off.
 template <class Rng> void draw_zero_sum(std::size_t n, Vec3 total, double s, Rng& rng, std::vector<Vec3>& out) {
@@ -166,6 +139,94 @@ inline double exact_energy_factor(double A, double B, double Q) {
         return 1.0;
     const double d = std::sqrt(B * B + 4 * A * Q);
     return B >= 0 ? 2 * Q / (B + d) : (d - B) / (2 * A);
+}
+
+// Per species, one step's kicks as an engine applies them: what they do, the bridge's scales, the
+// exact-energy factors, the chunks' sums.
+struct StepKick {
+    SpeciesKick kick;
+    double scale_v = 0, scale_w = 0, lambda_v = 1, lambda_w = 1;
+    std::vector<Vec3> sums_v, sums_w;
+};
+// What a step's kicks would inject into a chunk's grains: A = sum m dv^2/2, B = sum m v.dv (and the
+// same for the spins with I).
+struct KickEnergy {
+    double A_v = 0, B_v = 0, A_w = 0, B_w = 0;
+    KickEnergy& operator+=(const KickEnergy& o) {
+        A_v += o.A_v, B_v += o.B_v, A_w += o.A_w, B_w += o.B_w;
+        return *this;
+    }
+};
+
+// Where one step's kicks of a species come from: the streams' key (seed, replica, step, species)
+// and the species' grains (count n, mass m, moment of inertia I).
+struct KickSource {
+    std::uint64_t seed = 0, replica = 0, step = 0;
+    std::size_t species = 0, n = 0;
+    double m = 1, I = 1;
+};
+
+// Chunk ch's kicks (its grains, in order, are v(0 .. count - 1) and w(..)), from the chunk's own
+// stream: applied (energy == nullptr) or only summed into *energy. The engines call it from a
+// function of theirs that is never inlined (see Engine::kick_chunk).
+template <class V, class W>
+void kick_grains(const KickSource& src, std::size_t ch, std::size_t count, const StepKick& k, V&& v_of, W&& w_of,
+                 KickEnergy* energy) {
+    CollisionRng rng =
+        make_collision_stream(kick_stream_key(src.seed, src.replica, src.step, src.species, static_cast<long>(ch)));
+    // The chunk's kicks into this thread's buffers (reused from chunk to chunk: no allocation per step).
+    thread_local std::vector<Vec3> dv, dw;
+    draw_zero_sum(count, k.sums_v[ch], k.scale_v, rng, dv);
+    const bool spins = k.kick.var_w > 0 || k.kick.decay_w != 1;
+    if (spins)
+        draw_zero_sum(count, k.sums_w[ch], k.scale_w, rng, dw);
+    const double m = src.m, I = src.I;
+    for (std::size_t q = 0; q < count; ++q) {
+        const Vec3& kv = dv[q];
+        Vec3& v = v_of(q);
+        if (energy) {
+            energy->A_v += 0.5 * m * norm2(kv);
+            energy->B_v += m * dot(v, kv);
+        } else {
+            v = k.kick.decay_v * v + k.lambda_v * kv;
+        }
+        if (!spins)
+            continue;
+        const Vec3& kw = dw[q];
+        Vec3& w = w_of(q);
+        if (energy) {
+            energy->A_w += 0.5 * I * norm2(kw);
+            energy->B_w += I * dot(w, kw);
+        } else {
+            w = k.kick.decay_w * w + k.lambda_w * kw;
+        }
+    }
+}
+
+// A species' kicks of one step over its chunks of sizes[ch] grains: the bridge's scales, the chunks'
+// sums and, with `exact_energy`, the factors on the kicks. `sum_chunk(ch, energy)` sums chunk ch's
+// kicks (kick_grains with energy set) and `for_chunks(C, f)` runs f over the chunks, on any threads:
+// the chunks' sums are combined in chunk order, so the factors do not depend on the threads.
+template <class ForChunks, class SumChunk>
+void prepare_step_kick(const KickSource& src, const std::vector<std::size_t>& sizes, bool exact_energy, StepKick& k,
+                       ForChunks&& for_chunks, SumChunk&& sum_chunk) {
+    k.scale_v = bridge_scale(k.kick.var_v, src.n);
+    k.scale_w = bridge_scale(k.kick.var_w, src.n);
+    k.lambda_v = k.lambda_w = 1;
+    CollisionRng rng = make_collision_stream(kick_stream_key(src.seed, src.replica, src.step, src.species, -1));
+    k.sums_v = chunk_sums(sizes, k.scale_v, rng);
+    k.sums_w = chunk_sums(sizes, k.scale_w, rng);
+    if (!exact_energy)
+        return;
+    const std::size_t C = sizes.size();
+    std::vector<KickEnergy> parts(C);
+    for_chunks(C, [&](std::size_t ch) { sum_chunk(ch, &parts[ch]); });
+    KickEnergy e;
+    for (const KickEnergy& p : parts) // in chunk order: independent of the threads
+        e += p;
+    const double N = static_cast<double>(src.n);
+    k.lambda_v = exact_energy_factor(e.A_v, e.B_v, 1.5 * N * src.m * k.kick.var_v);
+    k.lambda_w = exact_energy_factor(e.A_w, e.B_w, 1.5 * N * src.I * k.kick.var_w);
 }
 
 } // namespace roughgas

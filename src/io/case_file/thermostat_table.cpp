@@ -218,11 +218,6 @@ void check_thermostat(BuildContext& ctx, const CaseConfig& c) {
     if (c.run.kind == RunKind::shear)
         ctx.add("thermostat", "[thermostat] with run.kind = \"shear\": a thermostat drives a gas that is not "
                               "sheared (run.kind = \"cooling\"); uniform shear flow heats the gas itself");
-    // The one refusal of boxes: a thermostat acts on homogeneous runs.
-    if (c.domain)
-        ctx.add("thermostat",
-                "[thermostat] with [domain]: a thermostat acts on homogeneous runs (drop [domain] "
-                "for a driven homogeneous gas)");
     const toml::table& root = ctx.root();
     check_kind_keys(ctx, root["thermostat"].as_table(), "thermostat", t.kind);
     if (const toml::array* a = root["species_thermostat"].as_array())
