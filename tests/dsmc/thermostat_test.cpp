@@ -78,7 +78,9 @@ TEST(ZeroSumKicks, DrawsSumToTheTotalAndHaveTheConditionedLaw) {
     double sum2[n] = {}, cov01 = 0, cov24 = 0, worst_sum = 0;
     std::vector<Vec3> x;
     for (std::size_t t = 0; t < trials; ++t) {
-        draw_zero_sum(n, Vec3{}, s, rng, x);
+        const Vec3 shift = draw_zero_sum(n, Vec3{}, s, rng, x);
+        for (Vec3& y : x)
+            y += shift;
         Vec3 total{};
         for (std::size_t k = 0; k < n; ++k) {
             total += x[k];
@@ -95,10 +97,10 @@ TEST(ZeroSumKicks, DrawsSumToTheTotalAndHaveTheConditionedLaw) {
     for (double c : {cov01, cov24})
         EXPECT_NEAR(c / trials, -s * s / n, 5 * s * s / std::sqrt(static_cast<double>(trials)));
     // A given total: the draws' sum is it, their mean total/n.
-    draw_zero_sum(7, Vec3{7, -14, 3.5}, s, rng, x);
+    const Vec3 shift = draw_zero_sum(7, Vec3{7, -14, 3.5}, s, rng, x);
     Vec3 total{};
     for (const Vec3& y : x)
-        total += y;
+        total += y + shift;
     EXPECT_LT(norm(total - Vec3{7, -14, 3.5}), 1e-13);
 }
 

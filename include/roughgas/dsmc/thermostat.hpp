@@ -81,12 +81,12 @@ inline StreamKey kick_stream_key(std::uint64_t seed, std::uint64_t replica, std:
                      (static_cast<std::uint64_t>(species) << 32) | static_cast<std::uint64_t>(chunk + 1)};
 }
 
-// A chunk's n zero-sum kicks of scale s with the vector sum `total`, into out[0 .. n): n iid
-// Gaussians z_i (scale s per component) less their mean plus total/n. Given their sum, iid Gaussians
-// are z_i - mean(z) + sum/n (Gaussian conditioning), so this is the law of the sequential bridge in two
-// loops over a buffer in cache, without a division or a square root per grain. The sum is `total`
-// to round-off.
-template <class Rng> void draw_zero_sum(std::size_t n, Vec3 total, double s, Rng& rng, std::vector<Vec3>& out) {
+// A chunk's n zero-sum kicks of scale s with the vector sum `total`: out[i] + the returned shift,
+// i < n. n iid Gaussians z_i (scale s per component) less their mean plus total/n: given their sum,
+// iid Gaussians are z_i - mean(z) + sum/n (Gaussian conditioning), so this is the law of the
+// sequential bridge without a division or a square root per grain. The kicks sum to `total` to
+// round-off. The shift is returned rather than added, so that the pass applying the kicks adds it.
+template <class Rng> Vec3 draw_zero_sum(std::size_t n, Vec3 total, double s, Rng& rng, std::vector<Vec3>& out) {
     const ZigguratNormal normal;
     out.resize(n);
     Vec3 sum{};
@@ -95,11 +95,7 @@ template <class Rng> void draw_zero_sum(std::size_t n, Vec3 total, double s, Rng
         out[i] = z;
         sum += z;
     }
-    if (n == 0)
-        return;
-    const Vec3 shift = (1.0 / static_cast<double>(n)) * (total - sum);
-    for (Vec3& x : out)
-        x += shift;
+    return n > 0 ? (1.0 / static_cast<double>(n)) * (total - sum) : Vec3{};
 }
 
 // The sums of `chunks` chunks of sizes sizes[c] (summing to n) of n zero-sum draws of scale s.
@@ -176,13 +172,12 @@ void kick_grains(const KickSource& src, std::size_t ch, std::size_t count, const
         make_collision_stream(kick_stream_key(src.seed, src.replica, src.step, src.species, static_cast<long>(ch)));
     // The chunk's kicks into this thread's buffers (reused from chunk to chunk: no allocation per step).
     thread_local std::vector<Vec3> dv, dw;
-    draw_zero_sum(count, k.sums_v[ch], k.scale_v, rng, dv);
+    const Vec3 shift_v = draw_zero_sum(count, k.sums_v[ch], k.scale_v, rng, dv);
     const bool spins = k.kick.var_w > 0 || k.kick.decay_w != 1;
-    if (spins)
-        draw_zero_sum(count, k.sums_w[ch], k.scale_w, rng, dw);
+    const Vec3 shift_w = spins ? draw_zero_sum(count, k.sums_w[ch], k.scale_w, rng, dw) : Vec3{};
     const double m = src.m, I = src.I;
     for (std::size_t q = 0; q < count; ++q) {
-        const Vec3& kv = dv[q];
+        const Vec3 kv = dv[q] + shift_v;
         Vec3& v = v_of(q);
         if (energy) {
             energy->A_v += 0.5 * m * norm2(kv);
@@ -192,7 +187,7 @@ void kick_grains(const KickSource& src, std::size_t ch, std::size_t count, const
         }
         if (!spins)
             continue;
-        const Vec3& kw = dw[q];
+        const Vec3 kw = dw[q] + shift_w;
         Vec3& w = w_of(q);
         if (energy) {
             energy->A_w += 0.5 * I * norm2(kw);
