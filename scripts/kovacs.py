@@ -31,7 +31,6 @@ stands out of its error (height > 2 errors). Exit 2 for bad usage: a missing mom
 without a thermostat schedule, fewer than ten rows after t_w, no T_tr_theory column.
 """
 import argparse
-import glob
 import os
 import sys
 
@@ -42,7 +41,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from roughgas_csv import read_csv, read_header  # noqa: E402
+from roughgas_csv import read_csv, read_header, replica_column  # noqa: E402
 from atomic_output import save_figure  # noqa: E402
 
 
@@ -68,17 +67,6 @@ def measure(t, T, tw, window, fit=True):
     x = -c1 / (2 * c2) if c2 != 0 else 0.0
     x = min(max(x, -window / 2), window / 2)
     return T_w, T_inf, float(c0 + c1 * x + c2 * x * x - T_inf), float(ta[k] + x - tw)
-
-
-def replica_curves(path, n_rows):
-    files = sorted(glob.glob(os.path.join(os.path.dirname(os.path.abspath(path)), "replicas", "moments_*.csv")))
-    curves = []
-    for f in files:
-        d = read_csv(f)
-        if len(d["T_tr"]) != n_rows:
-            return None
-        curves.append(d["T_tr"])
-    return np.array(curves).T if len(curves) >= 2 else None
 
 
 def main(argv):
@@ -117,7 +105,7 @@ def main(argv):
     late = (t >= tw) & (t >= tw + 0.75 * (t[-1] - tw))
     T_inf_err = float(d["T_tr_err"][late].mean()) if "T_tr_err" in d else None
     h_err = th_err = None
-    reps = replica_curves(path, len(t))
+    reps = replica_column(path, "T_tr", len(t))
     if reps is not None and a.bootstrap > 1:
         rng = np.random.default_rng(a.seed)
         res = np.array([measure(t, reps[:, rng.integers(0, reps.shape[1], reps.shape[1])].mean(axis=1), tw, window)

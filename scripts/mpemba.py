@@ -41,7 +41,6 @@ T_tr at t = 0, runs under different thermostats or of different gases, a case th
 cover (several species, a restitution other than constant).
 """
 import argparse
-import glob
 import math
 import os
 import sys
@@ -55,7 +54,7 @@ from scipy.integrate import solve_ivp  # noqa: E402
 from scipy.optimize import brentq  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from roughgas_csv import read_csv, read_header, species_names  # noqa: E402
+from roughgas_csv import read_csv, read_header, replica_column, species_names  # noqa: E402
 from atomic_output import save_figure  # noqa: E402
 
 COINCIDE = 1e-9  # relative distance within which two rows' t are the same time
@@ -152,18 +151,6 @@ def first_crossing(t, d):
     return t[k - 1] + d[k - 1] * (t[k] - t[k - 1]) / (d[k - 1] - d[k]), k
 
 
-def replica_curves(path, n_rows):
-    """T_tr of each replica (rows x replicas) from DIR/replicas/moments_R.csv, or None."""
-    files = sorted(glob.glob(os.path.join(os.path.dirname(os.path.abspath(path)), "replicas", "moments_*.csv")))
-    curves = []
-    for f in files:
-        d = read_csv(f)
-        if len(d["T_tr"]) != n_rows:
-            return None
-        curves.append(d["T_tr"])
-    return np.array(curves).T if len(curves) >= 2 else None
-
-
 def bootstrap(t, hot, cold, K, seed):
     """t_c over K resamples of the replicas: (crossing times, resamples without a crossing)."""
     rng = np.random.default_rng(seed)
@@ -230,7 +217,7 @@ def main(argv):
     tc, k = first_crossing(t, d)
     tc_err, how = None, ""
     if tc is not None:
-        reps = [replica_curves(p, len(t)) for p in paths]
+        reps = [replica_column(p, "T_tr", len(t)) for p in paths]
         if reps[0] is not None and reps[1] is not None and a.bootstrap > 1:
             tcs, missed = bootstrap(t, reps[0], reps[1], a.bootstrap, a.seed)
             tc_err = float(np.std(tcs, ddof=1)) if len(tcs) > 1 else None
