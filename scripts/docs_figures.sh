@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Redraws the pictures in docs/ from the shipped cases, each with the command named in the doc
-# that shows it (about three minutes on two cores, most of it the ice cases' eps^T tables):
+# that shows it (about five minutes on two cores, most of it the ice cases' eps^T tables and the driven cases):
 #   docs/ice_normal.png        roughgas restitution cases/ice.toml, plot_restitution.py --bridges
 #   docs/fig2c_tangential.png  roughgas restitution cases/ice_fig2c.toml, plot_restitution.py
 #   docs/hcs_mixture.png       roughgas run cases/hcs_mixture.toml, plot.py
+#   docs/mpemba.png            roughgas run cases/mpemba_{prepare_hot,prepare_cold,hot,cold}.toml, mpemba.py
+#   docs/kovacs.png            roughgas run cases/kovacs_rough.toml, kovacs.py
 #   docs/usf_rough.png         roughgas run cases/usf_rough.toml, plot_shear.py
 #   docs/usf_sweep_alpha.png   roughgas sweep of cases/usf_rough.toml over alpha, plot_shear.py --sweep
 #   docs/box_*.png             roughgas run cases/box_{couette,fourier,thermal_walls,heated_bed,usf,shear_mode}.toml,
@@ -45,6 +47,16 @@ cp "$work/ice_fig2c/tangential.png" "$root/docs/fig2c_tangential.png"
 "$roughgas" run "$root/cases/hcs_mixture.toml" --out "$work/hcs_mixture" --force --quiet
 "$py" "$root/scripts/plot.py" "$work/hcs_mixture"
 cp "$work/hcs_mixture/moments.png" "$root/docs/hcs_mixture.png"
+
+for s in hot cold; do
+  "$roughgas" run "$root/cases/mpemba_prepare_$s.toml" --out "$work/mpemba_prepare_$s" --force --quiet
+  "$roughgas" run "$root/cases/mpemba_$s.toml" --out "$work/mpemba_$s" --force --quiet \
+      --set initial.from="$work/mpemba_prepare_$s"
+done
+"$py" "$root/scripts/mpemba.py" "$work/mpemba_hot" "$work/mpemba_cold" --out "$root/docs/mpemba.png"
+
+"$roughgas" run "$root/cases/kovacs_rough.toml" --out "$work/kovacs_rough" --force --quiet
+"$py" "$root/scripts/kovacs.py" "$work/kovacs_rough" --out "$root/docs/kovacs.png"
 
 "$roughgas" run "$root/cases/usf_rough.toml" --out "$work/usf_rough" --force --quiet
 "$py" "$root/scripts/plot_shear.py" "$work/usf_rough"

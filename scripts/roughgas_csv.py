@@ -8,11 +8,12 @@ with replicas), e.g. the late-time temperature ratio of a mixture:
 --row: the row's index (default -1, the last; 0 is the first). Prints one line per column,
 "NAME = VALUE +- ERROR" (no error without replicas), after the row's coll_per_particle.
 
-As a module: read_csv (the columns), species_names, read_header (the '#' lines: case file, notes,
+As a module: read_csv (the columns), replica_column (one column of every replica of a run), species_names, read_header (the '#' lines: case file, notes,
 resolved case, column units), column_unit (a column's unit in the case's unit system when the header
 states one) and case_summary (the case's key parameters, for a figure's title).
 """
 import argparse
+import glob
 import os
 import re
 import sys
@@ -28,6 +29,20 @@ def read_csv(path):
     names = [n.strip() for n in lines[0].split(",")]
     data = np.array([[float(v) for v in line.split(",")] for line in lines[1:] if line.strip()], ndmin=2)
     return {n: data[:, i] for i, n in enumerate(names)}
+
+
+def replica_column(path, column, n_rows):
+    """`column` of each replica of the run whose moments.csv is `path`, as an array of n_rows rows x
+    replicas, from DIR/replicas/moments_R.csv; None without two such files or when one has another
+    number of rows."""
+    files = glob.glob(os.path.join(os.path.dirname(os.path.abspath(path)), "replicas", "moments_*.csv"))
+    curves = []
+    for f in sorted(files, key=lambda f: int(re.sub(r"\D", "", os.path.basename(f)) or 0)):
+        d = read_csv(f)
+        if column not in d or len(d[column]) != n_rows:
+            return None
+        curves.append(d[column])
+    return np.array(curves).T if len(curves) >= 2 else None
 
 
 def species_names(d):

@@ -39,6 +39,18 @@ StateFile read_state(const fs::path& path) {
     return decode_state(read_checkpoint_bytes(path));
 }
 
+// The species' temperatures of a saved state, as the run's rows define them.
+HcsTemperatures state_temperatures(const StateFile& state, const RunSpec& spec) {
+    const Moments m = compute_moments(column_of(state.grains.v.data(), 0), column_of(state.grains.w.data(), 0),
+                                      species_slices(make_species_blocks(spec.species, spec.particles)));
+    HcsTemperatures T;
+    for (const GroupMoments& g : m.species) {
+        T.T_tr.push_back(g.T_tr);
+        T.T_rot.push_back(g.T_rot);
+    }
+    return T;
+}
+
 // A cooling run from a saved state: the state's temperatures, not the species', set where T_tr/m
 // reaches 1e-300 (case_file/run_table.cpp checks the reach of a run from a Maxwellian at the species'
 // temperatures; an aged state is much colder and reaches it sooner). Replica 0's state stands for
@@ -50,14 +62,7 @@ void check_cooling_reach_from(const StateFile& state, const RunSpec& spec, const
     const std::optional<HcsTheory> theory = hcs_theory(spec);
     if (!theory)
         return; // restitution that depends on the impact speed: the gas cools ever slower
-    // The species' temperatures as the run's rows define them.
-    const Moments m = compute_moments(column_of(state.grains.v.data(), 0), column_of(state.grains.w.data(), 0),
-                                      species_slices(make_species_blocks(spec.species, spec.particles)));
-    HcsTemperatures T;
-    for (const GroupMoments& g : m.species) {
-        T.T_tr.push_back(g.T_tr);
-        T.T_rot.push_back(g.T_rot);
-    }
+    const HcsTemperatures T = state_temperatures(state, spec);
     if (!std::all_of(T.T_tr.begin(), T.T_tr.end(), [](double t) { return t > 0 && std::isfinite(t); }))
         return; // a gas at rest does not cool
     const bool time = spec.clock == Clock::time;
@@ -120,6 +125,17 @@ std::string attach_initial_state(RunSpec& spec, const CaseConfig& cfg, const std
                          fmt::format("initial.mode = \"density\" needs fresh positions, but initial.from = \"{}\" "
                                      "gives them (a box of the same size)",
                                      dir));
+    // A homogeneous run's theory columns (io/moments_csv.cpp) start from the species' temperatures:
+    // those of replica 0's state, where its grains start, not the case's.
+    if (!spec.domain) {
+        const HcsTemperatures T = state_temperatures(first, spec);
+        for (std::size_t i = 0; i < spec.species.size() && i < T.T_tr.size(); ++i) {
+            if (std::isfinite(T.T_tr[i]) && std::isfinite(T.T_rot[i]) && T.T_tr[i] >= 0 && T.T_rot[i] >= 0) {
+                spec.species[i].temperature = T.T_tr[i];
+                spec.species[i].rotational_temperature = T.T_rot[i];
+            }
+        }
+    }
     const std::string d = dir;
     spec.initial_state = [d, files, want](int replica) {
         const fs::path path = state_file_path(d, static_cast<std::uint64_t>(replica) % files);
