@@ -5,9 +5,9 @@
 // the wedges by rejection against exp(-x^2/2). Exact up to the 53-bit resolution of the abscissa.
 //
 // Why not boost::random::normal_distribution: a thermostat draws three to six deviates per grain per
-// step, and Boost's ziggurat took 8.5 ns per deviate with the engines' generator (measured, Zen 4
-// VM), this one about a quarter of that: the difference between a driven run at 0.84 and at over 0.9
-// of the freely cooling run's collisions per second.
+// step, and Boost's ziggurat took 8.5 ns per deviate with the engines' generator, this one about
+// 3 ns (measured, Zen 4 VM): with Boost's, a driven run kept 0.84 of the free gas's collisions per
+// second, with these 0.88-0.90 (docs/performance.md, "Driven gases").
 #include <array>
 #include <bit>
 #include <cmath>
