@@ -6,8 +6,8 @@
 //
 // Why not boost::random::normal_distribution: a thermostat draws three to six deviates per grain per
 // step, and Boost's ziggurat took 8.5 ns per deviate with the engines' generator, this one about
-// 3 ns (measured, Zen 4 VM): with Boost's, a driven run kept 0.84 of the free gas's collisions per
-// second, with these 0.88-0.90 (docs/performance.md, "Driven gases").
+// 3 ns (measured, Zen 4 VM): with Boost's deviates (and a sequential bridge), a driven run kept 0.84
+// of the free gas's collisions per second, with these 0.88-0.90 (docs/performance.md, "Driven gases").
 #include <array>
 #include <bit>
 #include <cmath>
