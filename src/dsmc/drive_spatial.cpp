@@ -208,7 +208,9 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
                 v_col = column_of(peculiar.data(), 0);
                 w_col = column_of(spin.data(), 0);
             }
-            const Moments m = compute_moments(v_col, w_col, slices, engine.team());
+            Moments m = compute_moments(v_col, w_col, slices, engine.team());
+            if (spec.thermostat) // the moments at the row's time, not at the kicks' (dsmc/thermostat.hpp)
+                m = moments_at_drive_time(m, slices, *spec.thermostat, t, engine.kicked_until());
             row.clear();
             append_row_head(row, t, c, c_prev, N, m, inv_dt, tally, engine.volume());
             if (sheared) {
