@@ -7,6 +7,7 @@
 #include "roughgas/dsmc/particles.hpp"
 #include "roughgas/observables/moments.hpp"
 
+#include "engine_test_support.hpp"
 #include "test_stats.hpp"
 
 #include <gtest/gtest.h>
@@ -25,30 +26,9 @@ namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 
-template <class Store, bool Mixture = false, class Policy>
-Engine<Store, Policy, Mixture> make_engine(const std::vector<SpeciesSpec>& species, std::int64_t N,
-                                           std::vector<Policy> policies, EngineOptions opt) {
-    const auto blocks = make_species_blocks(species, N);
-    Store store(static_cast<std::size_t>(N));
-    init_maxwellian(store, blocks, opt.seed, opt.replica);
-    return Engine<Store, Policy, Mixture>(blocks, std::move(policies), std::move(store), opt);
-}
-
-template <class E> Moments moments_of(const E& e) {
-    std::vector<SpeciesSlice> s;
-    for (const auto& b : e.species())
-        s.push_back({b.offset, b.count, b.grain.mass, b.moment_of_inertia()});
-    return compute_moments(e.store().velocities(), e.store().angular_velocities(), s);
-}
-
-template <class E> double total_energy(const E& e) {
-    double E_ = 0;
-    for (const auto& b : e.species())
-        for (std::size_t i = b.offset; i < b.offset + b.count; ++i)
-            E_ += 0.5 * b.grain.mass * norm2(e.store().v(i)) +
-                  0.5 * b.moment_of_inertia() * norm2(e.store().w(i));
-    return E_;
-}
+using test::make_engine;
+using test::moments_of;
+using test::total_energy;
 
 using test::MeanErr;
 using test::mean_err;

@@ -11,6 +11,7 @@
 #include "roughgas/dsmc/thermostat.hpp"
 #include "roughgas/observables/moments.hpp"
 
+#include "engine_test_support.hpp"
 #include "test_stats.hpp"
 #include "thermostat_specs.hpp"
 
@@ -33,26 +34,9 @@ using test::white_noise;
 
 constexpr std::int64_t forever = std::numeric_limits<std::int64_t>::max();
 
-template <class Store, bool Mixture = false, class Policy>
-Engine<Store, Policy, Mixture> make_engine(const std::vector<SpeciesSpec>& species, std::int64_t N,
-                                           std::vector<Policy> policies, EngineOptions opt) {
-    const auto blocks = make_species_blocks(species, N);
-    Store store(static_cast<std::size_t>(N));
-    init_maxwellian(store, blocks, opt.seed, opt.replica);
-    return Engine<Store, Policy, Mixture>(blocks, std::move(policies), std::move(store), opt);
-}
-
-template <class E> Moments moments_of(const E& e) {
-    return compute_moments(e.store().velocities(), e.store().angular_velocities(), species_slices(e.species()));
-}
-
-template <class E> double total_energy(const E& e) {
-    double sum = 0;
-    for (const auto& b : e.species())
-        for (std::size_t i = b.offset; i < b.offset + b.count; ++i)
-            sum += 0.5 * b.grain.mass * norm2(e.store().v(i)) + 0.5 * b.moment_of_inertia() * norm2(e.store().w(i));
-    return sum;
-}
+using test::make_engine;
+using test::moments_of;
+using test::total_energy;
 
 // Per species, the total momentum and the total spin angular momentum.
 template <class E> std::vector<std::pair<Vec3, Vec3>> momenta(const E& e) {
