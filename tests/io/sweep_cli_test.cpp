@@ -180,6 +180,9 @@ TEST(SweepCli, InvalidPointFailsBeforeAnyWork) {
     EXPECT_NE(r.err.find("shear.rate"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("must be > 0"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find(f.string()), std::string::npos) << r.err;
+    // The value came from --param, and the message says which point: not "set with --set".
+    EXPECT_NE(r.err.find("(point 2 of --param shear.rate=1:-1:3)"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("set with --set"), std::string::npos) << r.err;
     r = run_roughgas(
         "sweep '" + f.string() + "' --param collision.alpha=0.5:x:3 --out '" + out.string() + "'", dir);
     EXPECT_EQ(r.status, 2);

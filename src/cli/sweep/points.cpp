@@ -59,7 +59,18 @@ SweepPoints plan_points(const SweepOptions& o) {
                                     : from + (to - from) * static_cast<double>(k) / static_cast<double>(s.count - 1)));
         std::vector<std::string> sets = o.sets;
         sets.push_back(fmt::format("{}={}", s.key, x));
-        s.cases.push_back(load_case(o.case_file, sets, CaseUse::run));
+        try {
+            s.cases.push_back(load_case(o.case_file, sets, CaseUse::run));
+        } catch (const InputError& e) {
+            // The swept key's value comes from --param, not from a --set of the user's: say which point.
+            std::vector<InputIssue> issues = e.issues();
+            const std::string suffix = " (set with --set)";
+            for (InputIssue& i : issues)
+                if (i.key == s.key && i.message.ends_with(suffix))
+                    i.message = i.message.substr(0, i.message.size() - suffix.size()) +
+                                fmt::format(" (point {} of --param {})", k + 1, o.param);
+            throw InputError(std::move(issues));
+        }
         if (s.cases.back().fields)
             throw InputError(o.case_file, "fields",
                              "[fields] in a sweep: a sweep writes each point's moments.csv only (run a point with "
