@@ -1025,25 +1025,12 @@ class Engine {
         }
         if (!(nu > 0) || !std::isfinite(nu)) // a gas at rest: no step length to place the kicks by
             return false;
-        const double t1 = t_step_end_ + 0.5 * opt_.step / nu;
-        if (!(t1 > t_kick_))
-            return false;
-        bool any = false;
-        for (std::size_t s = 0; s < species_.size(); ++s) {
-            const SpeciesBlock& sp = species_[s];
-            kicks_[s].kick = species_kick(thermostat_->kind, thermostat_->species[s], sp.grain.mass,
-                                          sp.moment_of_inertia(), t_kick_, t1);
-            any |= kicks_[s].kick.moves();
-        }
-        t_kick_ = t1;
-        return any;
+        return plan_species_kicks(*thermostat_, species_, t_step_end_ + 0.5 * opt_.step / nu, t_kick_, kicks_);
     }
 
     // Where species s's kicks of this step come from (dsmc/thermostat.hpp).
     KickSource kick_source(std::size_t s) const {
-        const SpeciesBlock& sp = species_[s];
-        return KickSource{opt_.seed, opt_.replica, static_cast<std::uint64_t>(c_.steps), s, sp.count,
-                          sp.grain.mass, sp.moment_of_inertia()};
+        return KickSource::of(opt_.seed, opt_.replica, static_cast<std::uint64_t>(c_.steps), s, species_[s]);
     }
 
     // Species s's kicks of this step in C chunks of `chunk` grains: the bridge's scales, the chunks'

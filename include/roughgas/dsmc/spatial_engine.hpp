@@ -707,16 +707,7 @@ template <class Policy, bool General = false> class SpatialEngine {
         kicking_ = false;
         if (!thermostat_)
             return;
-        const double t1 = t_ + 0.5 * dt;
-        if (!(t1 > t_kick_))
-            return;
-        for (std::size_t s = 0; s < blocks_.size(); ++s) {
-            const SpeciesBlock& b = blocks_[s];
-            kicks_[s].kick = species_kick(thermostat_->kind, thermostat_->species[s], b.grain.mass,
-                                          b.moment_of_inertia(), t_kick_, t1);
-            kicking_ |= kicks_[s].kick.moves();
-        }
-        t_kick_ = t1;
+        kicking_ = plan_species_kicks(*thermostat_, blocks_, t_ + 0.5 * dt, t_kick_, kicks_);
         if (!kicking_)
             return;
         const std::vector<FlightChunk> chunks = flight_chunks();
@@ -743,9 +734,7 @@ template <class Policy, bool General = false> class SpatialEngine {
 
     // Where species s's kicks of this step come from (dsmc/thermostat.hpp).
     KickSource kick_source(std::size_t s) const {
-        const SpeciesBlock& b = blocks_[s];
-        return KickSource{seed_, replica_, static_cast<std::uint64_t>(steps_), s, b.count, b.grain.mass,
-                          b.moment_of_inertia()};
+        return KickSource::of(seed_, replica_, static_cast<std::uint64_t>(steps_), s, blocks_[s]);
     }
 
     // Species s's kicks in its chunk ch (grains lo .. hi - 1): applied (energy == nullptr) or only

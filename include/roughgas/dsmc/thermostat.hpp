@@ -160,7 +160,28 @@ struct KickSource {
     std::uint64_t seed = 0, replica = 0, step = 0;
     std::size_t species = 0, n = 0;
     double m = 1, I = 1;
+    static KickSource of(std::uint64_t seed, std::uint64_t replica, std::uint64_t step, std::size_t s,
+                         const SpeciesBlock& b) {
+        return {seed, replica, step, s, b.count, b.grain.mass, b.moment_of_inertia()};
+    }
 };
+
+// Every species' kicks over [t_kick, t1] into kicks[s].kick, and t_kick moved on to t1; nothing
+// when t1 is not later than t_kick. Returns whether any grain is kicked. How both engines plan a
+// step's kicks (t1: the middle of the step).
+inline bool plan_species_kicks(const ThermostatSpec& th, const std::vector<SpeciesBlock>& species, double t1,
+                               double& t_kick, std::vector<StepKick>& kicks) {
+    if (!(t1 > t_kick))
+        return false;
+    bool any = false;
+    for (std::size_t s = 0; s < species.size(); ++s) {
+        const SpeciesBlock& b = species[s];
+        kicks[s].kick = species_kick(th.kind, th.species[s], b.grain.mass, b.moment_of_inertia(), t_kick, t1);
+        any |= kicks[s].kick.moves();
+    }
+    t_kick = t1;
+    return any;
+}
 
 // Chunk ch's kicks (its grains, in order, are v(0 .. count - 1) and w(..)), from the chunk's own
 // stream: applied (energy == nullptr) or only summed into *energy. The engines call it from a
