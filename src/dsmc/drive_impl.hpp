@@ -9,6 +9,7 @@
 #include "roughgas/core/bytes.hpp"
 #include "roughgas/dsmc/engine.hpp"
 #include "roughgas/dsmc/init.hpp"
+#include "roughgas/dsmc/pair_correlation.hpp"
 #include "roughgas/dsmc/particles.hpp"
 #include "roughgas/dsmc/shear.hpp"
 #include "roughgas/dsmc/thermostat.hpp"
@@ -134,7 +135,7 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
     Engine<Store, Policy, Mixture, Kernel> engine(
         blocks, std::move(policies), std::move(store),
         EngineOptions{spec.density, spec.step, spec.seed, rep, spec.speed_classes, effective_groups(spec),
-                      std::max(1, spec.threads)});
+                      std::max(1, spec.threads), pair_correlations(spec)});
     if (spec.thermostat)
         engine.set_thermostat(*spec.thermostat);
 
@@ -145,7 +146,7 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
     const std::size_t columns = dsmc_columns(spec).size();
 
     Tally tally;
-    tally.per_type.assign(types.size(), 0);
+    tally.assign(types.size());
     double t_prev = 0;
     std::int64_t c_prev = 0;
     std::vector<double> row;
@@ -182,6 +183,8 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
         const double inv_dt = !first && dt > 0 ? 1.0 / dt : nan;
         row.clear();
         append_row_head(row, t, c, c_prev, static_cast<double>(N), m, inv_dt, tally, engine.volume());
+        if (spec.enskog)
+            append_pressure_columns(row, m, slices, types, tally, engine.volume(), inv_dt);
         if (spec.shear) {
             const PressureTensor P =
                 pressure_tensor(engine.store().velocities(), slices, engine.volume(), m.mean_velocity);

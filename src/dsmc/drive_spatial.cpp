@@ -84,7 +84,7 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
     const double end = outputs.back();
 
     Tally tally;
-    tally.per_type.assign(types.size(), 0);
+    tally.assign(types.size());
     double t_prev = 0;
     std::int64_t c_prev = 0;
     std::size_t next = 0; // the next output

@@ -10,6 +10,7 @@
 #include "roughgas/observables/pressure.hpp"
 
 #include <algorithm>
+#include <span>
 #include <cstdint>
 #include <vector>
 
@@ -19,33 +20,48 @@ namespace roughgas::detail {
 struct Tally {
     double dE = 0;                      // energy change of the gas (<= 0)
     std::vector<std::int64_t> per_type; // collisions per pair type
+    // Per pair type, the sum of (1 + alpha) g_n: the normal impulse of a collision is m_ab (1 + alpha) g_n
+    // (docs/model.md §3), and sigma_ab times it is what the collision adds to the collisional transfer
+    // of momentum of the Enskog equation (append_pressure_columns).
+    std::vector<double> impulse;
     std::int64_t clamped = 0;           // all collisions so far with beta clamped
     void operator()(const CollisionRecord& r, std::size_t k) {
         dE += r.dE_tr + r.dE_rot;
         ++per_type[k];
+        impulse[k] += (1 + r.alpha) * r.g_n;
         clamped += r.beta_clamped;
     }
+    // Sized for `types` pair types, every sum 0.
+    void assign(std::size_t types) {
+        per_type.assign(types, 0);
+        impulse.assign(types, 0.0);
+    }
     // One per group (or work unit) of an engine (ForkableObserver, dsmc/engine.hpp), merged in order.
-    // Its per_type array ends a cache line before its allocation does, so that no other fork's
-    // counters, which another thread writes at every collision, share a line with it.
+    // Its arrays end a cache line before their allocations do, so that no other fork's sums, which
+    // another thread writes at every collision, share a line with them.
     Tally fork() const {
         Tally t;
         t.per_type.reserve(per_type.size() + 64 / sizeof(std::int64_t));
-        t.per_type.assign(per_type.size(), 0);
+        t.impulse.reserve(impulse.size() + 64 / sizeof(double));
+        t.assign(per_type.size());
         return t;
     }
     void merge(const Tally& o) {
         dE += o.dE;
-        for (std::size_t k = 0; k < per_type.size(); ++k)
+        for (std::size_t k = 0; k < per_type.size(); ++k) {
             per_type[k] += o.per_type[k];
+            impulse[k] += o.impulse[k];
+        }
         clamped += o.clamped;
     }
-    // In a checkpoint (core/bytes.hpp); load() resizes per_type to what was saved.
+    // In a checkpoint (core/bytes.hpp); load() resizes the arrays to what was saved.
     void save(ByteWriter& w) const {
         w.f64(dE);
         w.u64(per_type.size());
         for (std::int64_t x : per_type)
             w.put(x);
+        for (double x : impulse)
+            w.f64(x);
         w.put(clamped);
     }
     void load(ByteReader& r) {
@@ -53,12 +69,16 @@ struct Tally {
         per_type.resize(r.count(sizeof(std::int64_t)));
         for (std::int64_t& x : per_type)
             x = r.get<std::int64_t>();
+        impulse.resize(per_type.size());
+        for (double& x : impulse)
+            x = r.f64();
         clamped = r.get<std::int64_t>();
     }
     // After a row: the interval sums start again (clamped counts the whole run).
     void next_interval() {
         dE = 0;
         std::fill(per_type.begin(), per_type.end(), 0);
+        std::fill(impulse.begin(), impulse.end(), 0.0);
     }
 };
 
@@ -76,6 +96,28 @@ inline void append_row_head(std::vector<double>& row, double t, std::int64_t col
     append_group(row, m.all);
     row.push_back(2.0 * static_cast<double>(collisions - collisions_prev) / N * inv_dt);
     row.push_back(-tally.dE / volume * inv_dt);
+}
+
+// The Enskog equation's pressure (enskog runs: dsmc_columns, dsmc/run.hpp): p_kin = n T_tr (the trace
+// of the kinetic pressure tensor over 3, at the row), p_coll, the collisional transfer's: each
+// collision moves the momentum J = m_ab (1 + alpha) g_n n across the distance sigma_ab n between the
+// grains' centres, so that (1/3) sum sigma_ab J_n over the collisions of an interval, over the volume
+// and the interval's length, is the trace over 3 of its collisional pressure tensor (the virial of
+// hard spheres; Enskog 1922), averaged over the interval since the previous row (NaN in the first
+// row, as coll_rate); and p = p_kin + p_coll.
+inline void append_pressure_columns(std::vector<double>& row, const Moments& m, std::span<const SpeciesSlice> slices,
+                                    const std::vector<PairType>& types, const Tally& tally, double volume,
+                                    double inv_dt) {
+    double N = 0;
+    for (const SpeciesSlice& s : slices)
+        N += static_cast<double>(s.count);
+    double virial = 0;
+    for (std::size_t k = 0; k < types.size(); ++k)
+        virial += types[k].pc.sigma * types[k].pc.m_eff * tally.impulse[k];
+    const double p_kin = N / volume * m.all.T_tr, p_coll = virial / (3 * volume) * inv_dt;
+    row.push_back(p_kin);
+    row.push_back(p_coll);
+    row.push_back(p_kin + p_coll);
 }
 
 // Mixtures: each species' moments and collision rate, then the temperature ratios of every pair;

@@ -100,6 +100,13 @@ void validate(const RunSpec& spec) {
                         "a wall moves only along itself (no velocity along its normal)");
             }
     }
+    if (spec.enskog) {
+        require(spec.enskog->model != PairCorrelationModel::constant ||
+                    (std::isfinite(spec.enskog->chi) && spec.enskog->chi > 0),
+                "a constant pair correlation chi must be > 0");
+        require(!spec.domain && !spec.shear, "the Enskog equation is solved for the homogeneous gas, cooling or "
+                                             "driven (not in a box, nor in shear flow)");
+    }
     if (spec.shear) {
         require(std::isfinite(spec.shear->rate) && spec.shear->rate > 0, "shear rate must be > 0");
         require(std::isfinite(spec.shear->time_step) && spec.shear->time_step > 0,
@@ -227,6 +234,9 @@ std::vector<Column> dsmc_columns(const RunSpec& spec) {
                              {"A_cw", "-"},
                              {"coll_rate", "1/time"},
                              {"E_diss_rate", "energy/(volume*time)"}};
+    if (spec.enskog) // the pressure with its collisional transfer part (dsmc/gas_row.hpp)
+        for (const char* q : {"p_kin", "p_coll", "p"})
+            c.push_back({q, "energy/volume"});
     if (spec.shear) {
         for (const char* q : shear_quantities) {
             const std::string name = q;

@@ -50,7 +50,9 @@ std::vector<SpeciesBlock> make_species_blocks(const std::vector<SpeciesSpec>& sp
     return out;
 }
 
-std::vector<PairType> make_pair_types(const std::vector<SpeciesBlock>& species) {
+std::vector<PairType> make_pair_types(const std::vector<SpeciesBlock>& species, const std::vector<double>& chi) {
+    if (!chi.empty() && chi.size() != species.size() * (species.size() + 1) / 2)
+        throw std::invalid_argument("make_pair_types: one chi per species pair");
     const std::size_t n = species.size();
     std::vector<PairType> out(n * (n + 1) / 2);
     for (std::size_t a = 0; a < n; ++a) {
@@ -62,6 +64,8 @@ std::vector<PairType> make_pair_types(const std::vector<SpeciesBlock>& species) 
             const double Na = static_cast<double>(species[a].count),
                          Nb = static_cast<double>(species[b].count);
             p.pairs = a == b ? 0.5 * Na * (Na - 1.0) : Na * Nb;
+            if (!chi.empty())
+                p.chi = chi[pair_index(a, b, n)];
         }
     }
     return out;

@@ -200,6 +200,23 @@ std::vector<Key> keys() {
                  "approaching hemisphere: T_tr, T_rot follow closed linear ODEs, the theory columns; constant "
                  "restitution only; in a [domain] run each pair of a cell, at the rate with the cell for the "
                  "volume)"),
+        Key("run.equation", T::string)
+            .fallback(std::string("boltzmann"))
+            .one_of(equation_names)
+            .doc("the kinetic equation: boltzmann (a dilute gas); enskog (a moderately dense gas, solid fraction "
+                 "phi up to about 0.5: every pair collides chi times as often, chi the pair correlation at contact "
+                 "(run.pair_correlation), and moments.csv gets the pressure with its collisional part, p_kin, "
+                 "p_coll, p; homogeneous runs, cooling or driven)"),
+        Key("run.pair_correlation", T::string)
+            .fallback(std::string("carnahan_starling"))
+            .one_of(pair_correlation_names)
+            .doc("with equation = enskog, chi: carnahan_starling ((1 - phi/2)/(1 - phi)^3 from the solid fraction; "
+                 "for mixtures each pair's Boublik-Mansoori-Carnahan-Starling-Leland value); constant (run.chi for "
+                 "every pair)"),
+        Key("run.chi", T::real)
+            .when("required for pair_correlation = constant")
+            .gt(0)
+            .doc("with equation = enskog and pair_correlation = constant: chi of every species pair"),
         Key("run.seed", T::integer).fallback(std::int64_t{1}).ge(0).doc("random seed (same seed, same run)"),
         Key("run.end", T::real)
             .unit("collisions per particle")

@@ -7,6 +7,7 @@
 #include "roughgas/observables/profiles.hpp"
 #include "roughgas/observables/shear_mode.hpp"
 #include "roughgas/observables/driven_steady_state.hpp"
+#include "roughgas/observables/enskog_pressure.hpp"
 #include "roughgas/observables/sonine_cooling_state.hpp"
 #include "roughgas/observables/white_noise_sonine.hpp"
 
@@ -138,6 +139,11 @@ MomentsTable::MomentsTable(const RunSpec& spec)
                 }
         }
         columns_.push_back({"zeta_star_theory", "-"});
+        // The Enskog equation's pressure (observables/enskog_pressure.hpp), as the solver's p: the kinetic
+        // part at t, the collisional part averaged over the interval since the previous row.
+        enskog_ = spec.enskog.has_value();
+        if (enskog_)
+            columns_.push_back({"p_theory", "energy/volume"});
         // The scaled cooling state in the first Sonine approximation, the same in every row, where
         // it applies (observables/sonine_cooling_state.hpp): one species, whose restitution is
         // constant, with the hard-sphere kernel. NaN where it has no value: theta, a02 and a11 of
@@ -173,7 +179,8 @@ MomentsTable::MomentsTable(const RunSpec& spec)
                 spec.thermostat->kind == ThermostatKind::white_noise && drive.rotational_share == 0) {
                 const HcsSpecies& g = th.species()[0];
                 const WhiteNoiseSonineState s = white_noise_sonine_state(
-                    th.pairs()[0].alpha, g.mass, 2 * g.radius, th.density(), drive.drive.value.back());
+                    th.pairs()[0].alpha, g.mass, 2 * g.radius, th.density() * th.pair_correlation(0, 0),
+                    drive.drive.value.back());
                 constant_theory_.push_back(s.T_tr);
                 constant_theory_.push_back(s.a2);
                 columns_.push_back({"T_tr_sonine", "energy"});
@@ -225,7 +232,7 @@ void MomentsTable::check(std::span<const double> row) const {
                                      fmt::format("profile field {} is {} at t = {}", name, row[j], t));
             continue;
         }
-        if (base == "coll_rate" || base == "E_diss_rate")
+        if (base == "coll_rate" || base == "E_diss_rate" || base == "p_coll" || base == "p")
             undefined = first;
         if (base == "theta" || base == "a20" || base == "a11")
             undefined |= zero("T_tr" + suffix);
@@ -361,6 +368,11 @@ std::vector<double> MomentsTable::combine(std::span<const std::span<const double
     }
     if (trajectory_) {
         const double t = out[0];
+        // p_theory's midpoint of the interval since the previous row, before the trajectory moves on to
+        // t (it only moves forward).
+        double p_coll_mid = std::numeric_limits<double>::quiet_NaN();
+        if (enskog_ && std::isfinite(p_coll_prev_) && t > t_prev_)
+            p_coll_mid = enskog_collisional_pressure(trajectory_->theory(), trajectory_->at(0.5 * (t_prev_ + t)));
         const HcsTemperatures T = trajectory_->at(t);
         const HcsTheory& th = trajectory_->theory();
         const double tr = th.mixture_T_tr(T), rot = th.mixture_T_rot(T);
@@ -380,10 +392,22 @@ std::vector<double> MomentsTable::combine(std::span<const std::span<const double
                 }
         }
         out.push_back(reduced_cooling_rate(th, T));
+        if (enskog_)
+            out.push_back(pressure_theory(t, T, p_coll_mid));
         out.insert(out.end(), sonine_.begin(), sonine_.end());
         out.insert(out.end(), constant_theory_.begin(), constant_theory_.end());
     }
     return out;
+}
+
+double MomentsTable::pressure_theory(double t, const HcsTemperatures& T, double p_coll_mid) {
+    // The collisional part's mean over [t_prev, t] by Simpson's rule on the trajectory.
+    const HcsTheory& th = trajectory_->theory();
+    const double end = enskog_collisional_pressure(th, T);
+    const double coll = std::isfinite(p_coll_mid) ? (p_coll_prev_ + 4 * p_coll_mid + end) / 6 : end;
+    p_coll_prev_ = end;
+    t_prev_ = t;
+    return enskog_kinetic_pressure(th, T) + coll;
 }
 
 namespace {
@@ -401,6 +425,17 @@ const std::map<std::string, std::string>& meanings() {
         {"A_cw", "<(c.omega)^2>/(<c^2><omega^2>) - 1/3: translation-rotation alignment"},
         {"coll_rate", "collisions per particle per unit time since the previous row (NaN at t = 0)"},
         {"E_diss_rate", "energy dissipated per unit volume and time since the previous row (NaN at t = 0)"},
+        {"p_kin", "run.equation = enskog: the kinetic pressure n T_tr, the trace of the kinetic pressure tensor over 3"},
+        {"p_coll", "run.equation = enskog: the collisional transfer part of the pressure, (1/3) sum sigma_ab J_n over "
+                   "the collisions since the previous row, over the volume and the interval's length (J_n = m_ab "
+                   "(1 + alpha) g_n the normal impulse a collision moves across the grains' distance sigma_ab: the "
+                   "virial of hard spheres); NaN at t = 0"},
+        {"p", "run.equation = enskog: p_kin + p_coll, the pressure (NaN at t = 0)"},
+        {"p_theory", "run.equation = enskog: the Enskog pressure of the Maxwellian approximation's temperatures, its "
+                     "kinetic part n T_tr at t plus its collisional part (pi/3) sum_ab n_a n_b chi_ab sigma_ab^3 m_ab "
+                     "(1 + alpha_ab) (T_a/m_a + T_b/m_b) averaged over the interval since the previous row, as p "
+                     "(one species: n T [1 + 2 (1 + alpha) phi chi]; exact for any distribution given the "
+                     "temperatures)"},
         {"beta_clamped",
          "collisions so far whose brilliantov beta left [-1, 1] and was clamped (brilliantov runs)"},
         {"cell_over_lambda", "box runs: the largest cell edge over the local mean free path "
@@ -545,6 +580,12 @@ std::string moments_columns_markdown() {
     const MomentsTable t1(one);
     for (const Column& c : t1.columns())
         if (!c.name.ends_with("_err") || c.name == "t_err")
+            add(c);
+    RunSpec dense = one; // the Enskog equation: the pressure columns
+    dense.enskog = EnskogSpec{};
+    const MomentsTable t7(dense);
+    for (const Column& c : t7.columns())
+        if (!c.name.ends_with("_err"))
             add(c);
     RunSpec driven = one; // a driven gas of smooth grains: its steady-state columns after the cooling ones
     driven.pairs = {ConstantRestitution{0.9, -1.0}};

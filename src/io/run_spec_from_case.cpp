@@ -169,6 +169,8 @@ RunSpec run_spec_from_case(const CaseConfig& cfg) {
     spec.replicas = static_cast<int>(cfg.run.replicas);
     spec.groups = static_cast<int>(cfg.run.groups);
     spec.kernel = cfg.run.kernel;
+    if (cfg.run.equation == KineticEquation::enskog)
+        spec.enskog = EnskogSpec{cfg.run.pair_correlation, cfg.run.chi.value_or(1.0)};
     if (cfg.run.time_clock()) {
         // Times, each a row of its own (two rows may hold the same collision count: no collision between).
         spec.clock = Clock::time;

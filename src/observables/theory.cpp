@@ -1,6 +1,8 @@
 // The Maxwellian-approximation HCS theory: the derivation is in observables/theory.hpp.
 #include "roughgas/observables/theory.hpp"
 
+#include "roughgas/dsmc/pair_correlation.hpp"
+
 #include "roughgas/collision/pair_constants.hpp"
 #include "roughgas/observables/driven_theory.hpp"
 
@@ -75,6 +77,14 @@ HcsTheory::HcsTheory(std::vector<HcsSpecies> species, std::vector<ConstantRestit
         require(p.alpha >= 0 && p.alpha <= 1, "alpha must be in [0, 1]");
         require(p.beta >= -1 && p.beta <= 1, "beta must be in [-1, 1]");
     }
+    chi_.assign(pairs_.size(), 1.0);
+}
+
+void HcsTheory::set_pair_correlations(std::vector<double> chi) {
+    require(chi.size() == pairs_.size(), "one pair correlation per species pair needed");
+    for (double x : chi)
+        require(x > 0 && std::isfinite(x), "pair correlations must be > 0");
+    chi_ = std::move(chi);
 }
 
 HcsTheory::HcsTheory(std::vector<HcsSpecies> species, std::vector<ConstantRestitution> pairs, double density,
@@ -102,12 +112,14 @@ PairExchange HcsTheory::exchange(std::size_t a, std::size_t b, std::span<const d
     PairExchange x;
     if (maxwell()) { // the Maxwell kernel (theory.hpp): constant frequency, exact averages
         const double s0 = maxwell_T0_[a] / A.mass + maxwell_T0_[b] / B.mass;
-        x.frequency = density_ * B.fraction * pc.sigma * pc.sigma * std::sqrt(8 * std::numbers::pi * s0);
+        x.frequency = pair_correlation(a, b) * density_ * B.fraction * pc.sigma * pc.sigma *
+                      std::sqrt(8 * std::numbers::pi * s0);
         x.dE_tr = -(Ta / A.mass) * (a_n + 2 * a_t) + (0.5 * a_n * a_n * s + a_t * a_t * (s + s_w)) / A.mass;
         x.dE_rot = (-2 * a_t * pos(T_rot[a]) + a_t * a_t * (s + s_w)) / (A.inertia * A.mass);
         return x;
     }
-    x.frequency = density_ * B.fraction * pc.sigma * pc.sigma * std::sqrt(8 * std::numbers::pi * s);
+    x.frequency =
+        pair_correlation(a, b) * density_ * B.fraction * pc.sigma * pc.sigma * std::sqrt(8 * std::numbers::pi * s);
     const double p2 = a_n * a_n * s + a_t * a_t * (s + s_w); // <|P|^2>/2
     x.dE_tr = -2 * (Ta / A.mass) * (a_n + a_t) + p2 / A.mass;
     x.dE_rot = (-2 * a_t * pos(T_rot[a]) + a_t * a_t * (s + s_w)) / (A.inertia * A.mass);
@@ -418,13 +430,14 @@ std::optional<HcsTheory> hcs_theory(const RunSpec& spec) {
         total += s.fraction;
     for (const SpeciesSpec& s : spec.species)
         species.push_back({s.mass, s.radius, s.inertia, total > 0 ? s.fraction / total : s.fraction});
-    if (spec.kernel == CollisionKernel::maxwell) {
-        std::vector<double> T0;
+    std::vector<double> T0;
+    if (spec.kernel == CollisionKernel::maxwell)
         for (const SpeciesSpec& s : spec.species)
             T0.push_back(s.temperature);
-        return HcsTheory(std::move(species), std::move(pairs), spec.density, std::move(T0));
-    }
-    return HcsTheory(std::move(species), std::move(pairs), spec.density);
+    HcsTheory theory = T0.empty() ? HcsTheory(std::move(species), std::move(pairs), spec.density)
+                                  : HcsTheory(std::move(species), std::move(pairs), spec.density, std::move(T0));
+    theory.set_pair_correlations(pair_correlations(spec));
+    return theory;
 }
 
 HcsTemperatures initial_temperatures(const RunSpec& spec) {

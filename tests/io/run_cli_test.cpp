@@ -683,7 +683,7 @@ TEST(RunCli, WarnsOfADenseGas) {
     EXPECT_EQ(c.status, 0) << c.err;
     EXPECT_EQ(count(c.err, warning), 1u) << c.err;
     EXPECT_NE(c.err.find("chi = 1.76"), std::string::npos) << c.err;
-    EXPECT_NE(c.err.find("Enskog equation, which roughgas does not solve"), std::string::npos) << c.err;
+    EXPECT_NE(c.err.find("run.equation = \"enskog\" solves the Enskog equation"), std::string::npos) << c.err;
     const test::CommandResult r =
         test::run_roughgas("run '" + f.string() + "' --quiet --out '" + (dir / "out").string() + "'", dir);
     ASSERT_EQ(r.status, 0) << r.err;
@@ -698,6 +698,17 @@ TEST(RunCli, WarnsOfADenseGas) {
     ASSERT_EQ(d.status, 0) << d.err;
     EXPECT_EQ(d.err.find("solid fraction"), std::string::npos) << d.err;
     EXPECT_EQ(test::read_file(dir / "dilute" / "moments.csv").find("solid fraction"), std::string::npos);
+    // The same dense gas in the Enskog equation: no warning; beyond freezing (phi = 0.55, n = 1.05) one.
+    const fs::path e = dir.write("enskog.toml", replaced(replaced(base, "density = 0.01", "density = 0.382"),
+                                                         "end = 1.0", "end = 1.0\nequation = \"enskog\""));
+    const test::CommandResult ce = test::run_roughgas("check '" + e.string() + "'", dir);
+    EXPECT_EQ(ce.status, 0) << ce.err;
+    EXPECT_EQ(ce.err.find("warning"), std::string::npos) << ce.err;
+    const fs::path x = dir.write("frozen.toml", replaced(replaced(base, "density = 0.01", "density = 1.05"),
+                                                         "end = 1.0", "end = 1.0\nequation = \"enskog\""));
+    const test::CommandResult cx = test::run_roughgas("check '" + x.string() + "'", dir);
+    EXPECT_EQ(cx.status, 0) << cx.err;
+    EXPECT_NE(cx.err.find("above the freezing point of hard spheres"), std::string::npos) << cx.err;
 }
 
 } // namespace

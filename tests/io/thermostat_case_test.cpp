@@ -1,5 +1,6 @@
 // [thermostat] and [[species_thermostat]]: what they accept and refuse, the echo, and the
 // ThermostatSpec of the RunSpec.
+#include "case_errors.hpp"
 #include "io_test_support.hpp"
 
 #include "roughgas/io/case_file.hpp"
@@ -49,24 +50,8 @@ std::string bath_case() {
         "kind = \"langevin\"\nfriction = 2.0\nrotational_friction = 0.5\nschedule = [[0, 1.0], [50, 0.2]]");
 }
 
-// The message of the InputError that parsing `text` throws ("" if it does not throw).
-std::string error_of(const std::string& text, const std::vector<std::string>& sets = {}) {
-    try {
-        (void)parse_case(text, "case.toml", sets);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
-
-// Whether parsing `text` with `sets` is refused with a message that holds `part`.
-::testing::AssertionResult refused(const std::string& text, const std::vector<std::string>& sets,
-                                   const std::string& part) {
-    const std::string e = error_of(text, sets);
-    if (e.find(part) != std::string::npos)
-        return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << "expected \"" << part << "\" in:\n" << e;
-}
+using test::error_of;
+using test::refused;
 
 TEST(ThermostatCase, WhiteNoiseIsADrivenGasWithOneDrivePerSpecies) {
     const CaseConfig c = parse_case(driven_case(), "case.toml");

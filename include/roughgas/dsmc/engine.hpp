@@ -5,7 +5,9 @@
 //
 // Kernel. In a gas of number density n simulated by N particles (volume V = N/n), each unordered
 // pair (i, j) of species (a, b) collides at the rate pi sigma_ab^2 |v_i - v_j| / V, the direction n
-// having density proportional to |g^ . n| on the approaching hemisphere (docs/model.md §4).
+// having density proportional to |g^ . n| on the approaching hemisphere (docs/model.md §4). In the
+// Enskog equation of a uniform gas (EngineOptions::pair_correlation) every rate is chi_ab times that:
+// the candidate rates below carry the factor (PairType::rate_section), nothing else changes.
 //
 // Exact majorant (sequential thinning). The particles of a species are split into blocks ("speed
 // classes") with a bound b on |v| of every grain in the block. For a pair of blocks (x, y),
@@ -131,6 +133,10 @@ struct EngineOptions {
     int speed_classes = 2; // blocks per species, 1 .. 6 (no influence on the statistics)
     int groups = 1;        // per-step random partition into groups (1: none); results depend on it
     int threads = 1;       // threads over the groups and chunks (WorkerTeam): no influence on the results
+    // The pair correlation at contact chi of each species pair (pair_index order; empty: 1): the
+    // Enskog equation of a uniform gas collides every pair chi times as often as the Boltzmann
+    // equation, with the same collision rule (dsmc/pair_correlation.hpp).
+    std::vector<double> pair_correlation;
 };
 
 enum class StopReason { collisions, time, stalled };
@@ -221,7 +227,7 @@ class Engine {
 
     // `policies[k]` is the restitution of species pair k (species.hpp); one entry without Mixture.
     Engine(std::vector<SpeciesBlock> species, std::vector<Policy> policies, Store store, EngineOptions opt)
-        : species_(std::move(species)), types_(make_pair_types(species_)), policies_(std::move(policies)),
+        : species_(std::move(species)), types_(make_pair_types(species_, opt.pair_correlation)), policies_(std::move(policies)),
           store_(std::move(store)), opt_(opt) {
         if (!Mixture && species_.size() != 1)
             throw std::invalid_argument("Engine: one-species engine given a mixture");
@@ -998,7 +1004,7 @@ class Engine {
             // the computed sum of the bounds; the inflation keeps the acceptance probability below 1.
             bp.gmax = (X.bound + Y.bound) * (1.0 + 1e-12);
             const double speed = Kernel == CollisionKernel::maxwell ? maxwell_speed_[bp.species_pair] : bp.gmax;
-            bp.rate = bp.pairs * types_[bp.species_pair].pc.cross_section * speed * scale;
+            bp.rate = bp.pairs * types_[bp.species_pair].rate_section() * speed * scale;
             total += bp.rate;
             g.cumulative[k] = total;
         }

@@ -180,6 +180,17 @@ struct ThermostatSpec {
     std::vector<SpeciesThermostat> species; // one per RunSpec::species entry
 };
 
+// The Enskog equation of a moderately dense gas (run.equation = "enskog"; dsmc/pair_correlation.hpp):
+// every pair collides chi times as often as in the Boltzmann equation, chi the pair correlation at
+// contact, and each collision carries momentum across the grains' distance sigma (the collisional
+// pressure). chi from the solid fraction (carnahan_starling: Carnahan & Starling 1969 for one species,
+// the Boublik-Mansoori-Carnahan-Starling-Leland form for mixtures), or one constant for every pair.
+enum class PairCorrelationModel { carnahan_starling, constant };
+struct EnskogSpec {
+    PairCorrelationModel model = PairCorrelationModel::carnahan_starling;
+    double chi = 1; // constant: chi of every pair
+};
+
 // What a run's end, output times and histogram times count (run.end or run.end_time):
 //   collisions  collisions per particle, 2 x collisions / N: the work done; a row is the state right
 //               after the collision that completes its count;
@@ -228,6 +239,8 @@ struct RunSpec {
     std::optional<ShearSpec> shear;
     // A thermostat ([thermostat]): a driven gas instead of a freely cooling one.
     std::optional<ThermostatSpec> thermostat;
+    // Set: the Enskog equation (run.equation = "enskog") instead of the Boltzmann equation.
+    std::optional<EnskogSpec> enskog;
     // Positions, streaming and collision cells instead of the homogeneous gas ([domain]).
     std::optional<DomainSpec> domain;
     // Set: each replica starts from this state (initial.from) instead of the Maxwellian at the

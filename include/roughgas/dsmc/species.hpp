@@ -43,8 +43,13 @@ struct PairType {
     std::size_t a = 0, b = 0;
     PairConstants pc; // i from species a, j from species b
     double pairs = 0; // distinct candidate pairs: N_a N_b, or N_a (N_a - 1)/2 for a = b
+    double chi = 1;   // the pair correlation at contact (dsmc/pair_correlation.hpp): 1 in a Boltzmann gas
+    // chi pi sigma^2: what the pair's collision rate is proportional to (the Enskog equation of a
+    // uniform gas, chi times the Boltzmann rate).
+    double rate_section() const { return chi * pc.cross_section; }
 };
-std::vector<PairType> make_pair_types(const std::vector<SpeciesBlock>& species);
+// `chi`: the pair correlation of each pair (pair_index order); empty: 1, the Boltzmann equation.
+std::vector<PairType> make_pair_types(const std::vector<SpeciesBlock>& species, const std::vector<double>& chi = {});
 
 // The mean free path of hard spheres of diameter sigma at number density n, 1/(sqrt(2) pi n sigma^2)
 // (Maxwellian, equal masses): the length collision cells must resolve (with the largest diameter
@@ -74,25 +79,15 @@ template <class Species> double solid_fraction(double density, const std::vector
     return total > 0 ? density * volume / total : 0.0;
 }
 
-// The densest packing of equal spheres, pi/sqrt(18) (Kepler's conjecture, proved by Hales 2005): no
-// gas of hard spheres reaches it.
-inline constexpr double close_packing = 0.74048048969306104;
-
-// The pair correlation at contact of hard spheres at the solid fraction phi, (1 - phi/2)/(1 - phi)^3
-// (Carnahan & Starling 1969): the Enskog factor by which every collision rate exceeds the dilute
-// gas's. For a mixture, that of its total phi: its own factors differ from pair to pair (Mansoori,
-// Carnahan, Starling & Leland 1971), around this one, which is what a warning needs.
-inline double enskog_chi(double phi) { return (1 - phi / 2) / ((1 - phi) * (1 - phi) * (1 - phi)); }
-
 // The Maxwellian collision frequency per grain at the species' temperatures (T_over_m[s] = T_tr,s/m_s):
-// nu = (2/N) sum_ab P_ab pi sigma_ab^2 <g_ab>/V, <g_ab> = sqrt((8/pi)(T_a/m_a + T_b/m_b)). The engine's
+// nu = (2/N) sum_ab P_ab chi_ab pi sigma_ab^2 <g_ab>/V, <g_ab> = sqrt((8/pi)(T_a/m_a + T_b/m_b)). The engine's
 // step length and the shear time step are set in units of 1/nu.
 inline double maxwellian_collision_frequency(const std::vector<PairType>& types, std::span<const double> T_over_m,
                                              double volume, double particles) {
     double nu = 0;
     for (const PairType& t : types) {
         const double mean_g = std::sqrt(8.0 / std::numbers::pi * (T_over_m[t.a] + T_over_m[t.b]));
-        nu += 2.0 * t.pairs * t.pc.cross_section * mean_g / volume / particles;
+        nu += 2.0 * t.pairs * t.rate_section() * mean_g / volume / particles;
     }
     return nu;
 }

@@ -27,6 +27,12 @@ inline constexpr std::array<std::string_view, 2> run_kind_names{"cooling", "shea
 // Values of run.kernel, in the order of CollisionKernel (dsmc/run_spec.hpp).
 inline constexpr std::array<std::string_view, 2> kernel_names{"hard_sphere", "maxwell"};
 
+// Values of run.equation (Boltzmann's for a dilute gas, Enskog's for a moderately dense one) and of
+// run.pair_correlation, in the order of PairCorrelationModel (dsmc/run_spec.hpp).
+enum class KineticEquation { boltzmann, enskog };
+inline constexpr std::array<std::string_view, 2> equation_names{"boltzmann", "enskog"};
+inline constexpr std::array<std::string_view, 2> pair_correlation_names{"carnahan_starling", "constant"};
+
 // How output times are spaced: linear (every output_every) or log (output_every x 10^(k/10)).
 enum class OutputSpacing { linear, log };
 inline constexpr std::array<std::string_view, 2> output_spacing_names{"linear", "log"};
@@ -48,6 +54,12 @@ constexpr std::string_view name(OutputSpacing s) {
 constexpr std::string_view name(GridSpacing s) {
     return grid_spacing_names[static_cast<int>(s)];
 }
+constexpr std::string_view name(KineticEquation e) {
+    return equation_names[static_cast<int>(e)];
+}
+constexpr std::string_view name(PairCorrelationModel m) {
+    return pair_correlation_names[static_cast<int>(m)];
+}
 constexpr std::string_view name(CollisionModel m) {
     return collision_model_names[static_cast<int>(m)];
 }
@@ -65,6 +77,9 @@ struct RunConfig {
     std::int64_t replicas = 1;  // independent runs averaged (columns X_err)
     std::int64_t groups = 0;    // per-step random groups of the DSMC (0: automatic)
     CollisionKernel kernel = CollisionKernel::hard_sphere;
+    KineticEquation equation = KineticEquation::boltzmann;
+    PairCorrelationModel pair_correlation = PairCorrelationModel::carnahan_starling; // enskog
+    std::optional<double> chi; // enskog with pair_correlation = constant
     std::uint64_t seed = 1;
     double end = 0;            // collisions per particle (0 with end_time)
     double output_every = 1.0; // collisions per particle (first output for log spacing)

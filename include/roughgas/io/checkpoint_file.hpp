@@ -62,7 +62,7 @@ struct CheckpointError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-inline constexpr std::uint64_t checkpoint_format_version = 4;
+inline constexpr std::uint64_t checkpoint_format_version = 5;
 
 std::string encode_checkpoint(const RunCheckpoint& c);
 std::string encode_checkpoint(const ReplicaCheckpoint& c);

@@ -27,6 +27,7 @@
 #include "roughgas/observables/theory.hpp"
 
 #include <functional>
+#include <limits>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -124,6 +125,10 @@ class MomentsTable {
     std::vector<double> sonine_; // the *_sonine columns' values (empty: not written)
     std::vector<double> constant_theory_; // a driven gas's steady-state columns (empty: not written)
     bool zeta_ = false;                          // cooling runs: the zeta_star column
+    // Enskog runs: p_theory, from the trajectory at t and the previous row's collisional part.
+    bool enskog_ = false;
+    double t_prev_ = 0, p_coll_prev_ = std::numeric_limits<double>::quiet_NaN();
+    double pressure_theory(double t, const HcsTemperatures& T, double p_coll_mid);
     std::vector<double> prev_T_tr_, prev_cpp_;  // per replica, its previous row's (NaN: none yet)
 };
 

@@ -105,6 +105,11 @@ class HcsTheory {
     HcsTheory(std::vector<HcsSpecies> species, std::vector<ConstantRestitution> pairs, double density,
               std::vector<double> maxwell_T0_tr);
     bool maxwell() const { return !maxwell_T0_.empty(); }
+    // The Enskog equation of a uniform gas (dsmc/pair_correlation.hpp): every frequency nu_ab times the
+    // pair correlation at contact chi_ab (pair_index order, each > 0; the default is 1 for every pair,
+    // the Boltzmann equation). The averages per collision do not change.
+    void set_pair_correlations(std::vector<double> chi);
+    double pair_correlation(std::size_t a, std::size_t b) const { return chi_[pair_index(a, b, species_.size())]; }
 
     std::size_t species_count() const { return species_.size(); }
     const std::vector<HcsSpecies>& species() const { return species_; }
@@ -126,6 +131,7 @@ class HcsTheory {
     std::vector<HcsSpecies> species_;
     std::vector<ConstantRestitution> pairs_;
     double density_;
+    std::vector<double> chi_;        // chi_ab, pair_index order
     std::vector<double> maxwell_T0_; // Maxwell kernel: initial T_tr per species (empty: hard spheres)
 };
 

@@ -1,5 +1,6 @@
 #include "run/setup_warnings.hpp"
 
+#include "roughgas/dsmc/pair_correlation.hpp"
 #include "roughgas/dsmc/species.hpp"
 
 #include <fmt/format.h>
@@ -18,21 +19,32 @@ double largest_edge(const DomainSpec& d) {
 }
 
 // The Boltzmann collision rate is the dilute gas's: a denser gas collides chi times as often
-// (Enskog's factor, dsmc/species.hpp). A homogeneous gas's evolution per collision is the same, so
-// its clock t is what comes out off by chi; in gradients the Enskog transport coefficients differ
-// from the Boltzmann ones by chi and by the collisional transfer of momentum and energy.
+// (Enskog's factor, dsmc/pair_correlation.hpp). A homogeneous gas's evolution per collision is the
+// same, so its clock t is what comes out off by chi, and its pressure lacks the collisional part; in
+// gradients the Enskog transport coefficients differ from the Boltzmann ones by chi and by the
+// collisional transfer of momentum and energy. An Enskog run beyond the freezing point describes a
+// metastable fluid with an extrapolated chi.
 void dense_gas(const RunSpec& spec, std::vector<std::string>& out) {
     const double phi = solid_fraction(spec.density, spec.species);
-    const double chi = enskog_chi(phi);
+    if (spec.enskog) {
+        if (spec.enskog->model == PairCorrelationModel::carnahan_starling && phi > hard_sphere_freezing)
+            out.push_back(fmt::format(
+                "solid fraction phi = {:.3g} (run.density = {:.4g}), above the freezing point of hard spheres, "
+                "phi = {:g} (Hoover & Ree 1968): the uniform fluid the Enskog equation describes is metastable "
+                "there, and Carnahan & Starling's chi = {:.3g} an extrapolation of the fluid's",
+                phi, spec.density, hard_sphere_freezing, carnahan_starling_chi(phi)));
+        return;
+    }
+    const double chi = carnahan_starling_chi(phi);
     if (!(chi - 1 > dense_gas_excess))
         return;
     out.push_back(fmt::format(
         "solid fraction phi = {:.3g} (run.density = {:.4g}): the Boltzmann equation describes a dilute gas, but at "
         "this density the grains meet chi = {:.3g} times as often as it says (the pair correlation at contact, "
         "chi = (1 - phi/2)/(1 - phi)^3, Carnahan & Starling 1969; more than {:g} % above 1): the run's clock t, "
-        "its rates and its transport coefficients are off by a factor of about chi, while its collisions per "
-        "particle and what a collision does are not; a dense gas needs the Enskog equation, which roughgas does "
-        "not solve",
+        "its rates and its transport coefficients are off by a factor of about chi, its pressure by the "
+        "collisional part 4 phi chi n T, while its collisions per particle and what a collision does are not; "
+        "run.equation = \"enskog\" solves the Enskog equation of a dense gas",
         phi, spec.density, chi, 100 * dense_gas_excess));
 }
 

@@ -12,7 +12,7 @@
 
 namespace roughgas::cli {
 
-// The enskog warning's threshold on chi - 1 (chi: dsmc/species.hpp's enskog_chi): 5 %, reached at
+// The dense-gas warning's threshold on chi - 1 (chi: dsmc/pair_correlation.hpp's carnahan_starling_chi): 5 %, reached at
 // the solid fraction phi = 0.0193.
 inline constexpr double dense_gas_excess = 0.05;
 // The grains per cell below which a box's cells hold too few grains for independent collisions:

@@ -96,6 +96,38 @@ void check_maxwell_kernel(BuildContext& ctx, const CaseConfig& c) {
     }
 }
 
+// run.equation = "enskog": its chi (a constant needs run.chi, and run.chi needs a constant), and the
+// runs it is solved for: the homogeneous gas, cooling or driven.
+void check_equation(BuildContext& ctx, const CaseConfig& c) {
+    const toml::table* run = ctx.root()["run"].as_table();
+    const auto given = [&](const char* key) { return run != nullptr && run->get(key) != nullptr; };
+    if (c.run.equation != KineticEquation::enskog) {
+        for (const char* key : {"pair_correlation", "chi"})
+            if (given(key))
+                ctx.add(std::string("run.") + key,
+                        fmt::format("run.{}: the pair correlation of the Enskog equation, but this run solves the "
+                                    "Boltzmann equation (set run.equation = \"enskog\", or leave run.{} out)",
+                                    key, key));
+        return;
+    }
+    if (c.run.pair_correlation == PairCorrelationModel::constant && !c.run.chi)
+        ctx.add("run.chi", fmt::format("run.chi: required key is missing with run.pair_correlation = \"constant\" "
+                                       "(must be {})",
+                                       expectation(*find_key("run.chi"))));
+    if (c.run.pair_correlation != PairCorrelationModel::constant && c.run.chi)
+        ctx.add("run.chi", fmt::format("run.chi = {}: a constant chi, but run.pair_correlation = \"{}\" computes it "
+                                       "from the solid fraction (set run.pair_correlation = \"constant\", or leave "
+                                       "run.chi out)",
+                                       *c.run.chi, name(c.run.pair_correlation)));
+    if (c.domain)
+        ctx.add("run.equation", "run.equation = \"enskog\" with [domain]: the Enskog equation is solved for the "
+                                "homogeneous gas (no [domain]), cooling or driven; a box solves the Boltzmann "
+                                "equation (must be \"boltzmann\" here)");
+    else if (c.run.kind == RunKind::shear)
+        ctx.add("run.equation", "run.equation = \"enskog\" with run.kind = \"shear\": the Enskog equation is "
+                                "solved for the homogeneous gas, cooling or driven (must be \"boltzmann\" here)");
+}
+
 } // namespace
 
 RunConfig build_run(const Reader& r) {
@@ -106,6 +138,9 @@ RunConfig build_run(const Reader& r) {
     c.replicas = r.integer("replicas");
     c.groups = r.integer("groups");
     c.kernel = r.choice<CollisionKernel>("kernel", kernel_names);
+    c.equation = r.choice<KineticEquation>("equation", equation_names);
+    c.pair_correlation = r.choice<PairCorrelationModel>("pair_correlation", pair_correlation_names);
+    c.chi = r.opt_real("chi");
     c.seed = static_cast<std::uint64_t>(r.integer("seed"));
     c.end = r.opt_real("end").value_or(0.0);
     c.end_time = r.opt_real("end_time");
@@ -172,6 +207,7 @@ void check_rows(BuildContext& ctx, const char* key, double every, const char* en
 
 void check_run(BuildContext& ctx, const CaseConfig& c) {
     check_clock(ctx, c);
+    check_equation(ctx, c);
     if (c.run.time_clock()) {
         check_rows(ctx, "output_every_time", c.run.output_every_time.value_or(0.0), "end_time", *c.run.end_time,
                    c.run.output_spacing);
@@ -205,6 +241,12 @@ void emit_run(Emitter& e, const RunConfig& r) {
     e.put("replicas", r.replicas);
     e.put("groups", r.groups);
     e.put("kernel", kernel_names[static_cast<int>(r.kernel)]);
+    e.put("equation", equation_names[static_cast<int>(r.equation)]);
+    if (r.equation == KineticEquation::enskog) {
+        e.put("pair_correlation", pair_correlation_names[static_cast<int>(r.pair_correlation)]);
+        if (r.chi)
+            e.put("chi", *r.chi);
+    }
     e.put("seed", r.seed);
     if (r.time_clock()) { // the keys of the time clock, and none of the collision clock's
         e.put("end_time", r.end_time);

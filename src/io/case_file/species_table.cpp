@@ -4,6 +4,7 @@
 
 #include "messages.hpp"
 
+#include "roughgas/dsmc/pair_correlation.hpp"
 #include "roughgas/dsmc/species.hpp"
 
 #include <fmt/format.h>
@@ -42,7 +43,8 @@ void check_packing(BuildContext& ctx, const CaseConfig& c) {
                 fmt::format("run.density = {}: the grains fill the solid fraction phi = {:.4g} (the sum over the "
                             "species of fraction x n (pi/6) (2 R)^3), at or beyond the densest packing of equal spheres, "
                             "pi/sqrt(18) = {:.4f}: no gas (must give phi < {:.4f}; a Boltzmann gas is dilute, "
-                            "phi of order 0.01 or less)",
+                            "phi of order 0.01 or less, and run.equation = \"enskog\" describes a fluid up to "
+                            "about phi = 0.5)",
                             c.run.density, phi, close_packing, close_packing));
 }
 

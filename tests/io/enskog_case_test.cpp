@@ -1,0 +1,79 @@
+// run.equation, run.pair_correlation and run.chi: what they accept and refuse, the echo, and the
+// RunSpec's EnskogSpec; and the dense-gas warnings of run and check.
+#include "case_errors.hpp"
+#include "io_test_support.hpp"
+
+#include "roughgas/io/case_file.hpp"
+#include "roughgas/io/run_spec_from_case.hpp"
+
+#include <gtest/gtest.h>
+
+namespace roughgas {
+namespace {
+
+using test::replaced;
+
+// Rough grains of unit diameter at phi = 0.2 (n = 0.382) in the Enskog equation.
+std::string dense_case() {
+    return R"([run]
+particles = 2000
+end = 1.0
+density = 0.382
+equation = "enskog"
+
+[[species]]
+mass = 1.0
+radius = 0.5
+
+[collision]
+model = "constant"
+alpha = 0.9
+beta = 0.4
+)";
+}
+
+using test::error_of;
+using test::refused;
+
+TEST(EnskogCase, CarnahanStarlingByDefaultAConstantOnRequest) {
+    const CaseConfig c = parse_case(dense_case(), "case.toml");
+    EXPECT_EQ(c.run.equation, KineticEquation::enskog);
+    EXPECT_EQ(c.run.pair_correlation, PairCorrelationModel::carnahan_starling);
+    const RunSpec s = run_spec_from_case(c);
+    ASSERT_TRUE(s.enskog.has_value());
+    EXPECT_EQ(s.enskog->model, PairCorrelationModel::carnahan_starling);
+    EXPECT_EQ(parse_case(emit_case(c), "echo.toml"), c);
+    const CaseConfig k = parse_case(
+        replaced(dense_case(), "equation = \"enskog\"", "equation = \"enskog\"\npair_correlation = \"constant\"\nchi = 1.5"),
+        "case.toml");
+    const RunSpec t = run_spec_from_case(k);
+    ASSERT_TRUE(t.enskog.has_value());
+    EXPECT_EQ(t.enskog->model, PairCorrelationModel::constant);
+    EXPECT_EQ(t.enskog->chi, 1.5);
+    EXPECT_EQ(parse_case(emit_case(k), "echo.toml"), k);
+    // The Boltzmann equation by default: no EnskogSpec.
+    const CaseConfig b = parse_case(replaced(dense_case(), "equation = \"enskog\"\n", ""), "case.toml");
+    EXPECT_EQ(b.run.equation, KineticEquation::boltzmann);
+    EXPECT_FALSE(run_spec_from_case(b).enskog.has_value());
+}
+
+TEST(EnskogCase, RefusesWhatHasNoMeaning) {
+    const std::string e = "equation = \"enskog\"";
+    EXPECT_TRUE(refused(replaced(dense_case(), e, "equation = \"dense\""), {}, "run.equation"));
+    EXPECT_TRUE(refused(replaced(dense_case(), e, e + "\npair_correlation = \"constant\""), {}, "run.chi: required"));
+    EXPECT_TRUE(refused(replaced(dense_case(), e, e + "\npair_correlation = \"constant\"\nchi = 0.0"), {}, "run.chi"));
+    EXPECT_TRUE(refused(replaced(dense_case(), e, e + "\npair_correlation = \"constant\"\nchi = -2.0"), {}, "run.chi"));
+    EXPECT_TRUE(refused(replaced(dense_case(), e, e + "\nchi = 2.0"), {}, "run.chi = 2: a constant chi"));
+    EXPECT_TRUE(refused(replaced(dense_case(), e, "chi = 2.0"), {}, "run.chi: the pair correlation of the Enskog"));
+    EXPECT_TRUE(refused(replaced(dense_case(), e, "pair_correlation = \"constant\""), {}, "run.pair_correlation"));
+    // At or beyond the densest packing: no gas.
+    EXPECT_TRUE(refused(replaced(dense_case(), "density = 0.382", "density = 1.5"), {}, "run.density = 1.5"));
+    // Not solved for boxes or shear flow.
+    EXPECT_TRUE(refused(dense_case() + "\n[domain]\nsize = [10.0, 10.0, 10.0]\ncells = [4, 4, 4]\n", {},
+                        "run.equation = \"enskog\" with [domain]"));
+    EXPECT_TRUE(refused(replaced(dense_case(), "[run]", "[run]\nkind = \"shear\"") + "\n[shear]\nrate = 0.1\n", {},
+                        "run.equation = \"enskog\" with run.kind = \"shear\""));
+}
+
+} // namespace
+} // namespace roughgas
