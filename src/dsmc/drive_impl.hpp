@@ -138,6 +138,8 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
                       std::max(1, spec.threads), pair_correlations(spec)});
     if (spec.thermostat)
         engine.set_thermostat(*spec.thermostat);
+    if (spec.enskog && spec.shear) // collisions a diameter apart across the shear flow
+        engine.set_enskog_shear(spec.shear->rate);
 
     const std::size_t S = blocks.size();
     const std::vector<SpeciesSlice> slices = species_slices(blocks);
@@ -188,7 +190,9 @@ ReplicaEnd drive(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, s
         if (spec.shear) {
             const PressureTensor P =
                 pressure_tensor(engine.store().velocities(), slices, engine.volume(), m.mean_velocity);
-            append_shear_columns(row, P, Omega, spec.shear->rate, usf_species, spec.density, m.all.T_tr);
+            append_shear_columns(row, P, Omega, spec.shear->rate, usf_species, spec.density, m.all.T_tr,
+                                 spec.enskog ? std::optional(collisional_pressure_tensor(tally, engine.volume(), inv_dt))
+                                             : std::nullopt);
         }
         append_row_tail(row, m, tally, types, blocks, inv_dt, clamp_column);
         if (row.size() != columns)

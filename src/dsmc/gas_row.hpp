@@ -10,8 +10,10 @@
 #include "roughgas/observables/pressure.hpp"
 
 #include <algorithm>
+#include <array>
 #include <span>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace roughgas::detail {
@@ -24,12 +26,22 @@ struct Tally {
     // (docs/model.md §3), and sigma_ab times it is what the collision adds to the collisional transfer
     // of momentum of the Enskog equation (append_pressure_columns).
     std::vector<double> impulse;
+    // The sheared Enskog gas (Engine::set_enskog_shear): sum of sigma n_k J_l over the collisions, J the
+    // impulse on the grain at r_j + sigma n: momentum l carried along k across the grains' distance
+    // (row-major, k the direction).
+    std::array<double, 9> transfer{};
     std::int64_t clamped = 0;           // all collisions so far with beta clamped
     void operator()(const CollisionRecord& r, std::size_t k) {
         dE += r.dE_tr + r.dE_rot;
         ++per_type[k];
         impulse[k] += (1 + r.alpha) * r.g_n;
         clamped += r.beta_clamped;
+    }
+    void transfer_of(const Vec3& sigma_n, const Vec3& J) {
+        const double a[3] = {sigma_n.x, sigma_n.y, sigma_n.z}, b[3] = {J.x, J.y, J.z};
+        for (int k = 0; k < 3; ++k)
+            for (int l = 0; l < 3; ++l)
+                transfer[static_cast<std::size_t>(3 * k + l)] += a[k] * b[l];
     }
     // Sized for `types` pair types, every sum 0.
     void assign(std::size_t types) {
@@ -52,6 +64,8 @@ struct Tally {
             per_type[k] += o.per_type[k];
             impulse[k] += o.impulse[k];
         }
+        for (std::size_t k = 0; k < transfer.size(); ++k)
+            transfer[k] += o.transfer[k];
         clamped += o.clamped;
     }
     // In a checkpoint (core/bytes.hpp); load() resizes the arrays to what was saved.
@@ -61,6 +75,8 @@ struct Tally {
         for (std::int64_t x : per_type)
             w.put(x);
         for (double x : impulse)
+            w.f64(x);
+        for (double x : transfer)
             w.f64(x);
         w.put(clamped);
     }
@@ -72,6 +88,8 @@ struct Tally {
         impulse.resize(per_type.size());
         for (double& x : impulse)
             x = r.f64();
+        for (double& x : transfer)
+            x = r.f64();
         clamped = r.get<std::int64_t>();
     }
     // After a row: the interval sums start again (clamped counts the whole run).
@@ -79,6 +97,7 @@ struct Tally {
         dE = 0;
         std::fill(per_type.begin(), per_type.end(), 0);
         std::fill(impulse.begin(), impulse.end(), 0.0);
+        transfer.fill(0.0);
     }
 };
 
@@ -147,15 +166,36 @@ inline void append_row_tail(std::vector<double>& row, const Moments& m, const Ta
         row.push_back(static_cast<double>(tally.clamped));
 }
 
-// The shear columns (shear runs: dsmc_columns, dsmc/run.hpp) from the pressure tensor P, the mean
-// spin Omega and the gas temperature T: P_ij, Omega, then the reduced a*, eta*, P*_ij, N1*, N2*.
+// The collisional transfer part of the pressure tensor of a sheared Enskog gas over the interval since
+// the previous row, from the tally's sums: P_coll,kl = flux along k of l-momentum, (xx, yy, zz, xy, xz,
+// yz) = (sigma n_x J_x, sigma n_y J_y, sigma n_z J_z, sigma n_y J_x, sigma n_z J_x, sigma n_z J_y) per
+// unit volume and time: xy is the flux along y of x-momentum, the shear stress of u = a y x^ (for
+// rough grains the tangential impulses make the whole tensor asymmetric; these are the fluxes along
+// the gradient's directions). NaN in the first row.
+inline PressureTensor collisional_pressure_tensor(const Tally& tally, double volume, double inv_dt) {
+    const double f = inv_dt / volume;
+    const std::array<double, 9>& t = tally.transfer;
+    return {t[0] * f, t[4] * f, t[8] * f, t[3] * f, t[6] * f, t[7] * f};
+}
+
+// The shear columns (shear runs: dsmc_columns, dsmc/run.hpp) from the kinetic pressure tensor P, the
+// mean spin Omega and the gas temperature T: P_ij, Omega, then the reduced a*, eta*, P*_ij, N1*, N2*
+// of the whole pressure tensor, P plus `P_coll` (a sheared Enskog gas, then also its P_coll_ij last).
 inline void append_shear_columns(std::vector<double>& row, const PressureTensor& P, const Vec3& Omega, double rate,
-                                 const std::vector<UsfSpecies>& species, double density, double T) {
-    const UsfReduced r = usf_reduced(P, rate, usf_nu(species, density, T), density, T);
+                                 const std::vector<UsfSpecies>& species, double density, double T,
+                                 const std::optional<PressureTensor>& P_coll = std::nullopt) {
+    PressureTensor total = P;
+    if (P_coll)
+        total = {P.xx + P_coll->xx, P.yy + P_coll->yy, P.zz + P_coll->zz,
+                 P.xy + P_coll->xy, P.xz + P_coll->xz, P.yz + P_coll->yz};
+    const UsfReduced r = usf_reduced(total, rate, usf_nu(species, density, T), density, T);
     for (double x : {P.xx, P.yy, P.zz, P.xy, P.xz, P.yz, Omega.x, Omega.y, Omega.z, r.a_star, r.eta_star,
                      r.P_star.xx, r.P_star.yy, r.P_star.zz, r.P_star.xy, r.P_star.xz, r.P_star.yz, r.N1_star,
                      r.N2_star})
         row.push_back(x);
+    if (P_coll)
+        for (double x : {P_coll->xx, P_coll->yy, P_coll->zz, P_coll->xy, P_coll->xz, P_coll->yz})
+            row.push_back(x);
 }
 
 } // namespace roughgas::detail

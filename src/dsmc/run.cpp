@@ -104,8 +104,9 @@ void validate(const RunSpec& spec) {
         require(spec.enskog->model != PairCorrelationModel::constant ||
                     (std::isfinite(spec.enskog->chi) && spec.enskog->chi > 0),
                 "a constant pair correlation chi must be > 0");
-        require(!spec.domain && !spec.shear, "the Enskog equation is solved for the homogeneous gas, cooling or "
-                                             "driven (not in a box, nor in shear flow)");
+        require(!spec.domain, "the Enskog equation is solved for the homogeneous gas (not in a box)");
+        require(!spec.shear || spec.kernel == CollisionKernel::hard_sphere,
+                "the sheared Enskog gas needs the hard-sphere kernel");
     }
     if (spec.shear) {
         require(std::isfinite(spec.shear->rate) && spec.shear->rate > 0, "shear rate must be > 0");
@@ -244,6 +245,9 @@ std::vector<Column> dsmc_columns(const RunSpec& spec) {
                                : name.starts_with("omega")                        ? "1/time"
                                                                                   : "-"});
         }
+        if (spec.enskog) // the collisional transfer part (dsmc/gas_row.hpp)
+            for (const char* q : {"P_coll_xx", "P_coll_yy", "P_coll_zz", "P_coll_xy", "P_coll_xz", "P_coll_yz"})
+                c.push_back({q, "energy/volume"});
     }
     const std::size_t S = spec.species.size();
     if (S > 1) {

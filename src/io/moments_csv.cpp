@@ -97,6 +97,7 @@ MomentsTable::MomentsTable(const RunSpec& spec)
         if (replicas_ > 1)
             columns_.push_back({c.name + "_err", c.unit});
     }
+    enskog_ = spec.enskog.has_value();
     zeta_ = !spec.shear;
     if (zeta_) {
         columns_.push_back({"zeta_star", "-"});
@@ -141,7 +142,6 @@ MomentsTable::MomentsTable(const RunSpec& spec)
         columns_.push_back({"zeta_star_theory", "-"});
         // The Enskog equation's pressure (observables/enskog_pressure.hpp), as the solver's p: the kinetic
         // part at t, the collisional part averaged over the interval since the previous row.
-        enskog_ = spec.enskog.has_value();
         if (enskog_)
             columns_.push_back({"p_theory", "energy/volume"});
         // The scaled cooling state in the first Sonine approximation, the same in every row, where
@@ -232,8 +232,13 @@ void MomentsTable::check(std::span<const double> row) const {
                                      fmt::format("profile field {} is {} at t = {}", name, row[j], t));
             continue;
         }
-        if (base == "coll_rate" || base == "E_diss_rate" || base == "p_coll" || base == "p")
+        if (base == "coll_rate" || base == "E_diss_rate" || base == "p_coll" || base == "p" ||
+            base.starts_with("P_coll_"))
             undefined = first;
+        // A sheared Enskog gas's reduced stresses hold the collisional part, an interval's mean.
+        if (enskog_ && (base == "eta_star" || base == "N1_star" || base == "N2_star" ||
+                        (base.starts_with("P_") && base.ends_with("_star"))))
+            undefined |= first;
         if (base == "theta" || base == "a20" || base == "a11")
             undefined |= zero("T_tr" + suffix);
         if (base == "a02" || base == "a11" || base == "A_cw")
@@ -431,6 +436,14 @@ const std::map<std::string, std::string>& meanings() {
                    "(1 + alpha) g_n the normal impulse a collision moves across the grains' distance sigma_ab: the "
                    "virial of hard spheres); NaN at t = 0"},
         {"p", "run.equation = enskog: p_kin + p_coll, the pressure (NaN at t = 0)"},
+        {"P_coll_xx", "sheared Enskog gas: the collisional transfer part of the pressure tensor, the flux along x of "
+                      "x-momentum, sum of sigma n_x J_x over the collisions since the previous row per volume and "
+                      "time (J the impulse on the grain at r_j + sigma n); NaN at t = 0"},
+        {"P_coll_yy", "as P_coll_xx, along y of y-momentum"},
+        {"P_coll_zz", "as P_coll_xx, along z of z-momentum"},
+        {"P_coll_xy", "as P_coll_xx, along y of x-momentum: the collisional shear stress of u = a y x"},
+        {"P_coll_xz", "as P_coll_xx, along z of x-momentum"},
+        {"P_coll_yz", "as P_coll_xx, along z of y-momentum"},
         {"p_theory", "run.equation = enskog: the Enskog pressure of the Maxwellian approximation's temperatures, its "
                      "kinetic part n T_tr at t plus its collisional part (pi/3) sum_ab n_a n_b chi_ab sigma_ab^3 m_ab "
                      "(1 + alpha_ab) (T_a/m_a + T_b/m_b) averaged over the interval since the previous row, as p "
@@ -503,15 +516,15 @@ const std::map<std::string, std::string>& meanings() {
         {"P_xx", "kinetic pressure tensor (1/V) sum m V_x V_x, V the peculiar velocity (shear runs)"},
         {"P_yy", "(1/V) sum m V_y V_y (shear runs)"},
         {"P_zz", "(1/V) sum m V_z V_z (shear runs)"},
-        {"P_xy", "(1/V) sum m V_x V_y: the shear stress, < 0 (shear runs)"},
+        {"P_xy", "(1/V) sum m V_x V_y: the shear stress, < 0 (shear runs; with run.equation = enskog its kinetic part, P_coll_xy the collisional one)"},
         {"P_xz", "(1/V) sum m V_x V_z: 0 by symmetry (shear runs)"},
         {"P_yz", "(1/V) sum m V_y V_z: 0 by symmetry (shear runs)"},
         {"omega_x", "mean spin Omega_x = sum J omega_x/sum J (shear runs; T_rot is about Omega)"},
         {"omega_y", "mean spin Omega_y (shear runs)"},
         {"omega_z", "mean spin Omega_z (shear runs)"},
         {"a_star", "reduced shear rate a/nu, nu = p/eta_0 = (16/5) n sigma^2 sqrt(pi T_tr/m) (shear runs)"},
-        {"eta_star", "reduced shear viscosity -P_xy_star/a_star (shear runs)"},
-        {"P_xx_star", "P_xx/(n T_tr) (shear runs)"},
+        {"eta_star", "reduced shear viscosity -P_xy_star/a_star (shear runs; the whole stress: in a sheared Enskog gas kinetic and collisional)"},
+        {"P_xx_star", "P_xx/(n T_tr) (shear runs; a sheared Enskog gas: (P_xx + P_coll_xx)/(n T_tr), the whole tensor, NaN at t = 0, as every reduced stress below)"},
         {"P_yy_star", "P_yy/(n T_tr) (shear runs)"},
         {"P_zz_star", "P_zz/(n T_tr) (shear runs)"},
         {"P_xy_star", "P_xy/(n T_tr) (shear runs)"},
@@ -585,6 +598,12 @@ std::string moments_columns_markdown() {
     dense.enskog = EnskogSpec{};
     const MomentsTable t7(dense);
     for (const Column& c : t7.columns())
+        if (!c.name.ends_with("_err"))
+            add(c);
+    RunSpec dense_shear = dense; // the sheared Enskog gas: the collisional stresses after the shear columns
+    dense_shear.shear = ShearSpec{};
+    const MomentsTable t8(dense_shear);
+    for (const Column& c : t8.columns())
         if (!c.name.ends_with("_err"))
             add(c);
     RunSpec driven = one; // a driven gas of smooth grains: its steady-state columns after the cooling ones

@@ -207,5 +207,32 @@ TEST(Enskog, DrivenSteadyStateAgainstTheSonineApproximationAtTheRateNChi) {
     EXPECT_GT(std::pow(chi, 2.0 / 3.0) - 1, 10 * (0.005 + 4 * err / sonine));
 }
 
+TEST(Enskog, ShearedGasCarriesStressAcrossTheGrainsAndTurnsTheSpins) {
+    // Rough grains (alpha = 0.9, beta = 0.5) at phi = 0.25 sheared at a = 0.5 (a* from 0.18 to 0.5):
+    // the collisional stress tensor's trace is the virial's p_coll (the same collisions, two sums),
+    // its shear stress is negative (momentum carried down the gradient), and the shifted collisions
+    // turn the mean spin towards half the vorticity, -a/2, where the Boltzmann gas keeps it at 0.
+    RunSpec s = dense_gas(0.25, {0.9, 0.5}, 10000, 20, 1.0);
+    s.shear = ShearSpec{0.5, 0.2};
+    const Rows E = run(s);
+    const auto at = [&](const std::vector<double>& row, const char* q) { return row[column(s, q)]; };
+    for (std::size_t k = 1; k < E.size(); ++k) {
+        const double trace = (at(E[k], "P_coll_xx") + at(E[k], "P_coll_yy") + at(E[k], "P_coll_zz")) / 3;
+        EXPECT_NEAR(trace, at(E[k], "p_coll"), 1e-12 * at(E[k], "p_coll")) << "row " << k;
+        EXPECT_LT(at(E[k], "P_coll_xy"), 0.0) << "row " << k;
+        EXPECT_LT(at(E[k], "P_xy"), 0.0) << "row " << k;
+        // eta* is of the whole stress: kinetic and collisional.
+        const double P_star_xy = (at(E[k], "P_xy") + at(E[k], "P_coll_xy")) / (s.density * at(E[k], "T_tr"));
+        EXPECT_NEAR(at(E[k], "P_xy_star"), P_star_xy, 1e-12 * std::abs(P_star_xy));
+    }
+    const double Omega = at(E.back(), "omega_z");
+    EXPECT_LT(Omega, -0.25 * 0.5 / 2) << Omega;
+    EXPECT_GT(Omega, -0.5) << Omega;
+    RunSpec b = s;
+    b.enskog.reset();
+    const Rows B = run(b);
+    EXPECT_LT(std::abs(B.back()[column(b, "omega_z")]), 0.02) << B.back()[column(b, "omega_z")];
+}
+
 } // namespace
 } // namespace roughgas

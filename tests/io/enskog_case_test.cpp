@@ -68,11 +68,13 @@ TEST(EnskogCase, RefusesWhatHasNoMeaning) {
     EXPECT_TRUE(refused(replaced(dense_case(), e, "pair_correlation = \"constant\""), {}, "run.pair_correlation"));
     // At or beyond the densest packing: no gas.
     EXPECT_TRUE(refused(replaced(dense_case(), "density = 0.382", "density = 1.5"), {}, "run.density = 1.5"));
-    // Not solved for boxes or shear flow.
+    // Not solved for boxes; sheared only with the hard-sphere kernel.
     EXPECT_TRUE(refused(dense_case() + "\n[domain]\nsize = [10.0, 10.0, 10.0]\ncells = [4, 4, 4]\n", {},
                         "run.equation = \"enskog\" with [domain]"));
-    EXPECT_TRUE(refused(replaced(dense_case(), "[run]", "[run]\nkind = \"shear\"") + "\n[shear]\nrate = 0.1\n", {},
-                        "run.equation = \"enskog\" with run.kind = \"shear\""));
+    const std::string sheared = replaced(dense_case(), "[run]", "[run]\nkind = \"shear\"") + "\n[shear]\nrate = 0.1\n";
+    EXPECT_EQ(error_of(sheared), "");
+    EXPECT_TRUE(refused(replaced(sheared, "[run]", "[run]\nkernel = \"maxwell\""), {},
+                        "run.kernel = \"maxwell\" with run.equation = \"enskog\""));
 }
 
 } // namespace

@@ -78,6 +78,21 @@
 // (seed, thermostat, replica, step, species and chunk): the chunks are fixed by the species' size, so
 // the kicks do not depend on the threads.
 //
+// Sheared Enskog gas (set_enskog_shear; docs/model.md, "Uniform shear flow"). In uniform shear flow
+// u = a y x^ the partner j of a collision sits at r_i - sigma n, where the flow is a sigma n_y slower
+// along x: the relative velocity entering the collision is g_e = g + s n_y x^, s = a sigma_ab, g the
+// peculiar one (Montanero, Garzo, Santos & Brey 1999), and the pair collides at the rate density
+// chi sigma^2 max(0, -g_e.n) = chi sigma^2 max(0, -g.n - s n_x n_y) over the whole sphere of n. With
+// h(n) = max(0, -g.n) and s |n_x n_y| <= s/2 it is sampled by composition: a block pair's candidates
+// come at the rate pairs chi pi sigma^2 (g_max + 2 s) (the integral of h + s/2 over the sphere is
+// pi (|g| + 2 s)), a candidate is taken with probability (|g| + 2 s)/(g_max + 2 s), its n drawn from
+// h (the hard-sphere law) with probability |g|/(|g| + 2 s) and uniformly on the sphere otherwise, and
+// the collision happens with probability max(0, -g_e.n)/(h(n) + s/2). The collision rule then acts
+// on g_e (the partner's velocity shifted by -s n_y x^ and back, so momentum is conserved); the
+// peculiar kinetic energy changes by the rule's change plus s x^.J n_y-terms (the work of the
+// collisional transfer, J the impulse on i), and an observer with transfer_of(sigma n, J) sees each
+// collision's contribution to the collisional transfer of momentum.
+//
 // Pauses. run() stops after a given collision count or before a given time, keeping the pending
 // candidate: stopping and resuming never changes the trajectory, so the output schedule does not
 // influence the results.
@@ -136,7 +151,7 @@ struct EngineOptions {
     // The pair correlation at contact chi of each species pair (pair_index order; empty: 1): the
     // Enskog equation of a uniform gas collides every pair chi times as often as the Boltzmann
     // equation, with the same collision rule (dsmc/pair_correlation.hpp).
-    std::vector<double> pair_correlation;
+    std::vector<double> pair_correlation{};
 };
 
 enum class StopReason { collisions, time, stalled };
@@ -380,6 +395,23 @@ class Engine {
         t_step_end_ = t_;
         for (Group& g : groups_)
             g.t_next = t_;
+    }
+
+    // Uniform shear flow u = a y x^ in the Enskog equation: collisions between grains a diameter apart,
+    // whose flows differ by a sigma n_y (see "Sheared Enskog gas"); from the next step on. 0: none.
+    void set_enskog_shear(double rate) {
+        if (Kernel != CollisionKernel::hard_sphere && rate != 0)
+            throw std::invalid_argument("Engine: the sheared Enskog collision is the hard spheres'");
+        if (!(rate >= 0) || !std::isfinite(rate))
+            throw std::invalid_argument("Engine: the shear rate must be finite and >= 0");
+        shear_shift_.clear();
+        mass_i_.clear();
+        for (const PairType& t : types_) {
+            shear_shift_.push_back(rate * t.pc.sigma);
+            mass_i_.push_back(species_[t.a].grain.mass);
+        }
+        sheared_ = rate > 0;
+        restart_step();
     }
 
     // Drives the gas with `th` (one entry per species) from the next step on; before the first run().
@@ -686,18 +718,25 @@ class Engine {
             const Vec3 g_c = v_i - v_j;
             const double g2 = norm2(g_c);
             bool accepted;
+            Vec3 n_sheared{};
             if constexpr (Kernel == CollisionKernel::maxwell) {
                 accepted = true; // the rate is exact: no thinning
             } else {
-                const double x = uniform01(g.rng) * bp.gmax;
-                accepted = x * x < g2; // with probability |g_c|/g_max
+                if (sheared_) {
+                    accepted = sheared_impact(g, bp, g_c, g2, n_sheared);
+                } else {
+                    const double x = uniform01(g.rng) * bp.gmax;
+                    accepted = x * x < g2; // with probability |g_c|/g_max
+                }
             }
             if (accepted) {
                 const std::size_t sp = Mixture ? bp.species_pair : 0;
                 const PairConstants& pc = types_[sp].pc;
                 const Policy& policy = policies_[sp];
                 CollisionRecord rec;
-                if constexpr (Kernel == CollisionKernel::maxwell) {
+                if (Kernel == CollisionKernel::hard_sphere && sheared_) {
+                    rec = collide_sheared(pc, policy, gi, gj, n_sheared, sp, obs);
+                } else if constexpr (Kernel == CollisionKernel::maxwell) {
                     Vec3 n = uniform_direction(g.rng);
                     if (dot(n, g_c) > 0) // onto the approaching hemisphere: uniform there
                         n = -1.0 * n;
@@ -728,6 +767,44 @@ class Engine {
             g.t_next = g.t + g.exponential(g.rng) * g.inv_rate;
         }
         return done;
+    }
+
+    // The sheared Enskog gas's thinning and direction (see "Sheared Enskog gas"): whether the candidate
+    // of block pair `bp` with peculiar relative velocity g_c collides, and its n.
+    [[gnu::always_inline]] bool sheared_impact(Group& g, const BlockPair& bp, const Vec3& g_c, double g2, Vec3& n) {
+        const double s = shear_shift_[bp.species_pair], g_abs = sqrt_nonneg(g2);
+        if (!(uniform01(g.rng) * (bp.gmax + 2 * s) < g_abs + 2 * s))
+            return false;
+        n = uniform01(g.rng) * (g_abs + 2 * s) < g_abs ? sample_impact_normal(g.rng, g_c, g_abs)
+                                                        : uniform_direction(g.rng);
+        const double gn = -dot(g_c, n); // h(n) = max(0, gn)
+        const double approach = gn - s * n.x * n.y; // -g_e.n
+        return approach > 0 && uniform01(g.rng) * (std::max(gn, 0.0) + 0.5 * s) < approach;
+    }
+
+    // The collision rule on g_e: the partner's velocity shifted by -s n_y x^ for the rule and back.
+    template <class Observer>
+    [[gnu::always_inline]] CollisionRecord collide_sheared(const PairConstants& pc, const Policy& policy,
+                                                           std::uint32_t gi, std::uint32_t gj, const Vec3& n,
+                                                           std::size_t sp, Observer& obs) {
+        const Vec3 shift{-shear_shift_[sp] * n.y, 0.0, 0.0};
+        Vec3& v_i = store_.v(gi);
+        Vec3& v_j = store_.v(gj);
+        const Vec3 v_i0 = v_i;
+        v_j += shift;
+        CollisionRecord rec;
+        if constexpr (Policy::needs_rotation)
+            rec = collide(pc, policy, v_i, store_.w(gi), v_j, store_.w(gj), n);
+        else
+            rec = collide(pc, policy, v_i, v_j, n);
+        v_j -= shift;
+        // The rule counted the partner's energy at its shifted velocity: the peculiar energy's change
+        // differs by -m_j shift.dv_j = shift.J (momentum conservation, J = m_i dv_i on i).
+        const Vec3 J = mass_i_[sp] * (v_i - v_i0);
+        rec.dE_tr += dot(shift, J);
+        if constexpr (requires { obs.transfer_of(n, J); })
+            obs.transfer_of(pc.sigma * n, J);
+        return rec;
     }
 
     // One group: the plain event loop.
@@ -1003,7 +1080,9 @@ class Engine {
             // (1 + 1e-12): the computed |g_c| of two grains at their bounds, head-on, may round above
             // the computed sum of the bounds; the inflation keeps the acceptance probability below 1.
             bp.gmax = (X.bound + Y.bound) * (1.0 + 1e-12);
-            const double speed = Kernel == CollisionKernel::maxwell ? maxwell_speed_[bp.species_pair] : bp.gmax;
+            double speed = Kernel == CollisionKernel::maxwell ? maxwell_speed_[bp.species_pair] : bp.gmax;
+            if (sheared_) // the composition's majorant ("Sheared Enskog gas")
+                speed += 2 * shear_shift_[bp.species_pair];
             bp.rate = bp.pairs * types_[bp.species_pair].rate_section() * speed * scale;
             total += bp.rate;
             g.cumulative[k] = total;
@@ -1291,6 +1370,9 @@ class Engine {
     // step's kicks (StepKick).
     std::optional<ThermostatSpec> thermostat_;
     double t_kick_ = 0;
+    // The sheared Enskog gas (set_enskog_shear): a sigma_ab and m_a per pair type.
+    bool sheared_ = false;
+    std::vector<double> shear_shift_, mass_i_;
     std::vector<StepKick> kicks_;
     EngineCounters c_{}; // the engine's own counts (steps, frame, phases); the groups keep the rest
 };

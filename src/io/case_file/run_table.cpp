@@ -97,7 +97,7 @@ void check_maxwell_kernel(BuildContext& ctx, const CaseConfig& c) {
 }
 
 // run.equation = "enskog": its chi (a constant needs run.chi, and run.chi needs a constant), and the
-// runs it is solved for: the homogeneous gas, cooling or driven.
+// runs it is solved for: the homogeneous gas, cooling, driven or sheared (with the hard-sphere kernel).
 void check_equation(BuildContext& ctx, const CaseConfig& c) {
     const toml::table* run = ctx.root()["run"].as_table();
     const auto given = [&](const char* key) { return run != nullptr && run->get(key) != nullptr; };
@@ -121,11 +121,12 @@ void check_equation(BuildContext& ctx, const CaseConfig& c) {
                                        *c.run.chi, name(c.run.pair_correlation)));
     if (c.domain)
         ctx.add("run.equation", "run.equation = \"enskog\" with [domain]: the Enskog equation is solved for the "
-                                "homogeneous gas (no [domain]), cooling or driven; a box solves the Boltzmann "
-                                "equation (must be \"boltzmann\" here)");
-    else if (c.run.kind == RunKind::shear)
-        ctx.add("run.equation", "run.equation = \"enskog\" with run.kind = \"shear\": the Enskog equation is "
-                                "solved for the homogeneous gas, cooling or driven (must be \"boltzmann\" here)");
+                                "homogeneous gas (no [domain]), cooling, driven or sheared; a box solves the "
+                                "Boltzmann equation (must be \"boltzmann\" here)");
+    else if (c.run.kind == RunKind::shear && c.run.kernel == CollisionKernel::maxwell)
+        ctx.add("run.kernel", "run.kernel = \"maxwell\" with run.equation = \"enskog\" and run.kind = \"shear\": "
+                              "the sheared Enskog gas collides grains a diameter apart at the hard spheres' rate, "
+                              "which depends on the flow between them (must be \"hard_sphere\" here)");
 }
 
 } // namespace
