@@ -31,15 +31,17 @@ SphereRule sphere_rule(std::size_t n_polar) {
         for (int it = 0; it < 100; ++it) {
             double p0 = 1, p1 = x;
             for (std::size_t k = 2; k <= N; ++k) {
-                const double p2 = ((2 * static_cast<double>(k) - 1) * x * p1 - (static_cast<double>(k) - 1) * p0) /
-                                  static_cast<double>(k);
+                const double p2 =
+                    ((2 * static_cast<double>(k) - 1) * x * p1 - (static_cast<double>(k) - 1) * p0) /
+                    static_cast<double>(k);
                 p0 = p1;
                 p1 = p2;
             }
             dp = static_cast<double>(N) * (x * p1 - p0) / (x * x - 1);
             const double dx = p1 / dp;
             x -= dx;
-            if (std::abs(dx) < 1e-16) break;
+            if (std::abs(dx) < 1e-16)
+                break;
         }
         z[i] = x;
         wz[i] = 2 / ((1 - x * x) * dp * dp);
@@ -49,7 +51,8 @@ SphereRule sphere_rule(std::size_t n_polar) {
     // full grid has 2N azimuths, 2 pi (k + 1/2)/(2N), of which the first N lie in [0, pi).
     SphereRule rule;
     for (std::size_t i = 0; i < N; ++i) {
-        if (z[i] <= 0) continue;
+        if (z[i] <= 0)
+            continue;
         const double s = std::sqrt(1 - z[i] * z[i]);
         for (std::size_t k = 0; k < N; ++k) {
             const double ph = pi * (static_cast<double>(k) + 0.5) / static_cast<double>(N);
@@ -66,7 +69,9 @@ const SphereRule& base_rule() {
     static const SphereRule rule = sphere_rule(32);
     return rule;
 }
-std::size_t polar_nodes_for(double A) { return A <= 6 ? 32 : 16 * static_cast<std::size_t>(std::ceil(A / 3)); }
+std::size_t polar_nodes_for(double A) {
+    return A <= 6 ? 32 : 16 * static_cast<std::size_t>(std::ceil(A / 3));
+}
 
 // <Theta(h) h^k w^p> over w = (V_i - V_j).n ~ N(0, 2) (m = T = 1), h = -(w + b) = -g.n, in terms of
 // beta = b/2: with w = -2u, h = 2(u - beta), the average is 2^(k+p) int_beta^inf (u - beta)^k (-u)^p
@@ -134,7 +139,8 @@ LinearMoments linear_moments(double alpha, double phi, double chi, double a_star
     for (std::size_t q = 0; q < rule.w.size(); ++q) {
         const std::array<double, 3>& n = rule.n[q];
         const double w = rule.w[q];
-        // b = a sigma n_x n_y shifts g.n; beta = b/v0, v0 = 2 sqrt(T/m) (w = v0 x, x of density e^(-x^2)/sqrt(pi)).
+        // b = a sigma n_x n_y shifts g.n; beta = b/v0, v0 = 2 sqrt(T/m) (w = v0 x, x of density
+        // e^(-x^2)/sqrt(pi)).
         const GaussianCut G(A * n[0] * n[1] / 2);
         // Grad's factor averaged over the centre-of-mass velocity and the relative velocity normal to n:
         // 1 + c_nn (w^2/4 - 1/2); times W_perp it leaves w (I - n n) c n.
@@ -151,7 +157,8 @@ LinearMoments linear_moments(double alpha, double phi, double chi, double a_star
         add_nn(m.collisional0, w * ap / 4 * C0, n);
         for (std::size_t e = 0; e < basis.size(); ++e) {
             const Basis& E = basis[e];
-            const double cnn = E.xx * n[0] * n[0] + E.yy * n[1] * n[1] + E.zz * n[2] * n[2] + 2 * E.xy * n[0] * n[1];
+            const double cnn =
+                E.xx * n[0] * n[0] + E.yy * n[1] * n[1] + E.zz * n[2] * n[2] + 2 * E.xy * n[0] * n[1];
             const double cn[3] = {E.xx * n[0] + E.xy * n[1], E.xy * n[0] + E.yy * n[1], E.zz * n[2]};
             add_nn(m.production[e], w * (T - 2 * U) * cnn, n);
             UsfTensor& P = m.production[e];
@@ -186,9 +193,12 @@ UsfTensor combine(const UsfTensor& t0, const std::array<UsfTensor, 3>& t, const 
 }
 
 void check_parameters(double alpha, double phi, double chi) {
-    if (!(alpha >= 0 && alpha <= 1)) throw std::invalid_argument("Enskog USF theory: alpha must be in [0, 1]");
-    if (!(phi >= 0 && phi < 1)) throw std::invalid_argument("Enskog USF theory: phi must be in [0, 1)");
-    if (!(chi > 0 && std::isfinite(chi))) throw std::invalid_argument("Enskog USF theory: chi must be finite and > 0");
+    if (!(alpha >= 0 && alpha <= 1))
+        throw std::invalid_argument("Enskog USF theory: alpha must be in [0, 1]");
+    if (!(phi >= 0 && phi < 1))
+        throw std::invalid_argument("Enskog USF theory: phi must be in [0, 1)");
+    if (!(chi > 0 && std::isfinite(chi)))
+        throw std::invalid_argument("Enskog USF theory: chi must be finite and > 0");
 }
 
 // For a given a*, the yy, zz and xy balances fix c (coordinates on the basis above); returns them and
@@ -219,17 +229,22 @@ Closure close_at(double alpha, double phi, double chi, double a_star) {
     for (int col = 0; col < 3; ++col) {
         int piv = col;
         for (int r = col + 1; r < 3; ++r)
-            if (std::abs(M[r][col]) > std::abs(M[piv][col])) piv = r;
-        if (!(std::abs(M[piv][col]) > 0)) throw std::runtime_error("Enskog USF theory: singular Grad balance");
-        for (int k = 0; k < 4; ++k) std::swap(M[col][k], M[piv][k]);
+            if (std::abs(M[r][col]) > std::abs(M[piv][col]))
+                piv = r;
+        if (!(std::abs(M[piv][col]) > 0))
+            throw std::runtime_error("Enskog USF theory: singular Grad balance");
+        for (int k = 0; k < 4; ++k)
+            std::swap(M[col][k], M[piv][k]);
         for (int r = col + 1; r < 3; ++r) {
             const double f = M[r][col] / M[col][col];
-            for (int k = col; k < 4; ++k) M[r][k] -= f * M[col][k];
+            for (int k = col; k < 4; ++k)
+                M[r][k] -= f * M[col][k];
         }
     }
     for (int r = 2; r >= 0; --r) {
         double s = M[r][3];
-        for (int k = r + 1; k < 3; ++k) s -= M[r][k] * cl.c[static_cast<std::size_t>(k)];
+        for (int k = r + 1; k < 3; ++k)
+            s -= M[r][k] * cl.c[static_cast<std::size_t>(k)];
         cl.c[static_cast<std::size_t>(r)] = s / M[r][r];
     }
     const UsfTensor production = combine(m.production0, m.production, cl.c);
@@ -242,9 +257,11 @@ Closure close_at(double alpha, double phi, double chi, double a_star) {
 EnskogUsfMoments enskog_usf_collisional_moments(double alpha, double phi, double chi, double a_star,
                                                 const UsfTensor& kinetic) {
     check_parameters(alpha, phi, chi);
-    if (!(a_star >= 0 && std::isfinite(a_star))) throw std::invalid_argument("Enskog USF theory: a* must be finite and >= 0");
+    if (!(a_star >= 0 && std::isfinite(a_star)))
+        throw std::invalid_argument("Enskog USF theory: a* must be finite and >= 0");
     const double trace = kinetic.xx + kinetic.yy + kinetic.zz;
-    if (!(std::abs(trace - 3) <= 1e-9)) throw std::invalid_argument("Enskog USF theory: tr P^k/(nT) must be 3");
+    if (!(std::abs(trace - 3) <= 1e-9))
+        throw std::invalid_argument("Enskog USF theory: tr P^k/(nT) must be 3");
     // Traceless c = P^k/(nT) - I on the basis: c_zz = -c_xx - c_yy is implied.
     const std::array<double, 3> c{kinetic.xx - 1, kinetic.yy - 1, kinetic.xy};
     const LinearMoments m = linear_moments(alpha, phi, chi, a_star);
@@ -253,12 +270,14 @@ EnskogUsfMoments enskog_usf_collisional_moments(double alpha, double phi, double
 
 EnskogUsfState enskog_usf_grad(double alpha, double phi, double chi) {
     check_parameters(alpha, phi, chi);
-    if (alpha == 1) throw std::invalid_argument("Enskog USF theory: elastic spheres have no steady shear state");
+    if (alpha == 1)
+        throw std::invalid_argument("Enskog USF theory: elastic spheres have no steady shear state");
     // Bracket the root: the residual is -3 zeta* chi < 0 at a* = 0 and grows like a*^2 eta*.
     double lo = 0, hi = 0.5;
     double r_lo = close_at(alpha, phi, chi, lo).residual, r_hi = close_at(alpha, phi, chi, hi).residual;
     for (int k = 0; r_hi <= 0; ++k) {
-        if (k == 60) throw std::runtime_error("Enskog USF theory: no steady shear rate found");
+        if (k == 60)
+            throw std::runtime_error("Enskog USF theory: no steady shear rate found");
         lo = hi;
         r_lo = r_hi;
         hi *= 2;
@@ -268,7 +287,8 @@ EnskogUsfState enskog_usf_grad(double alpha, double phi, double chi) {
     int side = 0;
     for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) {
         double x = (lo * r_hi - hi * r_lo) / (r_hi - r_lo);
-        if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
+        if (!(x > lo && x < hi))
+            x = 0.5 * (lo + hi);
         const double r = close_at(alpha, phi, chi, x).residual;
         if (r == 0) {
             lo = hi = x;
@@ -277,12 +297,14 @@ EnskogUsfState enskog_usf_grad(double alpha, double phi, double chi) {
         if (r < 0) {
             lo = x;
             r_lo = r;
-            if (side == -1) r_hi /= 2;
+            if (side == -1)
+                r_hi /= 2;
             side = -1;
         } else {
             hi = x;
             r_hi = r;
-            if (side == 1) r_lo /= 2;
+            if (side == 1)
+                r_lo /= 2;
             side = 1;
         }
     }
@@ -293,8 +315,8 @@ EnskogUsfState enskog_usf_grad(double alpha, double phi, double chi) {
     s.a_star = a_star;
     s.kinetic = {1 + cl.c[0], 1 + cl.c[1], 1 - cl.c[0] - cl.c[1], cl.c[2]};
     s.collisional = combine(cl.moments.collisional0, cl.moments.collisional, cl.c);
-    s.total = {s.kinetic.xx + s.collisional.xx, s.kinetic.yy + s.collisional.yy, s.kinetic.zz + s.collisional.zz,
-               s.kinetic.xy + s.collisional.xy};
+    s.total = {s.kinetic.xx + s.collisional.xx, s.kinetic.yy + s.collisional.yy,
+               s.kinetic.zz + s.collisional.zz, s.kinetic.xy + s.collisional.xy};
     s.eta_star = -s.total.xy / a_star;
     s.N1 = s.total.xx - s.total.yy;
     s.N2 = s.total.yy - s.total.zz;

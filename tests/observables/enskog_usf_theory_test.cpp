@@ -1,7 +1,8 @@
-// The Enskog equation's steady uniform shear flow in Grad's approximation (observables/enskog_usf_theory.hpp):
-// its dilute limit (the Boltzmann Grad USF, closed form), its elastic limit (Enskog's Navier-Stokes shear
-// viscosity), the unsheared pressure, the energy balance of elastic collisions under shear, the small-shear
-// coefficients of the collisional moments, and the steady balances themselves.
+// The Enskog equation's steady uniform shear flow in Grad's approximation
+// (observables/enskog_usf_theory.hpp): its dilute limit (the Boltzmann Grad USF, closed form), its elastic
+// limit (Enskog's Navier-Stokes shear viscosity), the unsheared pressure, the energy balance of elastic
+// collisions under shear, the small-shear coefficients of the collisional moments, and the steady balances
+// themselves.
 //
 // Tolerances: at a* = 0 or phi = 0 the integrand over the contact direction is a polynomial of degree <= 6
 // in n, which the quadrature integrates exactly, so those checks hold to rounding (1e-12 relative). With
@@ -24,29 +25,33 @@ constexpr double pi = std::numbers::pi;
 
 // The dilute (Boltzmann) Grad USF of smooth inelastic spheres: the collisional moment of n m <V V> is
 // -n T nu chi [beta c + zeta* I] with beta = (1 + alpha)(3 - alpha)/4 and zeta* = (5/12)(1 - alpha^2), so the
-// yy and zz balances give P*_yy = P*_zz = 1 - zeta*/beta, the xy balance P*_xy = -a* P*_yy/(chi beta), and the
-// energy balance -2 a* P*_xy = 3 chi zeta* the shear rate.
+// yy and zz balances give P*_yy = P*_zz = 1 - zeta*/beta, the xy balance P*_xy = -a* P*_yy/(chi beta), and
+// the energy balance -2 a* P*_xy = 3 chi zeta* the shear rate.
 struct DiluteGrad {
     double a_star, eta_star, Pyy;
 };
 DiluteGrad dilute_grad(double alpha, double chi) {
     const double zeta = 5.0 / 12.0 * (1 - alpha * alpha), beta = (1 + alpha) * (3 - alpha) / 4;
-    return {chi * beta * std::sqrt(1.5 * zeta / (beta - zeta)), (beta - zeta) / (chi * beta * beta), 1 - zeta / beta};
+    return {chi * beta * std::sqrt(1.5 * zeta / (beta - zeta)), (beta - zeta) / (chi * beta * beta),
+            1 - zeta / beta};
 }
 
 // Enskog's Navier-Stokes shear viscosity of elastic hard spheres in the first Sonine approximation, over
-// eta_0 = (5/16 sigma^2) sqrt(m T/pi): the kinetic part (1 + (8/5) phi chi)/chi, times (1 + (8/5) phi chi) for
-// the collisional transfer of the kinetic stress, plus (3/5) kappa/eta_0 = (768/(25 pi)) phi^2 chi, the
-// transfer by the shear of the pair at contact (3/5 of the bulk viscosity kappa = (1024/(25 pi)) phi^2 chi eta_0).
+// eta_0 = (5/16 sigma^2) sqrt(m T/pi): the kinetic part (1 + (8/5) phi chi)/chi, times (1 + (8/5) phi chi)
+// for the collisional transfer of the kinetic stress, plus (3/5) kappa/eta_0 = (768/(25 pi)) phi^2 chi, the
+// transfer by the shear of the pair at contact (kappa = (256/(5 pi)) phi^2 chi eta_0, the bulk viscosity).
 double enskog_viscosity(double phi, double chi) {
     const double k = 1 + 1.6 * phi * chi;
     return k * k / chi + 768 / (25 * pi) * phi * phi * chi;
 }
 
-double relative(double x, double y) { return std::abs(x - y) / std::abs(y); }
+double relative(double x, double y) {
+    return std::abs(x - y) / std::abs(y);
+}
 
 TEST(EnskogUsfTheory, DiluteLimitIsBoltzmannGrad) {
-    // The closed form's values, also found by Monte Carlo of the collision rule (scripts/enskog_usf_reference.py).
+    // The closed form's values, also found by Monte Carlo of the collision rule
+    // (scripts/enskog_usf_reference.py).
     EXPECT_NEAR(dilute_grad(0.9, 1).a_star, 0.3586985, 1e-7);
     EXPECT_NEAR(dilute_grad(0.9, 1).eta_star, 0.9229423, 1e-7);
     for (double alpha : {0.9, 0.7, 0.5, 0.0})
@@ -62,8 +67,8 @@ TEST(EnskogUsfTheory, DiluteLimitIsBoltzmannGrad) {
             EXPECT_EQ(s.collisional.xx, 0);
             EXPECT_EQ(s.collisional.xy, 0);
         }
-    // phi -> 0 is continuous: the dense corrections are O(phi chi) (collisional transfer, coefficient ~ 1-4 in
-    // eta*), so at phi = 1e-6 they are below 1e-5.
+    // phi -> 0 is continuous: the dense corrections are O(phi chi) (collisional transfer, coefficient ~ 1-4
+    // in eta*), so at phi = 1e-6 they are below 1e-5.
     const EnskogUsfState s = enskog_usf_grad(0.7, 1e-6, 1.0);
     EXPECT_LT(relative(s.eta_star, dilute_grad(0.7, 1).eta_star), 1e-5);
     EXPECT_GT(relative(s.eta_star, dilute_grad(0.7, 1).eta_star), 1e-8);
@@ -75,7 +80,8 @@ TEST(EnskogUsfTheory, ElasticLimitIsEnskogNavierStokesViscosity) {
         const double eta = enskog_viscosity(phi, chi);
         // eta*(alpha) approaches its elastic limit linearly in delta = 1 - alpha (a*^2 ~ delta); Richardson's
         // extrapolation from delta = 1e-4 and 2e-4 leaves O(delta^2) ~ 1e-8 relative.
-        const EnskogUsfState s1 = enskog_usf_grad(1 - 1e-4, phi, chi), s2 = enskog_usf_grad(1 - 2e-4, phi, chi);
+        const EnskogUsfState s1 = enskog_usf_grad(1 - 1e-4, phi, chi),
+                             s2 = enskog_usf_grad(1 - 2e-4, phi, chi);
         EXPECT_LT(relative(2 * s1.eta_star - s2.eta_star, eta), 1e-6) << phi;
         // Without extrapolation the slope shows: ~0.6 eta delta.
         EXPECT_GT(relative(s1.eta_star, eta), 1e-6);
@@ -101,7 +107,8 @@ TEST(EnskogUsfTheory, UnshearedPressureAndCooling) {
             EXPECT_NEAR(m.collisional.xy, 0, 1e-14);
             // Maxwellian cooling: Lambda_ij = -n T zeta delta_ij, zeta = chi (5/12)(1 - alpha^2) nu.
             const double zeta = chi * 5.0 / 12.0 * (1 - alpha * alpha);
-            for (double d : {m.production.xx, m.production.yy, m.production.zz}) EXPECT_NEAR(d, -zeta, 1e-12);
+            for (double d : {m.production.xx, m.production.yy, m.production.zz})
+                EXPECT_NEAR(d, -zeta, 1e-12);
             EXPECT_NEAR(m.production.xy, 0, 1e-14);
             if (alpha == 1.0) {
                 EXPECT_NEAR(1 + m.collisional.xx, carnahan_starling_compressibility(phi), 1e-12);
@@ -110,9 +117,10 @@ TEST(EnskogUsfTheory, UnshearedPressureAndCooling) {
 }
 
 TEST(EnskogUsfTheory, ShearWorkIsTheOnlyEnergyChangeOfElasticCollisions) {
-    // tr Lambda = -2 a P^c_xy - (1 - alpha^2)(...): with alpha = 1 the kinetic energy changes only by the work of
-    // the shear on the colliding pair, for any a* and any Grad distribution. This ties the production's
-    // integrals (V_i Delta + Delta Delta) to the collisional transfer's (n Delta) and their prefactors.
+    // tr Lambda = -2 a P^c_xy - (1 - alpha^2)(...): with alpha = 1 the kinetic energy changes only by the
+    // work of the shear on the colliding pair, for any a* and any Grad distribution. This ties the
+    // production's integrals (V_i Delta + Delta Delta) to the collisional transfer's (n Delta) and their
+    // prefactors.
     const UsfTensor grad{1.3, 0.8, 0.9, -0.35};
     for (double phi : {0.1, 0.3})
         for (double a_star : {0.2, 1.0, 2.5}) {
@@ -124,16 +132,19 @@ TEST(EnskogUsfTheory, ShearWorkIsTheOnlyEnergyChangeOfElasticCollisions) {
             // Inelastic: the rest of the energy change is (1 - alpha^2) times one alpha-independent integral.
             const EnskogUsfMoments m5 = enskog_usf_collisional_moments(0.5, phi, chi, a_star, grad);
             const EnskogUsfMoments m8 = enskog_usf_collisional_moments(0.8, phi, chi, a_star, grad);
-            const double loss5 = m5.production.xx + m5.production.yy + m5.production.zz + 2 * a_star * m5.collisional.xy;
-            const double loss8 = m8.production.xx + m8.production.yy + m8.production.zz + 2 * a_star * m8.collisional.xy;
+            const double loss5 =
+                m5.production.xx + m5.production.yy + m5.production.zz + 2 * a_star * m5.collisional.xy;
+            const double loss8 =
+                m8.production.xx + m8.production.yy + m8.production.zz + 2 * a_star * m8.collisional.xy;
             EXPECT_LT(loss5, 0);
             EXPECT_NEAR(loss5 / (1 - 0.25), loss8 / (1 - 0.64), 1e-12 * std::abs(loss8));
         }
 }
 
 TEST(EnskogUsfTheory, SmallShearCoefficients) {
-    // Taylor coefficients of the Maxwellian (c = 0) moments in A = a sigma sqrt(m/T) = a* (96/5) phi/sqrt(pi),
-    // from the closed-form series of the contact integrals integrated over the sphere exactly (sympy):
+    // Taylor coefficients of the Maxwellian (c = 0) moments in A = a sigma sqrt(m/T) = a* (96/5)
+    // phi/sqrt(pi), from the closed-form series of the contact integrals integrated over the sphere exactly
+    // (sympy):
     //   Lambda*_xy = -(2/5)(1 + alpha)(3 alpha - 1) phi chi a*   (Garzo & Dufty's kinetic-viscosity factor),
     //   P*c_xy     = -(384/(25 pi))(1 + alpha) phi^2 chi a*      ((3/5) of the bulk viscosity),
     //   P*c_xx = P*c_yy = 2 (1 + alpha) phi chi + (3/35)(1 + alpha) phi chi A^2,
@@ -148,7 +159,8 @@ TEST(EnskogUsfTheory, SmallShearCoefficients) {
         const EnskogUsfMoments m = enskog_usf_collisional_moments(alpha, phi, chi, a_star, equilibrium);
         const double p0 = 2 * (1 + alpha) * phi * chi;
         EXPECT_LT(relative(m.production.xy / a_star, -0.4 * (1 + alpha) * (3 * alpha - 1) * phi * chi), 1e-4);
-        EXPECT_LT(relative(m.collisional.xy / a_star, -384 / (25 * pi) * (1 + alpha) * phi * phi * chi), 1e-4);
+        EXPECT_LT(relative(m.collisional.xy / a_star, -384 / (25 * pi) * (1 + alpha) * phi * phi * chi),
+                  1e-4);
         EXPECT_LT(relative((m.collisional.xx - p0) / (A * A), 3.0 / 35.0 * (1 + alpha) * phi * chi), 1e-4);
         EXPECT_LT(relative((m.collisional.yy - p0) / (A * A), 3.0 / 35.0 * (1 + alpha) * phi * chi), 1e-4);
         EXPECT_LT(relative((m.collisional.zz - p0) / (A * A), 1.0 / 35.0 * (1 + alpha) * phi * chi), 1e-4);
@@ -203,7 +215,8 @@ TEST(EnskogUsfTheory, AgreesWithMonteCarloOfTheCollisionRule) {
         const EnskogUsfState s = enskog_usf_grad(r.alpha, r.phi, carnahan_starling_chi(r.phi));
         const double got[5] = {s.a_star, s.eta_star, s.total.xx, s.total.yy, s.total.zz};
         for (int k = 0; k < 5; ++k)
-            EXPECT_NEAR(got[k], r.value[k], 4 * r.error[k] + 5e-6) << r.alpha << " " << r.phi << " quantity " << k;
+            EXPECT_NEAR(got[k], r.value[k], 4 * r.error[k] + 5e-6)
+                << r.alpha << " " << r.phi << " quantity " << k;
     }
 }
 
@@ -212,8 +225,10 @@ TEST(EnskogUsfTheory, RefusesUnphysicalInput) {
     EXPECT_THROW(enskog_usf_grad(0.5, 1.0, 1.2), std::invalid_argument);
     EXPECT_THROW(enskog_usf_grad(0.5, 0.1, 0.0), std::invalid_argument);
     EXPECT_THROW(enskog_usf_grad(std::nan(""), 0.1, 1.2), std::invalid_argument);
-    EXPECT_THROW(enskog_usf_collisional_moments(0.5, 0.1, 1.2, -1.0, UsfTensor{1, 1, 1, 0}), std::invalid_argument);
-    EXPECT_THROW(enskog_usf_collisional_moments(0.5, 0.1, 1.2, 1.0, UsfTensor{1, 1, 2, 0}), std::invalid_argument);
+    EXPECT_THROW(enskog_usf_collisional_moments(0.5, 0.1, 1.2, -1.0, UsfTensor{1, 1, 1, 0}),
+                 std::invalid_argument);
+    EXPECT_THROW(enskog_usf_collisional_moments(0.5, 0.1, 1.2, 1.0, UsfTensor{1, 1, 2, 0}),
+                 std::invalid_argument);
 }
 
 } // namespace

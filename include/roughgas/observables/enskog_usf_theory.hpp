@@ -31,9 +31,9 @@
 //
 // Limits: phi -> 0 is the Boltzmann Grad USF, Lambda = -n T nu chi [beta c + zeta* I] with
 // beta = (1 + alpha)(3 - alpha)/4, zeta* = (5/12)(1 - alpha^2), whose steady state is
-// a*^2 = 3 chi^2 zeta* beta^2/(2 (beta - zeta*)), eta* = (beta - zeta*)/(chi beta^2), P*_yy = P*_zz = 1 - zeta*/beta.
-// alpha -> 1 (a -> 0) gives Enskog's Navier-Stokes shear viscosity in the first Sonine approximation,
-// eta/eta_0 = (1 + (8/5) phi chi)^2/chi + (768/(25 pi)) phi^2 chi.
+// a*^2 = 3 chi^2 zeta* beta^2/(2 (beta - zeta*)), eta* = (beta - zeta*)/(chi beta^2),
+// P*_yy = P*_zz = 1 - zeta*/beta. alpha -> 1 (a -> 0) gives Enskog's Navier-Stokes shear viscosity in the
+// first Sonine approximation, eta/eta_0 = (1 + (8/5) phi chi)^2/chi + (768/(25 pi)) phi^2 chi.
 //
 // Reduced variables: nu = (16/5) n sigma^2 sqrt(pi T/m) (the dilute gas's p/eta_0, no chi), a* = a/nu,
 // P*_ij = P_ij/(nT), eta* = -P*_xy/a* with P = P^k + P^c, N1* = P*_xx - P*_yy, N2* = P*_yy - P*_zz.
