@@ -1,4 +1,4 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """Independent evaluation of the steady uniform shear flow of the Enskog equation for inelastic
 smooth hard spheres in Grad's approximation (the theory of observables/enskog_usf_theory.hpp).
 
