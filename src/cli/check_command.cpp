@@ -4,6 +4,7 @@
 // would refuse before any work, and the warnings run would give at its set-up (run/setup_warnings.hpp)
 // on stderr; the output directory and the tables are run's alone.
 #include "commands.hpp"
+#include "enskog_note.hpp"
 #include "linear_stability.hpp"
 #include "run/setup.hpp"
 #include "run/setup_warnings.hpp"
@@ -27,11 +28,12 @@ struct CheckOptions {
 
 int run_check(const CheckOptions& o) {
     const CaseConfig cfg = load_case(o.case_file, o.sets, o.use); // throws InputError: exit 2
-    std::optional<std::string> stability;
+    std::optional<std::string> stability, enskog;
     std::vector<std::string> warnings = cfg.unused;
     if (o.use == CaseUse::run) {
         const CasePlan plan = plan_run(cfg, o.case_file, 0, cfg.run.replicas);
         stability = linear_stability_note(plan.spec);
+        enskog = enskog_note(plan.spec);
         warnings = setup_warnings(cfg, plan.spec);
     }
     for (const std::string& w : warnings)
@@ -40,6 +42,8 @@ int run_check(const CheckOptions& o) {
         std::cout << emit_case(cfg);
     } else {
         std::cout << o.case_file << ": valid\n";
+        if (enskog)
+            std::cout << o.case_file << ": " << *enskog << '\n';
         if (stability)
             std::cout << o.case_file << ": " << *stability << '\n';
     }

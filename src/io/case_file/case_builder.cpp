@@ -78,6 +78,7 @@ void note_unused(const BuildContext& ctx, CaseConfig& c) {
     note_unused_collision_keys(ctx.root(), c);
     note_unused_walls(ctx.root(), c);
     note_unused_shear(ctx.root(), c);
+    note_unused_enskog(ctx.root(), c);
     note_unused_material(ctx, c);
 }
 

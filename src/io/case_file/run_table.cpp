@@ -99,17 +99,8 @@ void check_maxwell_kernel(BuildContext& ctx, const CaseConfig& c) {
 // run.equation = "enskog": its chi (a constant needs run.chi, and run.chi needs a constant), and the
 // runs it is solved for: the homogeneous gas, cooling, driven or sheared (with the hard-sphere kernel).
 void check_equation(BuildContext& ctx, const CaseConfig& c) {
-    const toml::table* run = ctx.root()["run"].as_table();
-    const auto given = [&](const char* key) { return run != nullptr && run->get(key) != nullptr; };
-    if (c.run.equation != KineticEquation::enskog) {
-        for (const char* key : {"pair_correlation", "chi"})
-            if (given(key))
-                ctx.add(std::string("run.") + key,
-                        fmt::format("run.{}: the pair correlation of the Enskog equation, but this run solves the "
-                                    "Boltzmann equation (set run.equation = \"enskog\", or leave run.{} out)",
-                                    key, key));
-        return;
-    }
+    if (c.run.equation != KineticEquation::enskog)
+        return; // pair_correlation and chi are kept, not read (note_unused_enskog)
     if (c.run.pair_correlation == PairCorrelationModel::constant && !c.run.chi)
         ctx.add("run.chi", fmt::format("run.chi: required key is missing with run.pair_correlation = \"constant\" "
                                        "(must be {})",
@@ -232,6 +223,19 @@ void check_run(BuildContext& ctx, const CaseConfig& c) {
                 fmt::format("run.histogram_every = {}: after the end of the run (must be <= run.end = {})",
                             c.run.histogram_every, c.run.end));
     }
+}
+
+// The Enskog equation's keys in a run of the Boltzmann equation: kept (a --set may switch the equation),
+// not read, reported as warnings (CaseConfig::unused).
+void note_unused_enskog(const toml::table& root, CaseConfig& c) {
+    const toml::table* run = root["run"].as_table();
+    if (run == nullptr || c.run.equation == KineticEquation::enskog)
+        return;
+    for (const char* key : {"pair_correlation", "chi"})
+        if (run->get(key) != nullptr)
+            c.unused.push_back(fmt::format("run.{} is not used by run.equation = \"boltzmann\" (the pair correlation "
+                                           "of the Enskog equation)",
+                                           key));
 }
 
 void emit_run(Emitter& e, const RunConfig& r) {

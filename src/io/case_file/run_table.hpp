@@ -11,6 +11,7 @@ namespace roughgas::case_file {
 
 RunConfig build_run(const Reader& r);
 void check_run(BuildContext& ctx, const CaseConfig& c);
+void note_unused_enskog(const toml::table& root, CaseConfig& c);
 void emit_run(Emitter& e, const RunConfig& r);
 
 } // namespace roughgas::case_file
