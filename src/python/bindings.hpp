@@ -11,5 +11,6 @@ void bind_run(pybind11::module_& m);          // run_case, resume_run: `roughgas
 void bind_csv(pybind11::module_& m);          // read_csv: a roughgas CSV as one NumPy buffer
 void bind_fields(pybind11::module_& m);       // read_fields: a box run's cell fields (HDF5)
 void bind_restitution(pybind11::module_& m);  // ContactFunctions: eps_N and eps_T over arrays
+void bind_collision(pybind11::module_& m);    // collide: the collision rule over arrays of pairs
 
 } // namespace roughgas::python

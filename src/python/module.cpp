@@ -12,4 +12,5 @@ PYBIND11_MODULE(_roughgas, m) {
     roughgas::python::bind_csv(m);
     roughgas::python::bind_fields(m);
     roughgas::python::bind_restitution(m);
+    roughgas::python::bind_collision(m);
 }
