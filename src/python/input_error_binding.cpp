@@ -12,11 +12,13 @@ namespace py = pybind11;
 namespace roughgas::python {
 
 void bind_input_error(py::module_& m) {
-    py::handle type = PyErr_NewExceptionWithDoc(
+    const auto type = py::reinterpret_steal<py::object>(PyErr_NewExceptionWithDoc(
         "roughgas.InputError",
         "Invalid input: a case's key out of its range, an unknown key, a wrong value; the message is the "
         "command line's (exit status 2). `key`: the first key named, `issues`: (file, key, message) each.",
-        PyExc_ValueError, nullptr);
+        PyExc_ValueError, nullptr));
+    if (!type)
+        throw py::error_already_set();
     m.add_object("InputError", type);
     // The translator looks the type up in the module: no static copy of it outlives the module.
     py::register_exception_translator([](std::exception_ptr p) {
