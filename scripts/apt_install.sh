@@ -8,7 +8,8 @@ for a in "$@"; do
 done
 base=(g++ cmake make ninja-build pkg-config libeigen3-dev libfftw3-dev libboost-dev libboost-math-dev
       libgtest-dev libbenchmark-dev libtomlplusplus-dev libcli11-dev libfmt-dev
-      libopenmpi-dev openmpi-bin libhdf5-dev python3-numpy python3-matplotlib python3-h5py)
+      libopenmpi-dev openmpi-bin libhdf5-dev python3-numpy python3-matplotlib python3-h5py
+      pybind11-dev python3-pybind11 python3-dev python3-pytest python3-venv python3-setuptools python3-wheel)
 packages=()
 for a in "$@"; do
   if [ "$a" = --base ]; then packages+=("${base[@]}"); else packages+=("$a"); fi

@@ -1,20 +1,16 @@
 // roughgas check CASE.toml [--set KEY=VALUE]... : parse and validate only, writing nothing. For a
-// run, the same planning as `roughgas run` (run/setup.hpp: the spec, initial.from's state files, the
-// memory of the replicas held at a time on this machine's threads), so that check refuses what run
-// would refuse before any work, and the warnings run would give at its set-up (run/setup_warnings.hpp)
-// on stderr; the output directory and the tables are run's alone.
+// run, the same planning as `roughgas run` (check_report.hpp: the spec, initial.from's state files,
+// the memory of the replicas held at a time on this machine's threads), so that check refuses what
+// run would refuse before any work, and the warnings run would give at its set-up on stderr; the
+// output directory and the tables are run's alone.
+#include "check_report.hpp"
 #include "commands.hpp"
-#include "enskog_note.hpp"
-#include "linear_stability.hpp"
-#include "run/setup.hpp"
-#include "run/setup_warnings.hpp"
 
 #include "roughgas/io/case_file.hpp"
 
 #include <iostream>
 #include <map>
 #include <memory>
-#include <optional>
 
 namespace roughgas::cli {
 namespace {
@@ -28,25 +24,10 @@ struct CheckOptions {
 
 int run_check(const CheckOptions& o) {
     const CaseConfig cfg = load_case(o.case_file, o.sets, o.use); // throws InputError: exit 2
-    std::optional<std::string> stability, enskog;
-    std::vector<std::string> warnings = cfg.unused;
-    if (o.use == CaseUse::run) {
-        const CasePlan plan = plan_run(cfg, o.case_file, 0, cfg.run.replicas);
-        stability = linear_stability_note(plan.spec);
-        enskog = enskog_note(plan.spec);
-        warnings = setup_warnings(cfg, plan.spec);
-    }
-    for (const std::string& w : warnings)
+    const CheckReport report = check_case(cfg, o.case_file, o.use, o.print);
+    for (const std::string& w : report.warnings)
         std::cerr << o.case_file << ": warning: " << w << '\n';
-    if (o.print) {
-        std::cout << emit_case(cfg);
-    } else {
-        std::cout << o.case_file << ": valid\n";
-        if (enskog)
-            std::cout << o.case_file << ": " << *enskog << '\n';
-        if (stability)
-            std::cout << o.case_file << ": " << *stability << '\n';
-    }
+    std::cout << report.out;
     return exit_ok;
 }
 

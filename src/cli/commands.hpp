@@ -28,6 +28,12 @@ Subcommand add_keys_command(CLI::App& parent); // prints the generated tables of
 // The tables of command-line options of `root` and each of its subcommands (docs/reference.md).
 std::string cli_options_markdown(const CLI::App& root);
 
+struct RunOptions;
+// `roughgas run` with these options in this process alone (no MPI), as the command line runs it
+// without a launcher; the Python module's roughgas.run. Returns the exit status (128 + the signal
+// when SIGINT or SIGTERM stopped it); throws InputError for invalid input.
+int run_in_one_process(const RunOptions& o);
+
 // `roughgas run --resume DIR` (run_command.cpp): continues the run stored in DIR/checkpoint, or,
 // when every replica there has finished, only writes its CSVs.
 int resume_finished_run(const std::string& dir, int threads, bool quiet);

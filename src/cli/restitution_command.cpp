@@ -9,7 +9,9 @@
 #include "roughgas/dsmc/run_spec.hpp"
 
 #include <omp.h>
+#include "parallel_for.hpp"
 #include "quasistatic_warning.hpp"
+#include "restitution_tables.hpp"
 
 #include "roughgas/contact/contact_integrator.hpp"
 #include "roughgas/io/case_file.hpp"
@@ -68,24 +70,6 @@ std::vector<double> grid(double lo, double hi, std::int64_t n, GridSpacing spaci
     return g;
 }
 
-// f(k) for k in [0, n) over OpenMP threads; results go to preallocated slots, so the output order
-// does not depend on the schedule. The first exception is rethrown after the loop.
-template <class F> void parallel_for(std::size_t n, int threads, F&& f) {
-    std::exception_ptr error;
-#pragma omp parallel for schedule(dynamic) num_threads(threads)
-    for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(n); ++k) {
-        try {
-            f(static_cast<std::size_t>(k));
-        } catch (...) {
-#pragma omp critical(roughgas_restitution_error)
-            if (!error)
-                error = std::current_exception();
-        }
-    }
-    if (error)
-        std::rethrow_exception(error);
-}
-
 CsvProvenance provenance(const RestitutionOptions& o, const CaseConfig& cfg, const ContactPair& pc) {
     const auto [i, j] = restitution_species(cfg);
     CsvProvenance p;
@@ -104,48 +88,6 @@ CsvProvenance provenance(const RestitutionOptions& o, const CaseConfig& cfg, con
         si_unit_system_note, // the contact model's [material] is in SI
     };
     return p;
-}
-
-// The cached tables a DSMC run would use for this pair (contact.cache = true), through the case's
-// cache file if it names one; build times go to stderr.
-struct CachedTables {
-    NormalTable normal;
-    TangentialTable tangential;
-};
-
-CachedTables load_or_build_tables(const CaseConfig& cfg, const ContactPair& pc) {
-    std::optional<TableCacheFile> cache;
-    if (!cfg.contact.cache_file.empty()) {
-        cache.emplace(cfg.contact.cache_file);
-        if (!cache->rejected().empty())
-            std::cerr << fmt::format("roughgas: cache file {} rejected ({}): rebuilding\n", cfg.contact.cache_file,
-                                     cache->rejected());
-    }
-    TableCacheFile* file = cache ? &*cache : nullptr;
-    // Exactly the tables a DSMC run of this case uses (dsmc/tables.cpp: the run's g_N range, the
-    // tables' own options), so that `roughgas run` finds them in the cache file instead of building
-    // them again; grid points outside that range are integrated directly by the table, as in a run.
-    const NormalTableOptions nopt{};
-    const RunSpec run_defaults{};
-    TangentialTableOptions topt;
-    topt.g_min = run_defaults.table_g_min;
-    topt.g_max = run_defaults.table_g_max;
-    bool loaded_n = false, loaded_t = false;
-    NormalTable normal = load_or_build<NormalTable>(
-        file, NormalTable::key_for(pc.model, nopt), [&] { return NormalTable::build(pc.model, nopt); },
-        [&](const std::vector<double>& d) { return NormalTable::deserialize(pc.model, nopt, d); }, &loaded_n);
-    TangentialTable tangential = load_or_build<TangentialTable>(
-        file, TangentialTable::key_for(pc, topt), [&] { return TangentialTable::build(pc, topt); },
-        [&](const std::vector<double>& d) { return TangentialTable::deserialize(pc, topt, d); }, &loaded_t);
-    if (cache) cache->save_if_changed();
-    std::cerr << fmt::format("roughgas: eps_N table {}; eps_T table {}\n",
-                             loaded_n ? "loaded from " + cfg.contact.cache_file
-                                      : fmt::format("built in {:.2f} s", normal.build_seconds()),
-                             loaded_t ? "loaded from " + cfg.contact.cache_file
-                                      : fmt::format("built in {:.2f} s ({} samples)", tangential.stats().build_seconds,
-                                                    tangential.stats().breaking.samples + tangential.stats().unbroken.samples +
-                                                        tangential.stats().critical.samples));
-    return {std::move(normal), std::move(tangential)};
 }
 
 int run_restitution(const RestitutionOptions& o) {

@@ -181,13 +181,17 @@ Subcommand add_run_command(CLI::App& parent, const Communicator& comm) {
             }};
 }
 
+int run_in_one_process(const RunOptions& o) {
+    const Communicator one_process{Launch{}};
+    return run_run(o, one_process);
+}
+
 int resume_finished_run(const std::string& dir, int threads, bool quiet) {
     RunOptions o;
     o.resume = dir;
     o.threads = threads;
     o.quiet = quiet;
-    const Communicator one_process{Launch{}};
-    return run_run(o, one_process);
+    return run_in_one_process(o);
 }
 
 } // namespace roughgas::cli

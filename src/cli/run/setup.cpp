@@ -103,7 +103,8 @@ std::unique_ptr<RunSetup> new_run(const RunOptions& o, bool root) {
     if (o.seed_given)
         sets.push_back("run.seed=" + std::to_string(o.seed)); // --seed is --set run.seed=S
     auto s = std::make_unique<RunSetup>();
-    s->cfg = load_case(o.case_file, sets, CaseUse::run); // invalid input: exit 2
+    s->cfg = o.case_text ? parse_case(*o.case_text, o.case_file, sets, CaseUse::run)
+                         : load_case(o.case_file, sets, CaseUse::run); // invalid input: exit 2
     s->dir = o.out;
     if (root) {
         s->lock.lock_if_exists(s->dir); // before its files are checked: another run may be writing them

@@ -28,6 +28,9 @@ namespace roughgas::cli {
 // `roughgas run`'s command line.
 struct RunOptions {
     std::string case_file;
+    // The case's TOML when it comes as text (the Python module's cases from a string or a dict):
+    // then case_file only names it in messages and in the CSVs' '#' lines, and is not read.
+    std::optional<std::string> case_text;
     std::string out;
     std::vector<std::string> sets;
     std::uint64_t seed = 0;
