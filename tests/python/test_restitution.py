@@ -74,3 +74,20 @@ def test_bad_speeds_raise(ice):
 def test_a_case_without_a_contact_model_is_refused(case_path):
     with pytest.raises(roughgas.InputError):
         roughgas.eps_n([1.0], roughgas.Case(case_path("hcs_rough")))
+
+
+def test_a_material_and_a_grain_without_a_case_file(ice):
+    """The ice case's material and grain given as dicts: the same eps_N and eps_T as the case's."""
+    case, normal, tangential = ice
+    material = {"young_modulus": 1.0e10, "poisson_ratio": 0.3, "dissipation": 5.300775e-05,
+                "asperity": 1.0e-6, "friction": 0.014142135623730951}
+    grain = {"radius": 0.01, "mass": 4.188790204786391e-3}
+    contact = {"form": "eq24", "end": "force", "tolerance": 1e-12}
+    assert np.array_equal(roughgas.eps_n(normal["g_N"], material=material, grain=grain, contact=contact),
+                          normal["eps_N"])
+    assert np.array_equal(roughgas.eps_t(tangential["g_N"], tangential["g_T"], material=material, grain=grain,
+                                         contact=contact), tangential["eps_T"])
+    with pytest.raises(TypeError, match="grain="):
+        roughgas.eps_n(normal["g_N"], material=material)
+    with pytest.raises(roughgas.InputError, match="material.poisson_ratio"):
+        roughgas.eps_n(normal["g_N"], material={**material, "poisson_ratio": 0.7}, grain=grain)

@@ -32,25 +32,32 @@ namespace {
 
 using test::column;
 using test::mean_err;
+using Rows = std::vector<std::vector<double>>;
+
+// Smooth grains of unit diameter (m = 1, T = 1) at the solid fraction phi in the Enskog equation,
+// sheared at a* = a/nu(T = 1), nu = (16/5) n sigma^2 sqrt(pi T/m), steps of 0.1 mean free times; 40
+// rows a collision per particle apart.
+Rows sheared_gas(double phi, double alpha, double a_star, std::int64_t N, std::uint64_t seed, RunSpec& s) {
+    s.species = {SpeciesSpec{}};
+    s.pairs = {ConstantRestitution{alpha, -1.0}};
+    s.particles = N;
+    s.density = 6 * phi / std::numbers::pi;
+    s.end = 40;
+    for (int k = 1; k <= 40; ++k)
+        s.output_times.push_back(k);
+    s.seed = seed;
+    s.enskog = EnskogSpec{};
+    s.shear = ShearSpec{a_star * 16.0 / 5.0 * s.density * std::sqrt(std::numbers::pi), 0.1};
+    const auto tables = RestitutionTables::build(s);
+    Rows rows;
+    run_replica(s, *tables, 0, [&](std::span<const double> r) { rows.emplace_back(r.begin(), r.end()); });
+    return rows;
+}
 
 TEST(EnskogShear, ElasticViscosityIsEnskogs) {
     for (const double phi : {0.1, 0.25}) {
         RunSpec s;
-        s.species = {SpeciesSpec{}};
-        s.pairs = {ConstantRestitution{1.0, -1.0}};
-        s.particles = 200000;
-        s.density = 6 * phi / std::numbers::pi;
-        s.end = 40;
-        for (int k = 1; k <= 40; ++k)
-            s.output_times.push_back(k);
-        s.seed = 5;
-        s.enskog = EnskogSpec{};
-        // a* = a/nu ~ 0.05 at T = 1: nu = (16/5) n sigma^2 sqrt(pi T/m).
-        const double nu = 16.0 / 5.0 * s.density * std::sqrt(std::numbers::pi);
-        s.shear = ShearSpec{0.05 * nu, 0.1};
-        const auto tables = RestitutionTables::build(s);
-        std::vector<std::vector<double>> rows;
-        run_replica(s, *tables, 0, [&](std::span<const double> r) { rows.emplace_back(r.begin(), r.end()); });
+        const Rows rows = sheared_gas(phi, 1.0, 0.05, 200000, 5, s);
         std::vector<double> eta;
         for (std::size_t k = 11; k < rows.size(); ++k)
             eta.push_back(rows[k][column(s, "eta_star")]);
@@ -82,19 +89,7 @@ TEST(EnskogShear, SteadyRheologyAgainstGradsApproximation) {
         const double chi = carnahan_starling_chi(phi);
         const EnskogUsfState th = enskog_usf_grad(0.7, phi, chi);
         RunSpec s;
-        s.species = {SpeciesSpec{}};
-        s.pairs = {ConstantRestitution{0.7, -1.0}};
-        s.particles = 100000;
-        s.density = 6 * phi / std::numbers::pi;
-        s.end = 40;
-        for (int k = 1; k <= 40; ++k)
-            s.output_times.push_back(k);
-        s.seed = 9;
-        s.enskog = EnskogSpec{};
-        s.shear = ShearSpec{th.a_star * 16.0 / 5.0 * s.density * std::sqrt(std::numbers::pi), 0.1};
-        const auto tables = RestitutionTables::build(s);
-        std::vector<std::vector<double>> rows;
-        run_replica(s, *tables, 0, [&](std::span<const double> r) { rows.emplace_back(r.begin(), r.end()); });
+        const Rows rows = sheared_gas(phi, 0.7, th.a_star, 100000, 9, s);
         const auto steady = [&](const char* q) {
             std::vector<double> x;
             for (std::size_t k = 11; k < rows.size(); ++k)
