@@ -175,3 +175,22 @@ def test_sigint_stops_a_run_with_a_checkpoint_that_resumes(case_path, tmp_path, 
         "--set", "run.end=100.0")
     assert read_text(tmp_path / "whole" / "moments.csv") == read_text(out / "moments.csv")
     assert len(resumed.moments["t"]) == len(roughgas.load(tmp_path / "whole").moments["t"])
+
+
+def test_tables_are_pandas_frames_when_pandas_is_importable(runs, monkeypatch):
+    """With pandas importable every table is pandas.DataFrame(columns, copy=False) of the same arrays
+    (a stand-in module records the call: pandas is not among the test machine's packages); arrays()
+    stays {column: array}."""
+    import roughgas.result
+
+    class Frame:
+        def __init__(self, columns, copy=True):
+            self.columns, self.copy = columns, copy
+
+    monkeypatch.setattr(roughgas.result, "pandas", type("pandas", (), {"DataFrame": Frame}))
+    base, _ = runs
+    r = roughgas.load(base / "cli")
+    assert isinstance(r.moments, Frame) and r.moments.copy is False
+    assert r.moments.columns is r.arrays("moments")
+    assert all(isinstance(x, Frame) for x in r.replicas) and len(r.replicas) == 2
+    assert isinstance(r.summary, dict)  # the summary row stays a dict of floats
