@@ -1,5 +1,6 @@
 #include "roughgas/io/moments_csv.hpp"
 
+#include "roughgas/dsmc/pair_correlation.hpp"
 #include "roughgas/dsmc/run.hpp"
 #include "roughgas/dsmc/species.hpp"
 #include "roughgas/io/replica_mean.hpp"
@@ -8,6 +9,7 @@
 #include "roughgas/observables/shear_mode.hpp"
 #include "roughgas/observables/driven_steady_state.hpp"
 #include "roughgas/observables/enskog_pressure.hpp"
+#include "roughgas/observables/enskog_usf_theory.hpp"
 #include "roughgas/observables/sonine_cooling_state.hpp"
 #include "roughgas/observables/white_noise_sonine.hpp"
 
@@ -185,6 +187,24 @@ MomentsTable::MomentsTable(const RunSpec& spec)
                 constant_theory_.push_back(s.a2);
                 columns_.push_back({"T_tr_sonine", "energy"});
                 columns_.push_back({"a20_sonine", "-"});
+            }
+        }
+    }
+    // Uniform shear flow of one species of smooth grains with a constant alpha < 1 (hard spheres): the
+    // steady state in Grad's approximation (observables/enskog_usf_theory.hpp), of the Enskog equation
+    // at the run's phi and chi, or at phi = 0 the Boltzmann equation's; the same in every row.
+    if (spec.shear && spec.species.size() == 1 && spec.kernel == CollisionKernel::hard_sphere) {
+        const auto* r = std::get_if<ConstantRestitution>(&spec.pairs[0]);
+        if (r && r->beta == -1 && r->alpha >= 0 && r->alpha < 1) {
+            const double phi = spec.enskog ? solid_fraction(spec.density, spec.species) : 0.0;
+            const double chi = spec.enskog ? pair_correlations(spec)[0] : 1.0;
+            if (phi < 1 && chi > 0) {
+                const EnskogUsfState g = enskog_usf_grad(r->alpha, phi, chi);
+                for (double x : {g.a_star, g.eta_star, g.total.xx, g.total.yy, g.total.zz, g.N1, g.N2})
+                    shear_theory_.push_back(x);
+                for (const char* name : {"a_star_grad", "eta_star_grad", "P_xx_star_grad", "P_yy_star_grad",
+                                         "P_zz_star_grad", "N1_star_grad", "N2_star_grad"})
+                    columns_.push_back({name, "-"});
             }
         }
     }
@@ -402,6 +422,7 @@ std::vector<double> MomentsTable::combine(std::span<const std::span<const double
         out.insert(out.end(), sonine_.begin(), sonine_.end());
         out.insert(out.end(), constant_theory_.begin(), constant_theory_.end());
     }
+    out.insert(out.end(), shear_theory_.begin(), shear_theory_.end());
     return out;
 }
 
@@ -436,6 +457,16 @@ const std::map<std::string, std::string>& meanings() {
                    "(1 + alpha) g_n the normal impulse a collision moves across the grains' distance sigma_ab: the "
                    "virial of hard spheres); NaN at t = 0"},
         {"p", "run.equation = enskog: p_kin + p_coll, the pressure (NaN at t = 0)"},
+        {"a_star_grad", "shear runs of one species of smooth grains with constant alpha < 1: the steady a* of "
+                        "Grad's approximation (of the Enskog equation at the run's phi and chi; of the Boltzmann "
+                        "equation, phi = 0, without run.equation = enskog), the same in every row; a few per cent "
+                        "from the DSMC's (docs/validation.md)"},
+        {"eta_star_grad", "the steady eta* of the same state (as a_star_grad)"},
+        {"P_xx_star_grad", "the steady P_xx_star of the same state (as a_star_grad)"},
+        {"P_yy_star_grad", "the steady P_yy_star of the same state (as a_star_grad)"},
+        {"P_zz_star_grad", "the steady P_zz_star of the same state (as a_star_grad; = P_yy_star_grad at phi = 0)"},
+        {"N1_star_grad", "P_xx_star_grad - P_yy_star_grad"},
+        {"N2_star_grad", "P_yy_star_grad - P_zz_star_grad"},
         {"P_coll_xx", "sheared Enskog gas: the collisional transfer part of the pressure tensor, the flux along x of "
                       "x-momentum, sum of sigma n_x J_x over the collisions since the previous row per volume and "
                       "time (J the impulse on the grain at r_j + sigma n); NaN at t = 0"},
@@ -615,8 +646,9 @@ std::string moments_columns_markdown() {
     for (const Column& c : t6.columns())
         if (!c.name.ends_with("_err"))
             add(c);
-    RunSpec shear = one; // the shear columns come after the base columns
+    RunSpec shear = one; // the shear columns come after the base columns; smooth grains: Grad's steady state
     shear.shear = ShearSpec{};
+    shear.pairs = {ConstantRestitution{0.9, -1.0}};
     const MomentsTable t4(shear);
     for (const Column& c : t4.columns())
         if (!c.name.ends_with("_err"))

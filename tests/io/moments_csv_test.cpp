@@ -4,7 +4,9 @@
 #include "roughgas/observables/driven_steady_state.hpp"
 
 #include "roughgas/dsmc/run.hpp"
+#include "roughgas/dsmc/pair_correlation.hpp"
 #include "roughgas/observables/driven_theory.hpp"
+#include "roughgas/observables/enskog_usf_theory.hpp"
 #include "roughgas/observables/sonine_cooling_state.hpp"
 
 #include <gtest/gtest.h>
@@ -55,6 +57,42 @@ TEST(MomentsTable, ColumnsWithErrorsAndTheory) {
     shear.shear = ShearSpec{};
     const std::vector<std::string> names = MomentsTable(shear).names();
     EXPECT_EQ(std::count(names.begin(), names.end(), "zeta_star"), 0);
+}
+
+// Shear runs of one species of smooth grains with constant alpha < 1: Grad's steady state, the same in
+// every row, last: the Boltzmann equation's (phi = 0) or the Enskog equation's at the run's phi and chi.
+// Rough grains, and elastic ones (no steady state), have none.
+TEST(MomentsTable, GradColumnsOfASmoothShearedGas) {
+    const std::vector<std::string> grad = {"a_star_grad",    "eta_star_grad", "P_xx_star_grad", "P_yy_star_grad",
+                                           "P_zz_star_grad", "N1_star_grad",  "N2_star_grad"};
+    for (const bool enskog : {false, true}) {
+        RunSpec s = one_species(1, ConstantRestitution{0.7, -1.0});
+        s.shear = ShearSpec{};
+        s.density = 0.4775;
+        if (enskog)
+            s.enskog = EnskogSpec{};
+        MomentsTable table(s);
+        const std::vector<std::string> names = table.names();
+        ASSERT_GE(names.size(), grad.size());
+        EXPECT_TRUE(std::equal(grad.begin(), grad.end(), names.end() - 7));
+        const std::vector<double> r(table.solver_columns().size(), 1.0);
+        std::vector<std::span<const double>> rows{r};
+        const std::vector<double> out = table.combine(rows);
+        const double phi = solid_fraction(s.density, s.species);
+        const EnskogUsfState g =
+            enskog ? enskog_usf_grad(0.7, phi, carnahan_starling_chi(phi)) : enskog_usf_grad(0.7, 0.0, 1.0);
+        const double expected[] = {g.a_star, g.eta_star, g.total.xx, g.total.yy, g.total.zz, g.N1, g.N2};
+        for (std::size_t k = 0; k < 7; ++k)
+            EXPECT_EQ(out[out.size() - 7 + k], expected[k]) << grad[k];
+    }
+    RunSpec rough = one_species(1);
+    rough.shear = ShearSpec{};
+    RunSpec elastic = one_species(1, ConstantRestitution{1.0, -1.0});
+    elastic.shear = ShearSpec{};
+    for (const RunSpec& s : {rough, elastic}) {
+        const std::vector<std::string> names = MomentsTable(s).names();
+        EXPECT_EQ(std::count(names.begin(), names.end(), "a_star_grad"), 0);
+    }
 }
 
 // zeta_star: each replica's -ln(T_tr/T_tr')/(c - c') since its own previous row, then the mean and

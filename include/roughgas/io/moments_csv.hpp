@@ -20,6 +20,10 @@
 //   T_tr_steady_theory, T_rot_steady_theory, theta_steady_theory, then T_tr_sonine, a20_sonine
 //                                                     (driven runs: the steady state's theory, the same
 //                                                      in every row)
+//   a_star_grad, eta_star_grad, P_xx_star_grad, P_yy_star_grad, P_zz_star_grad, N1_star_grad, N2_star_grad
+//                                                     (shear runs of one species of smooth grains with a
+//                                                      constant alpha < 1: the steady state in Grad's
+//                                                      approximation, observables/enskog_usf_theory.hpp)
 // and the rule that no value is NaN or infinite unless it is undefined by definition.
 #include "roughgas/dsmc/output_columns.hpp"
 #include "roughgas/dsmc/run_spec.hpp"
@@ -124,6 +128,7 @@ class MomentsTable {
     std::optional<HcsTrajectory> trajectory_;
     std::vector<double> sonine_; // the *_sonine columns' values (empty: not written)
     std::vector<double> constant_theory_; // a driven gas's steady-state columns (empty: not written)
+    std::vector<double> shear_theory_;    // the *_grad columns of a smooth sheared gas (empty: not written)
     bool zeta_ = false;                          // cooling runs: the zeta_star column
     // Enskog runs: p_theory, from the trajectory at t and the previous row's collisional part.
     bool enskog_ = false;
