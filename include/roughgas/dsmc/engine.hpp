@@ -405,11 +405,8 @@ class Engine {
         if (!(rate >= 0) || !std::isfinite(rate))
             throw std::invalid_argument("Engine: the shear rate must be finite and >= 0");
         shear_shift_.clear();
-        mass_i_.clear();
-        for (const PairType& t : types_) {
+        for (const PairType& t : types_)
             shear_shift_.push_back(rate * t.pc.sigma);
-            mass_i_.push_back(species_[t.a].grain.mass);
-        }
         sheared_ = rate > 0;
         restart_step();
     }
@@ -799,8 +796,9 @@ class Engine {
             rec = collide(pc, policy, v_i, v_j, n);
         v_j -= shift;
         // The rule counted the partner's energy at its shifted velocity: the peculiar energy's change
-        // differs by -m_j shift.dv_j = shift.J (momentum conservation, J = m_i dv_i on i).
-        const Vec3 J = mass_i_[sp] * (v_i - v_i0);
+        // differs by -m_j shift.dv_j = shift.J (momentum conservation, J = m_i dv_i on i; the rule moved
+        // v_i by (m_eff/m_i) P/m_eff).
+        const Vec3 J = (pc.m_eff / pc.m_eff_over_m_i) * (v_i - v_i0);
         rec.dE_tr += dot(shift, J);
         if constexpr (requires { obs.transfer_of(n, J); })
             obs.transfer_of(pc.sigma * n, J);
@@ -1370,9 +1368,9 @@ class Engine {
     // step's kicks (StepKick).
     std::optional<ThermostatSpec> thermostat_;
     double t_kick_ = 0;
-    // The sheared Enskog gas (set_enskog_shear): a sigma_ab and m_a per pair type.
+    // The sheared Enskog gas (set_enskog_shear): a sigma_ab per pair type.
     bool sheared_ = false;
-    std::vector<double> shear_shift_, mass_i_;
+    std::vector<double> shear_shift_;
     std::vector<StepKick> kicks_;
     EngineCounters c_{}; // the engine's own counts (steps, frame, phases); the groups keep the rest
 };
