@@ -94,7 +94,7 @@ LongitudinalModeTheory rough_longitudinal_modes(double alpha, double beta, doubl
 
 std::optional<LongitudinalModeTheory> longitudinal_mode_theory(const RunSpec& spec) {
     const std::optional<ShearModeTheory> t = shear_mode_theory(spec);
-    if (!t)
+    if (!t || spec.enskog) // the coefficients above are the dilute gas's
         return std::nullopt;
     return rough_longitudinal_modes(t->alpha, t->beta, spec.species[0].inertia);
 }

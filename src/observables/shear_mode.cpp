@@ -1,6 +1,8 @@
 // The shear mode of the homogeneous cooling state: observables/shear_mode.hpp.
 #include "roughgas/observables/shear_mode.hpp"
 
+#include "roughgas/dsmc/pair_correlation.hpp"
+#include "roughgas/dsmc/species.hpp"
 #include "roughgas/observables/theory.hpp"
 
 #include <cmath>
@@ -53,6 +55,30 @@ ShearModeTheory rough_shear_mode(double alpha, double beta, double q) {
     return t;
 }
 
+ShearModeTheory enskog_shear_mode(double alpha, double phi, double chi) {
+    if (!(alpha >= 0 && alpha <= 1 && phi >= 0 && phi < 1 && chi > 0 && std::isfinite(chi)))
+        throw std::invalid_argument("enskog_shear_mode: needs 0 <= alpha <= 1, 0 <= phi < 1, chi > 0");
+    constexpr double pi = std::numbers::pi;
+    // a2 of the dilute gas: the cooling state's scaled distribution does not depend on chi.
+    ShearModeTheory t = smooth_shear_mode(alpha);
+    t.phi = phi;
+    t.chi = chi;
+    t.zeta_star *= chi;
+    // Garzo & Dufty (1999): the kinetic flux's relaxation rate, its source (the kinetic part's
+    // collisional-transfer share), then the collisional transfer of momentum and the bulk viscosity.
+    const double nu_eta = chi * (3 - alpha) * (1 + alpha) / 4 * (1 - t.a2 / 32);
+    const double eta_k = (1 - 0.4 * (1 + alpha) * (1 - 3 * alpha) * phi * chi) / (nu_eta - t.zeta_star / 2);
+    const double kappa = 128 / (5 * pi) * phi * phi * chi * (1 + alpha) * (1 - t.a2 / 16);
+    t.eta_star = eta_k * (1 + 0.8 * phi * chi * (1 + alpha)) + 0.6 * kappa;
+    // Per collision: nu_c = chi nu_M (1 - a2/16); the wave number still in dilute mean free paths.
+    const double per_collision = 1 / (chi * (1 - t.a2 / 16));
+    t.growth = 0.4 * t.zeta_star * per_collision;
+    t.damping = 5 * pi / 32 * t.eta_star * per_collision;
+    t.critical_length = t.zeta_star > 0 ? 2 * pi / std::sqrt(t.growth / t.damping)
+                                        : std::numeric_limits<double>::infinity();
+    return t;
+}
+
 double shear_mode_rate(const ShearModeTheory& t, double k_lambda) {
     return t.growth - t.damping * k_lambda * k_lambda;
 }
@@ -63,6 +89,11 @@ std::optional<ShearModeTheory> shear_mode_theory(const RunSpec& spec) {
     const auto* c = spec.pairs.size() == 1 ? std::get_if<ConstantRestitution>(&spec.pairs[0]) : nullptr;
     if (spec.species.size() != 1 || c == nullptr)
         return std::nullopt;
+    if (spec.enskog) {
+        if (c->beta != -1) // no Enskog viscosity of rough grains here (shear_mode.hpp)
+            return std::nullopt;
+        return enskog_shear_mode(c->alpha, solid_fraction(spec.density, spec.species), pair_correlations(spec)[0]);
+    }
     return rough_shear_mode(c->alpha, c->beta, spec.species[0].inertia);
 }
 

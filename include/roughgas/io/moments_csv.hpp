@@ -74,8 +74,8 @@ class MomentsTable {
     // t, coll_per_particle, axis (0: shells of |k|; 1, 2, 3: along x, y, z), n (the shell or wave
     // number), k, n_modes (spectra.csv only), then the fields, with replicas > 1 each followed by
     // X_err; one row per shell or wave number; modes.csv ends with the theory's rates where
-    // shear_mode_theory applies (gamma_perp_theory; for smooth grains also gamma_heat_theory,
-    // gamma_sound_theory, omega_sound_theory).
+    // shear_mode_theory applies (gamma_perp_theory; where longitudinal_mode_theory applies, the
+    // Boltzmann equation, also gamma_heat_theory, gamma_sound_theory, omega_sound_theory).
     const std::vector<Column>& spectra_table_columns() const { return spectra_columns_; }
     const std::vector<Column>& modes_table_columns() const { return modes_columns_; }
     bool has_theory() const { return trajectory_.has_value(); }

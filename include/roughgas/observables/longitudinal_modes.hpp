@@ -131,7 +131,8 @@ LongitudinalModeTheory smooth_longitudinal_modes(double alpha);
 LongitudinalModeTheory rough_longitudinal_modes(double alpha, double beta, double q);
 
 // The theory of a run's cooling state where it applies (as shear_mode_theory: a freely cooling
-// periodic box of grains of one species with constant alpha and beta); nullopt otherwise.
+// periodic box of grains of one species with constant alpha and beta, of the Boltzmann equation:
+// the Enskog gas's heat and sound modes are not given here); nullopt otherwise.
 std::optional<LongitudinalModeTheory> longitudinal_mode_theory(const RunSpec& spec);
 
 // M at k lambda = `k_lambda`: d(delta n/n, delta T/T, u_x/sqrt(T_tr/m))/ds = M (...), s in collisions
