@@ -18,11 +18,13 @@
 #include "gas_row.hpp"
 
 #include "roughgas/core/bytes.hpp"
+#include "roughgas/dsmc/pair_correlation.hpp"
 #include "roughgas/dsmc/spatial_engine.hpp"
 #include "roughgas/observables/densest_cell.hpp"
 #include "roughgas/observables/pressure.hpp"
 #include "roughgas/observables/thermal_temperature.hpp"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -55,6 +57,22 @@ void append_wall_columns(std::vector<double>& row, const DomainSpec& d, const Wa
     }
 }
 
+// The smoothing cube of an Enskog box's chi (DomainSpec::chi_cells): the run's, or the smallest odd
+// cube (its sides capped at the box's cells) that holds 1000 grains on average.
+int chi_smoothing_cells(const DomainSpec& d, std::size_t particles) {
+    if (d.chi_cells > 0)
+        return d.chi_cells;
+    const double per_cell = static_cast<double>(particles) / (static_cast<double>(d.cells[0]) * d.cells[1] * d.cells[2]);
+    const int longest = std::max({d.cells[0], d.cells[1], d.cells[2]});
+    for (int k = 1;; k += 2) {
+        double cube = per_cell;
+        for (int a = 0; a < 3; ++a)
+            cube *= std::min(k, d.cells[static_cast<std::size_t>(a)]);
+        if (cube >= 1000 || k >= longest)
+            return k;
+    }
+}
+
 template <class Policy, bool General>
 ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& blocks, std::vector<Policy> policies,
                    int replica, const ReplicaIo& io) {
@@ -65,6 +83,10 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
                                           spec.kernel, spec.initial_state);
     if (spec.thermostat) // a uniformly heated box (before a resume's restore: its state holds the kicks' time)
         engine.set_thermostat(*spec.thermostat);
+    if (spec.enskog) // collisions a diameter apart (dsmc/spatial_engine.hpp, "Enskog collisions")
+        engine.set_enskog(pair_correlations(spec),
+                          spec.enskog->model == PairCorrelationModel::constant ? spec.enskog->chi : 0.0,
+                          chi_smoothing_cells(domain, engine.particles()));
     const double N = static_cast<double>(engine.particles());
     const std::size_t S = blocks.size();
     const std::vector<SpeciesSlice> slices = species_slices(blocks);
@@ -75,7 +97,7 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
                                (domain.has_walls() ? ", walls" : "") + (domain.has_gravity() ? ", gravity" : "") +
                                (domain.lees_edwards() ? ", Lees-Edwards" : "") +
                                (spec.kernel == CollisionKernel::maxwell ? ", Maxwell kernel" : "") +
-                               (spec.thermostat ? ", thermostat" : "") + ", " +
+                               (spec.thermostat ? ", thermostat" : "") + (spec.enskog ? ", Enskog" : "") + ", " +
                                std::string(Policy::name);
 
     std::vector<double> outputs = spec.output_times;
@@ -213,6 +235,15 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
                 m = moments_at_drive_time(m, slices, *spec.thermostat, t, engine.kicked_until());
             row.clear();
             append_row_head(row, t, c, c_prev, N, m, inv_dt, tally, engine.volume());
+            if (spec.enskog) { // p_kin = n T_tr, p_coll the trace over 3 of the interval's virial per volume
+                double trace = 0;
+                for (const Virial& b : virial)
+                    trace += b[0] + b[1] + b[2];
+                const double p_kin = N / engine.volume() * m.all.T_tr, p_coll = trace / (3 * engine.volume()) * inv_dt;
+                row.push_back(p_kin);
+                row.push_back(p_coll);
+                row.push_back(p_kin + p_coll);
+            }
             if (sheared) {
                 // Kinetic plus collisional (the interval's cell collisions: impulse times separation).
                 PressureTensor P = pressure_tensor(v_col, slices, engine.volume(), m.mean_velocity);

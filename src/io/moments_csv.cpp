@@ -455,7 +455,8 @@ const std::map<std::string, std::string>& meanings() {
         {"p_coll", "run.equation = enskog: the collisional transfer part of the pressure, (1/3) sum sigma_ab J_n over "
                    "the collisions since the previous row, over the volume and the interval's length (J_n = m_ab "
                    "(1 + alpha) g_n the normal impulse a collision moves across the grains' distance sigma_ab: the "
-                   "virial of hard spheres); NaN at t = 0"},
+                   "virial of hard spheres; in a box the trace over 3 of the collisions' impulse times the grains' actual "
+                   "separation, through the periodic images); NaN at t = 0"},
         {"p", "run.equation = enskog: p_kin + p_coll, the pressure (NaN at t = 0)"},
         {"a_star_grad", "shear runs of one species of smooth grains with constant alpha < 1: the steady a* of "
                         "Grad's approximation (of the Enskog equation at the run's phi and chi; of the Boltzmann "

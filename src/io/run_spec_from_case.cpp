@@ -93,6 +93,7 @@ RunSpec run_spec_from_case(const CaseConfig& cfg) {
             d.cells[i] = static_cast<int>(cfg.domain->cells[i]);
         d.time_step = cfg.domain->time_step;
         d.partners = cfg.domain->partners;
+        d.chi_cells = static_cast<int>(cfg.domain->chi_cells);
         d.boundary = cfg.domain->boundary;
         d.gravity = cfg.domain->gravity;
         d.profile_axis = cfg.domain->profile_axis;

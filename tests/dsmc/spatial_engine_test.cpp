@@ -2,6 +2,7 @@
 // (conservation, grains in the box, independence of the thread count) and the collision rate of
 // an elastic gas for any cell size; a small box cools as the homogeneous gas (Haff's law).
 #include "roughgas/dsmc/spatial_engine.hpp"
+#include "spatial_test_support.hpp"
 
 #include "roughgas/collision/restitution_policy.hpp"
 #include "roughgas/dsmc/tables.hpp"
@@ -62,22 +63,8 @@ DomainSpec cube(double side, int cells) {
     return d;
 }
 
-template <class P> Vec3 momentum(const SpatialEngine<P>& e) {
-    Vec3 p{};
-    for (const SpeciesBlock& b : e.species())
-        for (std::size_t i = b.offset; i < b.offset + b.count; ++i)
-            p += b.grain.mass * e.velocities()[i];
-    return p;
-}
-
-template <class P> double energy(SpatialEngine<P>& e) {
-    double E = 0;
-    for (const SpeciesBlock& b : e.species())
-        for (std::size_t i = b.offset; i < b.offset + b.count; ++i)
-            E += 0.5 * b.grain.mass * norm2(e.velocities()[i]) +
-                 0.5 * b.moment_of_inertia() * norm2(e.angular_velocities()[i]);
-    return E;
-}
+using test::energy;
+using test::momentum;
 
 // The translational part alone (smooth grains keep their initial spins, which carry energy too).
 template <class P> double translational_energy(const SpatialEngine<P>& e) {

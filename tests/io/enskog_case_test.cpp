@@ -71,13 +71,39 @@ TEST(EnskogCase, RefusesWhatHasNoMeaning) {
     EXPECT_NE(kept.unused[1].find("run.chi is not used"), std::string::npos);
     // At or beyond the densest packing: no gas.
     EXPECT_TRUE(refused(replaced(dense_case(), "density = 0.382", "density = 1.5"), {}, "run.density = 1.5"));
-    // Not solved for boxes; sheared only with the hard-sphere kernel.
-    EXPECT_TRUE(refused(dense_case() + "\n[domain]\nsize = [10.0, 10.0, 10.0]\ncells = [4, 4, 4]\n", {},
-                        "run.equation = \"enskog\" with [domain]"));
+    // Sheared only with the hard-sphere kernel.
     const std::string sheared = replaced(dense_case(), "[run]", "[run]\nkind = \"shear\"") + "\n[shear]\nrate = 0.1\n";
     EXPECT_EQ(error_of(sheared), "");
     EXPECT_TRUE(refused(replaced(sheared, "[run]", "[run]\nkernel = \"maxwell\""), {},
                         "run.kernel = \"maxwell\" with run.equation = \"enskog\""));
+}
+
+// In a box: hard spheres, random partners, no Lees-Edwards shear, an odd smoothing cube, periodic
+// sides of at least two diameters; domain.chi_cells is echoed, and a Boltzmann run warns of it.
+TEST(EnskogCase, BoxesAndWhatTheyRefuse) {
+    const std::string box = dense_case() + "\n[domain]\nsize = [10.0, 10.0, 10.0]\ncells = [20, 20, 20]\n";
+    EXPECT_EQ(error_of(box), "");
+    const CaseConfig c = parse_case(box + "chi_cells = 5\n", "case.toml");
+    EXPECT_EQ(c.domain->chi_cells, 5);
+    EXPECT_EQ(run_spec_from_case(c).domain->chi_cells, 5);
+    EXPECT_EQ(parse_case(emit_case(c), "echo.toml"), c);
+    EXPECT_TRUE(refused(box + "chi_cells = 4\n", {}, "domain.chi_cells = 4: the smoothing cube is centred"));
+    EXPECT_TRUE(refused(box + "chi_cells = -1\n", {}, "domain.chi_cells"));
+    EXPECT_TRUE(refused(box + "partners = \"nearest\"\n", {}, "domain.partners = \"nearest\" with run.equation"));
+    EXPECT_TRUE(refused(replaced(box, "size = [10.0, 10.0, 10.0]", "size = [10.0, 1.5, 10.0]"), {},
+                        "domain.size[1] = 1.5: a periodic side of an Enskog box"));
+    // A walled axis may be short: no image across a wall.
+    EXPECT_EQ(error_of(replaced(replaced(box, "size = [10.0, 10.0, 10.0]", "size = [10.0, 1.5, 10.0]"),
+                                "cells = [20, 20, 20]", "cells = [20, 3, 20]\nboundary = [\"periodic\", \"walls\", \"periodic\"]") +
+                       "\n[wall_lower]\nkind = \"specular\"\n\n[wall_upper]\nkind = \"specular\"\n"),
+              "");
+    const std::string sheared = replaced(box, "[run]", "[run]\nkind = \"shear\"") + "\n[shear]\nrate = 0.1\n";
+    EXPECT_TRUE(refused(sheared, {}, "run.kind = \"shear\" with run.equation = \"enskog\" and [domain]"));
+    EXPECT_TRUE(refused(replaced(box, "[run]", "[run]\nkernel = \"maxwell\""), {},
+                        "run.kernel = \"maxwell\" with run.equation = \"enskog\" and [domain]"));
+    const CaseConfig b = parse_case(replaced(box, "equation = \"enskog\"\n", "") + "chi_cells = 5\n", "case.toml");
+    ASSERT_EQ(b.unused.size(), 1u);
+    EXPECT_NE(b.unused[0].find("domain.chi_cells is not used by run.equation = \"boltzmann\""), std::string::npos);
 }
 
 } // namespace

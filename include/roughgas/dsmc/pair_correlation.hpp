@@ -26,22 +26,31 @@ inline double carnahan_starling_chi(double phi) { return (1 - phi / 2) / ((1 - p
 // The mixture's form (Boublik 1970; Mansoori, Carnahan, Starling & Leland 1971): with
 // xi_k = (pi/6) sum_s n_s sigma_s^k and mu = sigma_a sigma_b/(sigma_a + sigma_b),
 //   chi_ab = 1/(1 - xi_3) + 3 xi_2 mu/(1 - xi_3)^2 + 2 xi_2^2 mu^2/(1 - xi_3)^3,
-// which for one species (xi_2 = phi/sigma, mu = sigma/2) is Carnahan & Starling's exactly.
-// `density` is n of all the grains, species s holding the number fraction x_s (n_s = x_s n, fractions
-// normalised) with diameter sigma_s = 2 R_s.
+// which for one species (xi_2 = phi/sigma, mu = sigma/2) is Carnahan & Starling's exactly. `n[s]` is
+// the number density of species s, `sigma[s]` its diameter, S species.
+inline double bmcsl_chi_of(const double* n, const double* sigma, std::size_t S, std::size_t a, std::size_t b) {
+    double xi2 = 0, xi3 = 0;
+    for (std::size_t s = 0; s < S; ++s) {
+        xi2 += std::numbers::pi / 6 * n[s] * sigma[s] * sigma[s];
+        xi3 += std::numbers::pi / 6 * n[s] * sigma[s] * sigma[s] * sigma[s];
+    }
+    const double mu = sigma[a] * sigma[b] / (sigma[a] + sigma[b]), h = 1 / (1 - xi3);
+    return h + 3 * xi2 * mu * h * h + 2 * xi2 * xi2 * mu * mu * h * h * h;
+}
+
+// The same for a run's species: `density` is n of all the grains, species s holding the number
+// fraction x_s (n_s = x_s n, fractions normalised) with diameter sigma_s = 2 R_s.
 template <class Species>
 double bmcsl_chi(double density, const std::vector<Species>& species, std::size_t a, std::size_t b) {
-    double total = 0, xi2 = 0, xi3 = 0;
+    double total = 0;
     for (const Species& s : species)
         total += s.fraction;
+    std::vector<double> n, sigma;
     for (const Species& s : species) {
-        const double n_s = total > 0 ? density * s.fraction / total : 0.0, sigma = 2 * s.radius;
-        xi2 += std::numbers::pi / 6 * n_s * sigma * sigma;
-        xi3 += std::numbers::pi / 6 * n_s * sigma * sigma * sigma;
+        n.push_back(total > 0 ? density * s.fraction / total : 0.0);
+        sigma.push_back(2 * s.radius);
     }
-    const double sa = 2 * species[a].radius, sb = 2 * species[b].radius;
-    const double mu = sa * sb / (sa + sb), h = 1 / (1 - xi3);
-    return h + 3 * xi2 * mu * h * h + 2 * xi2 * xi2 * mu * mu * h * h * h;
+    return bmcsl_chi_of(n.data(), sigma.data(), species.size(), a, b);
 }
 
 // chi of every species pair (a, b), a <= b, at pair_index(a, b, S) (run_spec.hpp): all 1 without

@@ -114,6 +114,10 @@ struct DomainSpec {
     double shear_rate = 0;
     double time_step = 0.2;              // in mean free times of the current state
     PartnerSelection partners = PartnerSelection::random;
+    // The Enskog equation (RunSpec::enskog): the cells per side of the cube over which the local
+    // density that sets chi is averaged (dsmc/enskog_cells.hpp); odd, 0 for the smallest cube that
+    // holds 1000 grains on average.
+    int chi_cells = 0;
     InitialSpec initial;
     std::optional<SpectraSpec> spectra; // set: spectra.csv and modes.csv (periodic boxes)
     std::optional<FieldsSpec> fields;   // set: cell fields at output rows

@@ -64,6 +64,32 @@
 // they never push the gas, walls or not. A sheared box (Lees-Edwards) takes no thermostat: uniform shear flow
 // heats the gas itself.
 //
+// Enskog collisions (set_enskog; docs/model.md, "The Enskog equation in a box"). The Enskog equation
+// (Enskog 1922) collides grain i at r with grains at r + sigma_ab k^, its collision operator's loss
+// term for i being sigma_ab^2 Int dk^ chi_ab(r + sigma_ab k^/2) Int dv_j f_b(r + sigma_ab k^, v_j)
+// Theta(g.k^) (g.k^), g = v_i - v_j. Its DSMC (Montanero & Santos 1996; Frezzotti 1997): f_b at the
+// point r + sigma_ab k^ is the cell holding that point, N'_b grains standing for F N'_b / V_c of
+// density. A candidate is a grain i of cell c (uniform), a species b (uniform), a direction k^, and a
+// grain j of species b in the cell of r_i + sigma_ab k^ (uniform; none beyond a wall). With U(c) the
+// smoothed flow of dsmc/enskog_cells.hpp and B a bound of |v - U(c)| over the grains of c and of
+// every cell a partner can lie in, (g.k^)+ <= B + a.k^ with a = v_i - U(c): k^ is drawn with the
+// density (B + a.k^)/(4 pi B) (uniform with probability 1 - |a|/B, else with density (1 + a^.k^)/4 pi),
+// and the candidate accepted with probability sigma_ab^2 chi_ab N'_b (g.k^)+ / (W N_max (B + a.k^)),
+// chi_ab that of the cell holding the pair's midpoint, W and N_max the largest sigma_ab^2 chi_ab and
+// N'_b over the cells a partner of c can lie in. Candidates of cell c then form a Poisson process of
+// rate (1/2) N_c S 4 pi W N_max B F / V_c (the a.k^ term integrates to zero): each pair's collisions
+// are sampled half from each grain's cell. The collision is the rule's with the normal n = -k^ (from
+// j to i), whatever the grains' actual separation within their cells, and the impulse times that
+// separation (through the periodic images) is the virial of the pressure and the profiles: momentum
+// and energy move across sigma. B = max |v_j - U(c')| + max |U(c) - U(c')| + eps over the reach:
+// eps is the largest excess of a grain over its cell's floor (the least bound of the cells whose
+// reach holds it) that a collision has made so far in the step, so B stays a bound as collisions
+// speed grains up (a rise in one block reaches the blocks of later colours through eps). The blocks
+// of cells of dsmc/enskog_cells.hpp collide colour by colour, each block on one worker with the
+// stream (seed, cell_collisions, replica, step, block): the collisions depend on the blocks (fixed by
+// the cells and sigma), never on the threads. A pair's virial goes to the profile slabs its segment crosses, in proportion to the
+// length in each (Irving & Kirkwood 1950), so the profiles' collisional stress balances the walls'.
+//
 // Compiled twice: `General` = false for a periodic box without gravity (a flight that only adds and
 // wraps), true for walls or gravity (the exact crossing times, the walls' random emission from the
 // stream (seed, wall_emission, replica, step, chunk) and their momentum and energy tallies).
@@ -79,11 +105,14 @@
 #include "roughgas/core/rng.hpp"
 #include "roughgas/core/vec.hpp"
 #include "roughgas/core/worker_team.hpp"
+#include "roughgas/dsmc/enskog_cells.hpp"
 #include "roughgas/dsmc/init.hpp"
 #include "roughgas/dsmc/run_spec.hpp"
 #include "roughgas/dsmc/species.hpp"
 #include "roughgas/dsmc/thermostat.hpp"
 #include "roughgas/observables/moments.hpp"
+
+#include <boost/random/exponential_distribution.hpp>
 #include "roughgas/observables/profiles.hpp"
 
 #include <algorithm>
@@ -292,6 +321,45 @@ template <class Policy, bool General = false> class SpatialEngine {
     // The time up to which the thermostat's kicks have been given (see "Thermostat").
     double kicked_until() const { return t_kick_; }
 
+    // Collide by the Enskog equation (see "Enskog collisions"), before the first step: `chi` the pair
+    // correlation of every pair type at the box's mean density (the step length's collision frequency),
+    // `chi_constant` > 0 for a constant chi (else BMCSL's of the local densities), `smoothing` the
+    // smoothing cube's cells per side (odd). Random partners and hard spheres only, no Lees-Edwards;
+    // a periodic side must be at least two diameters long (a grain never meets its own image).
+    void set_enskog(const std::vector<double>& chi, double chi_constant, int smoothing) {
+        if (maxwell_ || nearest_ || domain_.lees_edwards())
+            throw std::invalid_argument("SpatialEngine: Enskog collisions need hard spheres, random partners and no "
+                                        "Lees-Edwards boundaries");
+        if (chi.size() != types_.size())
+            throw std::invalid_argument("SpatialEngine: one chi per species pair");
+        std::vector<double> sigma;
+        double sigma_max = 0;
+        for (const SpeciesBlock& b : blocks_) {
+            sigma.push_back(2 * b.grain.radius);
+            sigma_max = std::max(sigma_max, sigma.back());
+        }
+        CellGrid grid;
+        std::array<double, 3> h{};
+        for (int a = 0; a < 3; ++a) {
+            const auto k = static_cast<std::size_t>(a);
+            grid.n[k] = domain_.cells[k];
+            grid.periodic[k] = !domain_.walled(a);
+            h[k] = domain_.size[k] / domain_.cells[k];
+            if (grid.periodic[k] && domain_.size[k] < 2 * sigma_max)
+                throw std::invalid_argument("SpatialEngine: a periodic side of an Enskog box must be at least two "
+                                            "grain diameters long");
+        }
+        for (std::size_t t = 0; t < types_.size(); ++t)
+            types_[t].chi = chi[t];
+        enskog_.emplace(grid, std::move(sigma), h, smoothing, chi_constant);
+        chi_uniform_ = chi_constant > 0;
+        speed_start_.assign(cells_, 0.0);
+        speed_now_.assign(cells_, 0.0);
+    }
+    bool enskog() const { return enskog_.has_value(); }
+    // The blocks of the Enskog collisions (dsmc/enskog_cells.hpp).
+    const EnskogCells* enskog_cells() const { return enskog_ ? &*enskog_ : nullptr; }
+
     // One step of length dt: kicks and flight, sort, collisions. `obs(record, pair_type)` sees every
     // collision (ForkableObserver of dsmc/engine.hpp: a copy per work unit, merged in unit order).
     template <class Observer> void step(double dt, Observer& obs) {
@@ -301,6 +369,13 @@ template <class Policy, bool General = false> class SpatialEngine {
         else
             stream(dt);
         sort_into_cells();
+        if (enskog_) {
+            collide_enskog(dt, obs);
+            add_cell_virials();
+            t_ += dt;
+            ++steps_;
+            return; // the cells' sums are taken on demand: a cell's grains change after it collided
+        }
         const std::size_t units = (cells_ + cells_per_unit - 1) / cells_per_unit;
         const bool nearest = nearest_;
         // Each unit's observer and count in cache lines of their own (core/own_lines.hpp says why).
@@ -1165,6 +1240,243 @@ template <class Policy, bool General = false> class SpatialEngine {
         }
     }
 
+    // The Enskog collisions of a step (see "Enskog collisions"): the cells' fields, then the blocks
+    // colour by colour.
+    template <class Observer> void collide_enskog(double dt, Observer& obs) {
+        EnskogCells& e = *enskog_;
+        const std::size_t S = blocks_.size();
+        std::vector<double> count(cells_ * S), momentum(cells_ * 3);
+        for_each_cell([&](std::size_t c) {
+            for (std::size_t s = 0; s < S; ++s) {
+                const auto [first, last] = cell_range(s, c);
+                count[c * S + s] = static_cast<double>(last - first);
+                for (std::size_t i = first; i < last; ++i) {
+                    momentum[c * 3] += v_[i].x;
+                    momentum[c * 3 + 1] += v_[i].y;
+                    momentum[c * 3 + 2] += v_[i].z;
+                }
+            }
+        });
+        // F/V_c in simulated units: n V/N per grain over V/C per cell.
+        const double weight = density_ * static_cast<double>(cells_) / static_cast<double>(particles_);
+        e.set_densities(count, momentum, weight);
+        for_each_cell([&](std::size_t c) {
+            const std::array<double, 3> U = e.flow(c);
+            double b = 0;
+            for (std::size_t s = 0; s < S; ++s) {
+                const auto [first, last] = cell_range(s, c);
+                for (std::size_t i = first; i < last; ++i)
+                    b = std::max(b, norm2(v_[i] - Vec3{U[0], U[1], U[2]}));
+            }
+            speed_start_[c] = std::sqrt(b);
+            cell_virial_[c] = Virial{};
+        });
+        speed_now_ = speed_start_;
+        e.set_speed_bounds(speed_start_);
+        const CellBlocks& blocks = e.blocks();
+        struct alignas(64) Unit {
+            Observer observer;
+            std::int64_t collisions = 0;
+            double eps = 0;
+        };
+        std::vector<Unit> local;
+        local.reserve(blocks.count());
+        for (std::size_t u = 0; u < blocks.count(); ++u)
+            local.push_back(Unit{obs.fork(), 0, 0.0});
+        double eps = 0; // the largest rise of a cell's speed bound in the colours done
+        for (const std::vector<std::size_t>& colour : blocks.by_colour) {
+            team_->for_each(colour.size(), [&](std::size_t k) {
+                const std::size_t u = colour[k];
+                CollisionRng rng = make_collision_stream(
+                    StreamKey{seed_, Stream::cell_collisions, replica_, static_cast<std::uint64_t>(steps_), u});
+                Unit& unit = local[u];
+                unit.eps = eps;
+                const std::array<int, 3> b = blocks.index(u);
+                for (int z = blocks.edges[2][static_cast<std::size_t>(b[2])]; z < blocks.edges[2][static_cast<std::size_t>(b[2]) + 1]; ++z)
+                    for (int y = blocks.edges[1][static_cast<std::size_t>(b[1])]; y < blocks.edges[1][static_cast<std::size_t>(b[1]) + 1]; ++y)
+                        for (int x = blocks.edges[0][static_cast<std::size_t>(b[0])]; x < blocks.edges[0][static_cast<std::size_t>(b[0]) + 1]; ++x) {
+                            const std::size_t c = (static_cast<std::size_t>(z) * static_cast<std::size_t>(domain_.cells[1]) +
+                                                   static_cast<std::size_t>(y)) * static_cast<std::size_t>(domain_.cells[0]) +
+                                                  static_cast<std::size_t>(x);
+                            unit.collisions += collide_cell_enskog(c, dt, rng, unit.observer, unit.eps);
+                        }
+            });
+            for (std::size_t u : colour)
+                eps = std::max(eps, local[u].eps);
+        }
+        for (const Unit& unit : local) {
+            obs.merge(unit.observer);
+            collisions_ += unit.collisions;
+        }
+    }
+
+    // The point r + d wrapped into the box: false beyond a wall; `image` the shift that wrapping
+    // removed (the partner's periodic image is at its position plus `image`).
+    bool wrap_point(Vec3& p, Vec3& image) const {
+        for (int a = 0; a < 3; ++a) {
+            const double L = domain_.size[static_cast<std::size_t>(a)];
+            double& q = component(p, a);
+            if (q >= 0 && q < L)
+                continue;
+            if (domain_.walled(a))
+                return false;
+            const double shift = q < 0 ? -L : L; // at most one period: sides of at least 2 sigma
+            q -= shift;
+            if (!(q >= 0 && q < L))
+                q = q < 0 ? 0.0 : std::nextafter(L, 0.0);
+            component(image, a) = shift;
+        }
+        return true;
+    }
+
+    // A pair's virial into the profile slabs its segment from q_j to q_i (along the profile axis,
+    // unwrapped) crosses, in proportion to its length in each: the slabs' cells in c's line.
+    void add_virial(std::size_t c, double q_i, double q_j, const Virial& v) {
+        const int a = domain_.profile_axis;
+        const auto k = static_cast<std::size_t>(a);
+        const int n = domain_.cells[k];
+        const double h = domain_.size[k] / n;
+        const double lo = std::min(q_i, q_j), hi = std::max(q_i, q_j);
+        const long first = static_cast<long>(std::floor(lo / h)), last = static_cast<long>(std::floor(hi / h));
+        if (first == last || !(hi > lo)) {
+            Virial& to = cell_virial_[c];
+            for (std::size_t q = 0; q < 6; ++q)
+                to[q] += v[q];
+            return;
+        }
+        const std::size_t stride = a == 0 ? 1 : a == 1 ? static_cast<std::size_t>(domain_.cells[0])
+                                                      : static_cast<std::size_t>(domain_.cells[0]) * static_cast<std::size_t>(domain_.cells[1]);
+        const long own = static_cast<long>((c / stride) % static_cast<std::size_t>(n));
+        for (long b = first; b <= last; ++b) {
+            const double part = (std::min(hi, (b + 1) * h) - std::max(lo, b * h)) / (hi - lo);
+            const long wrapped = ((b % n) + n) % n;
+            Virial& to = cell_virial_[static_cast<std::size_t>(static_cast<long>(c) + (wrapped - own) * static_cast<long>(stride))];
+            for (std::size_t q = 0; q < 6; ++q)
+                to[q] += part * v[q];
+        }
+    }
+
+    // The Enskog collisions of cell c for a time dt (see "Enskog collisions"); `eps` the largest rise
+    // of a speed bound known to this block. Returns how many.
+    template <class Observer>
+    std::int64_t collide_cell_enskog(std::size_t c, double dt, CollisionRng& rng, Observer& obs, double& eps) {
+        const EnskogCells& e = *enskog_;
+        const std::size_t S = blocks_.size();
+        std::size_t n = 0;
+        for (std::size_t s = 0; s < S; ++s) {
+            const auto [first, last] = cell_range(s, c);
+            n += last - first;
+        }
+        if (n == 0)
+            return 0;
+        const double W = e.weight_max(c), N_max = e.count_max(c);
+        const auto slots = static_cast<std::uint64_t>(N_max);
+        const double others = e.speed_max(c) + e.flow_spread(c);
+        const std::array<double, 3> Uc = e.flow(c);
+        const Vec3 U{Uc[0], Uc[1], Uc[2]};
+        // Lambda per unit B: (1/2) N_c S 4 pi W N_max F/V_c, F/V_c = n C/N in simulated units.
+        const double rate_per_B = 0.5 * static_cast<double>(n) * static_cast<double>(S) * 4 * std::numbers::pi * W *
+                                  N_max * density_ * static_cast<double>(cells_) / static_cast<double>(particles_);
+        double B = others + eps;
+        boost::random::exponential_distribution<double> exponential{1.0};
+        std::int64_t done = 0;
+        double t = 0;
+        const int axis = domain_.profile_axis;
+        for (;;) {
+            if (!(B > 0) || !(rate_per_B > 0))
+                return done;
+            t += exponential(rng) / (rate_per_B * B);
+            if (t >= dt)
+                return done;
+            std::size_t sa = 0;
+            std::size_t i = grain(c, static_cast<std::size_t>(uniform_index(rng, n)), sa);
+            const std::size_t sb = S == 1 ? 0 : static_cast<std::size_t>(uniform_index(rng, S));
+            const std::size_t type = S == 1 ? 0 : pair_index(std::min(sa, sb), std::max(sa, sb), S);
+            const double sigma = types_[type].pc.sigma;
+            // k with density (B + a.k)/(4 pi B), a = v_i - U: uniform with probability 1 - |a|/B, else
+            // with density (1 + a^.k)/(4 pi) (mu = a^.k = 2 sqrt(u) - 1, the azimuth uniform).
+            const Vec3 a = v_[i] - U;
+            const double a_abs = std::sqrt(norm2(a));
+            Vec3 k = uniform_direction(rng);
+            if (uniform01(rng) * B < a_abs) {
+                const Vec3 axis_a = (1.0 / a_abs) * a;
+                const double mu = 2 * std::sqrt(uniform01(rng)) - 1;
+                const Vec3 across = k - dot(k, axis_a) * axis_a;
+                const double across2 = norm2(across);
+                if (!(across2 > 0))
+                    continue; // k along a (probability 0): a candidate lost costs nothing but time
+                k = mu * axis_a + (std::sqrt(std::max(0.0, 1 - mu * mu) / across2)) * across;
+            }
+            const double bound = B + dot(a, k); // >= (g.k)+ for every partner
+            Vec3 p = x_[i] + sigma * k, image{};
+            const double u = uniform01(rng) * bound;
+            if (!wrap_point(p, image))
+                continue; // beyond a wall: no partner there
+            const std::size_t c2 = cell_of(p);
+            const auto [first, last] = cell_range(sb, c2);
+            // One of N_max slots: the partner if it is one of the cell's N'_b grains (probability N'_b/N_max).
+            const std::size_t slot = static_cast<std::size_t>(uniform_index(rng, slots));
+            if (slot >= last - first)
+                continue;
+            double chi;
+            if (chi_uniform_) {
+                chi = types_[type].chi;
+            } else {
+                Vec3 mid = x_[i] + (0.5 * sigma) * k, mid_image{};
+                wrap_point(mid, mid_image);
+                chi = e.chi(cell_of(mid), type);
+            }
+            // The factors known before j's velocity: sigma^2 chi/W <= 1, and (g.k)+ <= bound.
+            const double cheap = sigma * sigma * chi / W;
+            if (u >= cheap * bound)
+                continue;
+            const std::size_t j = first + slot;
+            if (j == i)
+                continue;
+            const double approach = dot(v_[i] - v_[j], k);
+            if (!(u < cheap * approach))
+                continue;
+            // The rule's i is of the lower species; n from j to i.
+            std::size_t ri = i, rj = j;
+            Vec3 normal = -1.0 * k;
+            if (sa > sb) {
+                std::swap(ri, rj);
+                normal = k;
+            }
+            const PairConstants& pc = types_[type].pc;
+            const Vec3 v_before = v_[i];
+            if constexpr (rough)
+                obs(collide(pc, policies_[type], v_[ri], w_[ri], v_[rj], w_[rj], normal), type);
+            else
+                obs(collide(pc, policies_[type], v_[ri], v_[rj], normal), type);
+            ++done;
+            // The impulse on i times its separation from j's image (observables/profiles.hpp, Pc).
+            const Vec3 dp = blocks_[sa].grain.mass * (v_[i] - v_before), r = x_[i] - (x_[j] + image);
+            const Virial virial{dp.x * r.x,
+                                dp.y * r.y,
+                                dp.z * r.z,
+                                0.5 * (dp.x * r.y + dp.y * r.x),
+                                0.5 * (dp.x * r.z + dp.z * r.x),
+                                0.5 * (dp.y * r.z + dp.z * r.y)};
+            const double q_i = component(x_[i], axis);
+            add_virial(c, q_i, q_i - component(r, axis), virial);
+            // The speed bounds: a rise of c's is G's at once; a grain beyond its cell's floor raises
+            // eps, which bounds by how much any cell's speed_max may now be exceeded.
+            const double b_i = std::sqrt(norm2(v_[i] - U));
+            if (b_i > speed_now_[c]) {
+                speed_now_[c] = b_i;
+                eps = std::max(eps, b_i - e.speed_floor(c));
+            }
+            const std::array<double, 3> U2 = e.flow(c2);
+            const double b_j = std::sqrt(norm2(v_[j] - Vec3{U2[0], U2[1], U2[2]}));
+            if (b_j > speed_now_[c2]) {
+                speed_now_[c2] = b_j;
+                eps = std::max(eps, b_j - e.speed_floor(c2));
+            }
+            B = others + eps;
+        }
+    }
+
     DomainSpec domain_;
     std::vector<SpeciesBlock> blocks_;
     std::vector<PairType> types_;
@@ -1204,6 +1516,11 @@ template <class Policy, bool General = false> class SpatialEngine {
     double t_kick_ = 0;
     std::vector<StepKick> kicks_;
     bool kicking_ = false;
+    // Enskog collisions: the cells' fields (unset: Boltzmann), each cell's speed bound about the flow
+    // U at the step's start and now.
+    std::optional<EnskogCells> enskog_;
+    std::vector<double> speed_start_, speed_now_;
+    bool chi_uniform_ = false; // a constant chi (run.chi): no midpoint's cell to find
 };
 
 } // namespace roughgas

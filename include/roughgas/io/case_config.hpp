@@ -212,6 +212,7 @@ struct DomainConfig {
     double time_step = 0.2;                  // in mean free times of the current state
     bool allow_coarse = false;               // cells longer than a mean free path accepted
     PartnerSelection partners = PartnerSelection::random;
+    std::int64_t chi_cells = 0;              // run.equation = enskog: the smoothing cube's cells per side (0: auto)
     friend bool operator==(const DomainConfig&, const DomainConfig&) = default;
     bool has_walls() const {
         return std::find(boundary.begin(), boundary.end(), Boundary::walls) != boundary.end();

@@ -51,6 +51,7 @@ std::optional<DomainConfig> build_domain(BuildContext& ctx) {
     d.time_step = r.real("time_step");
     d.allow_coarse = r.boolean("allow_coarse");
     d.partners = r.choice<PartnerSelection>("partners", partner_names);
+    d.chi_cells = r.integer("chi_cells");
     return d;
 }
 
@@ -104,6 +105,8 @@ void emit_domain(Emitter& e, const DomainConfig& d) {
     e.put("time_step", d.time_step);
     e.put("allow_coarse", d.allow_coarse);
     e.put("partners", name(d.partners));
+    if (d.chi_cells != 0)
+        e.put("chi_cells", d.chi_cells);
 }
 
 } // namespace roughgas::case_file

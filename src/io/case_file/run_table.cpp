@@ -97,7 +97,9 @@ void check_maxwell_kernel(BuildContext& ctx, const CaseConfig& c) {
 }
 
 // run.equation = "enskog": its chi (a constant needs run.chi, and run.chi needs a constant), and the
-// runs it is solved for: the homogeneous gas, cooling, driven or sheared (with the hard-sphere kernel).
+// runs it is solved for: the homogeneous gas, cooling, driven or sheared (with the hard-sphere kernel),
+// and boxes with random partners and the hard-sphere kernel, periodic or walled but not sheared, each
+// periodic side at least two diameters long, the smoothing cube odd.
 void check_equation(BuildContext& ctx, const CaseConfig& c) {
     if (c.run.equation != KineticEquation::enskog)
         return; // pair_correlation and chi are kept, not read (note_unused_enskog)
@@ -110,11 +112,34 @@ void check_equation(BuildContext& ctx, const CaseConfig& c) {
                                        "from the solid fraction (set run.pair_correlation = \"constant\", or leave "
                                        "run.chi out)",
                                        *c.run.chi, name(c.run.pair_correlation)));
-    if (c.domain)
-        ctx.add("run.equation", "run.equation = \"enskog\" with [domain]: the Enskog equation is solved for the "
-                                "homogeneous gas (no [domain]), cooling, driven or sheared; a box solves the "
-                                "Boltzmann equation (must be \"boltzmann\" here)");
-    else if (c.run.kind == RunKind::shear && c.run.kernel == CollisionKernel::maxwell)
+    if (c.domain) {
+        const DomainConfig& d = *c.domain;
+        if (c.run.kind == RunKind::shear)
+            ctx.add("run.kind", "run.kind = \"shear\" with run.equation = \"enskog\" and [domain]: the sheared "
+                                "Enskog gas is solved homogeneous (leave [domain] out), a box with walls moving "
+                                "apart (Couette flow) shears it between them");
+        if (c.run.kernel == CollisionKernel::maxwell)
+            ctx.add("run.kernel", "run.kernel = \"maxwell\" with run.equation = \"enskog\" and [domain]: a box's "
+                                  "Enskog collisions are those of hard spheres a diameter apart (must be "
+                                  "\"hard_sphere\" here)");
+        if (d.partners != PartnerSelection::random)
+            ctx.add("domain.partners", "domain.partners = \"nearest\" with run.equation = \"enskog\": the partner of "
+                                       "an Enskog collision is a grain a diameter away, in the cell holding that "
+                                       "point (must be \"random\" here)");
+        if (d.chi_cells % 2 == 0 && d.chi_cells != 0)
+            ctx.add("domain.chi_cells", fmt::format("domain.chi_cells = {}: the smoothing cube is centred on a cell "
+                                                    "(must be odd, or 0 for the automatic size)",
+                                                    d.chi_cells));
+        double sigma = 0;
+        for (const SpeciesConfig& s : c.species)
+            sigma = std::max(sigma, 2 * s.radius);
+        for (std::size_t a = 0; a < 3; ++a)
+            if (d.boundary[a] == Boundary::periodic && d.size[a] < 2 * sigma)
+                ctx.add("domain.size", fmt::format("domain.size[{}] = {}: a periodic side of an Enskog box shorter "
+                                                   "than two grain diameters ({}) lets a grain collide with its "
+                                                   "own image (must be >= {})",
+                                                   a, d.size[a], 2 * sigma, 2 * sigma));
+    } else if (c.run.kind == RunKind::shear && c.run.kernel == CollisionKernel::maxwell)
         ctx.add("run.kernel", "run.kernel = \"maxwell\" with run.equation = \"enskog\" and run.kind = \"shear\": "
                               "the sheared Enskog gas collides grains a diameter apart at the hard spheres' rate, "
                               "which depends on the flow between them (must be \"hard_sphere\" here)");
@@ -236,6 +261,9 @@ void note_unused_enskog(const toml::table& root, CaseConfig& c) {
             c.unused.push_back(fmt::format("run.{} is not used by run.equation = \"boltzmann\" (the pair correlation "
                                            "of the Enskog equation)",
                                            key));
+    if (const toml::table* domain = root["domain"].as_table(); domain && domain->get("chi_cells") != nullptr)
+        c.unused.push_back("domain.chi_cells is not used by run.equation = \"boltzmann\" (the smoothing of the "
+                           "Enskog equation's pair correlation)");
 }
 
 void emit_run(Emitter& e, const RunConfig& r) {
