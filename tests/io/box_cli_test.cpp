@@ -4,6 +4,7 @@
 // cell fields in HDF5 files with their XDMF sidecars.
 #include "io_test_support.hpp"
 
+#include "roughgas/dsmc/pair_correlation.hpp"
 #include "roughgas/io/fields_file.hpp"
 #include "roughgas/io/fields_series.hpp"
 #include "roughgas/observables/longitudinal_modes.hpp"
@@ -421,6 +422,25 @@ TEST(BoxCli, CheckStatesTheShearModesStability) {
     EXPECT_NE(stable.out.find("17.77 of them, is shorter: linearly stable: its longest transverse wave decays"),
               std::string::npos)
         << stable.out;
+    // The Enskog equation at phi = 0.2: Garzo & Dufty's critical length (in the dilute gas's mean free
+    // paths) for smooth grains, none for rough ones, and no dilute heat mode.
+    const std::string dense = " --set run.equation=enskog --set run.density=0.3819718634 --set domain.allow_coarse=true";
+    const test::CommandResult enskog = test::run_roughgas("check '" + c + "' --set collision.beta=-1" + dense, dir);
+    ASSERT_EQ(enskog.status, 0) << enskog.err;
+    const ShearModeTheory e = enskog_shear_mode(0.8, 0.2, carnahan_starling_chi(0.2));
+    EXPECT_NE(enskog.out.find(fmt::format("Enskog equation at phi = 0.2, chi = 1.758, smooth grains, alpha = 0.8): "
+                                          "critical length {:.4g} dilute mean free paths",
+                                          e.critical_length)),
+              std::string::npos)
+        << enskog.out;
+    EXPECT_NE(enskog.out.find("heat mode (density clusters): its critical length is given for the Boltzmann equation "
+                              "only"),
+              std::string::npos)
+        << enskog.out;
+    const test::CommandResult enskog_rough = test::run_roughgas("check '" + c + "'" + dense, dir);
+    EXPECT_NE(enskog_rough.out.find("the finite-phi critical length is given for smooth grains only (beta = 0.4 here)"),
+              std::string::npos)
+        << enskog_rough.out;
 }
 
 // Elastic smooth grains, 20000 of them to 20 collisions per particle with rows at linear spacing, in
