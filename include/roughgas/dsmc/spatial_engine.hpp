@@ -1418,23 +1418,21 @@ template <class Policy, bool General = false> class SpatialEngine {
             const std::size_t slot = static_cast<std::size_t>(uniform_index(rng, slots));
             if (slot >= last - first)
                 continue;
-            double chi;
-            if (chi_uniform_) {
-                chi = types_[type].chi;
-            } else {
+            const std::size_t j = first + slot;
+            if (j == i)
+                continue;
+            // Accepted with probability (sigma^2 chi/W) (g.k)+/bound: first against (g.k)+/bound
+            // (sigma^2 chi <= W), the midpoint's chi only for what passes (about one in ten).
+            const double approach = dot(v_[i] - v_[j], k);
+            if (!(u < approach))
+                continue;
+            double chi = types_[type].chi;
+            if (!chi_uniform_) {
                 Vec3 mid = x_[i] + (0.5 * sigma) * k, mid_image{};
                 wrap_point(mid, mid_image);
                 chi = e.chi(cell_of(mid), type);
             }
-            // The factors known before j's velocity: sigma^2 chi/W <= 1, and (g.k)+ <= bound.
-            const double cheap = sigma * sigma * chi / W;
-            if (u >= cheap * bound)
-                continue;
-            const std::size_t j = first + slot;
-            if (j == i)
-                continue;
-            const double approach = dot(v_[i] - v_[j], k);
-            if (!(u < cheap * approach))
+            if (!(u * W < sigma * sigma * chi * approach))
                 continue;
             // The rule's i is of the lower species; n from j to i.
             std::size_t ri = i, rj = j;
