@@ -19,9 +19,9 @@ inline constexpr double dense_gas_excess = 0.05;
 // docs/validation.md measures the cooling state's theta and a20 against the grains per cell, whose
 // bias exceeds three of that measurement's errors at 5 and below.
 inline constexpr double fewest_grains_per_cell = 5.0;
-// An Enskog box: the grains per cell below which the partners' cells lower the collision frequency by more
-// than 0.1 to 0.2 % (docs/validation.md).
-inline constexpr double fewest_enskog_grains_per_cell = 10.0;
+// An Enskog box: the deficit of the collision frequency, one over the grains in the cells a diameter
+// from a grain (setup_warnings.cpp), above which `run` warns.
+inline constexpr double enskog_partner_deficit = 0.001;
 
 // The largest cell edge of a box run over the mean free path at the mean density,
 // 1/(sqrt(2) pi n sigma^2) of the largest diameter sigma (the ratio moments.csv's cell_over_lambda
