@@ -245,20 +245,25 @@ ReplicaEnd run_box_flight(const RunSpec& spec, const std::vector<SpeciesBlock>& 
                 row.push_back(p_kin + p_coll);
             }
             if (sheared) {
-                // Kinetic plus collisional (the interval's cell collisions: impulse times separation).
+                // Kinetic plus collisional (the interval's cell collisions: impulse times separation);
+                // of an Enskog box, the collisional part in columns of its own (as the homogeneous
+                // sheared Enskog gas's).
                 PressureTensor P = pressure_tensor(v_col, slices, engine.volume(), m.mean_velocity);
+                PressureTensor Pc{};
+                PressureTensor& to = spec.enskog ? Pc : P;
                 if (!first) {
                     const double f = 1.0 / (engine.volume() * (t - t_prev));
                     for (const Virial& b : virial) {
-                        P.xx += f * b[0];
-                        P.yy += f * b[1];
-                        P.zz += f * b[2];
-                        P.xy += f * b[3];
-                        P.xz += f * b[4];
-                        P.yz += f * b[5];
+                        to.xx += f * b[0];
+                        to.yy += f * b[1];
+                        to.zz += f * b[2];
+                        to.xy += f * b[3];
+                        to.xz += f * b[4];
+                        to.yz += f * b[5];
                     }
                 }
-                append_shear_columns(row, P, Omega, spec.shear->rate, usf_species, spec.density, m.all.T_tr);
+                append_shear_columns(row, P, Omega, spec.shear->rate, usf_species, spec.density, m.all.T_tr,
+                                     spec.enskog ? std::optional(Pc) : std::nullopt);
             }
             append_row_tail(row, m, tally, types, blocks, inv_dt, clamp_column);
             if (domain.initial.mode != Perturbation::none)

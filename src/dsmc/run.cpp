@@ -104,9 +104,9 @@ void validate(const RunSpec& spec) {
         require(spec.enskog->model != PairCorrelationModel::constant ||
                     (std::isfinite(spec.enskog->chi) && spec.enskog->chi > 0),
                 "a constant pair correlation chi must be > 0");
-        require(!spec.domain || (!spec.domain->lees_edwards() && spec.kernel == CollisionKernel::hard_sphere &&
+        require(!spec.domain || (spec.kernel == CollisionKernel::hard_sphere &&
                                  spec.domain->partners == PartnerSelection::random),
-                "an Enskog box needs the hard-sphere kernel, random partners and no Lees-Edwards boundaries");
+                "an Enskog box needs the hard-sphere kernel and random partners");
         require(!spec.domain || spec.domain->chi_cells == 0 || spec.domain->chi_cells % 2 == 1,
                 "the Enskog smoothing cube needs an odd number of cells per side");
         require(!spec.shear || spec.kernel == CollisionKernel::hard_sphere,

@@ -177,13 +177,17 @@ TEST(SpatialEnskog, ConservesMomentumAndEnergy) {
     EXPECT_NEAR(energy(e) / E0, 1.0, 1e-12);
 }
 
-// One thread or two, periodic or walled: the same collisions in the same order (the blocks and
-// their streams do not depend on the threads), so the same velocities bit for bit.
+// One thread or two, periodic, walled or sheared by Lees-Edwards boundaries: the same collisions
+// in the same order (the blocks and their streams do not depend on the threads), so the same
+// velocities bit for bit.
 TEST(SpatialEnskog, ThreadCountDoesNotChangeTheResults) {
-    for (const bool walls : {false, true}) {
+    for (const int kind : {0, 1, 2}) {
+        const bool walls = kind == 1;
         DomainSpec d;
         d.size = {12.0, 10.0, 8.0};
         d.cells = {16, 14, 10};
+        if (kind == 2)
+            d.shear_rate = 0.3;
         if (walls) {
             d.boundary[1] = Boundary::walls;
             d.wall_lower.kind = d.wall_upper.kind = WallKind::diffuse;

@@ -10,7 +10,9 @@
 //     enough grains for that bias to stay below the statistical errors, and its chi_ab(c) is the
 //     local equation of state's (Carnahan & Starling, or BMCSL for mixtures);
 //   - the flow U(c), the mean velocity over the same cube: the reference about which the speed
-//     bounds are taken (smooth, so that it differs little between neighbouring cells);
+//     bounds are taken (smooth, so that it differs little between neighbouring cells); with
+//     Lees-Edwards boundaries the images' flow a (y - L_y/2) x^ plus the mean about it, which is
+//     periodic across the images;
 //   - the bounds of the candidates' acceptance over each cell's reach (the cells a partner a
 //     diameter away can lie in): the largest sigma_ab^2 chi_ab, the largest count of one species,
 //     the largest spread of U, and (speed_bounds) the largest speed about U.
@@ -131,15 +133,20 @@ struct CellBlocks {
     }
 };
 
-inline CellBlocks make_cell_blocks(const CellGrid& g, const std::array<int, 3>& reach) {
+// `lees_edwards`: the images across y are shifted along x (Lees-Edwards boundaries), so a block that is
+// the only one along y reaches across y into cells anywhere along x: then it is the only one along x too.
+inline CellBlocks make_cell_blocks(const CellGrid& g, const std::array<int, 3>& reach, bool lees_edwards = false) {
     CellBlocks b;
+    std::array<int, 3> count{};
     for (std::size_t a = 0; a < 3; ++a) {
         const int n = g.n[a], r = std::max(1, reach[a]);
-        int count = g.periodic[a] ? 2 * (n / (4 * r)) : n / (2 * r);
-        count = std::max(count, 1);
-        for (int k = 0; k <= count; ++k)
-            b.edges[a].push_back(static_cast<int>(static_cast<long long>(n) * k / count));
+        count[a] = std::max(g.periodic[a] ? 2 * (n / (4 * r)) : n / (2 * r), 1);
     }
+    if (lees_edwards && count[1] == 1)
+        count[0] = 1;
+    for (std::size_t a = 0; a < 3; ++a)
+        for (int k = 0; k <= count[a]; ++k)
+            b.edges[a].push_back(static_cast<int>(static_cast<long long>(g.n[a]) * k / count[a]));
     for (std::size_t u = 0; u < b.count(); ++u) {
         const std::array<int, 3> i = b.index(u);
         b.by_colour[static_cast<std::size_t>((i[0] & 1) | (i[1] & 1) << 1 | (i[2] & 1) << 2)].push_back(u);
@@ -153,9 +160,11 @@ class EnskogCells {
     // `sigma[s]`: species s's diameter; `h[a]`: the cells' edge along a; `smoothing`: the smoothing
     // cube's cells per side (odd; larger than an axis's cells: that whole axis); `chi_constant` > 0: chi
     // of every pair (run.chi), else BMCSL's (Carnahan & Starling's for one species).
+    // `shear_rate` a != 0: Lees-Edwards boundaries along y with the flow a (y - L_y/2) x^ (L_y = n_y h_y):
+    // U is then that flow plus the smoothed flow about it, which is periodic across the images.
     EnskogCells(const CellGrid& grid, std::vector<double> sigma, const std::array<double, 3>& h, int smoothing,
-                double chi_constant)
-        : grid_(grid), sigma_(std::move(sigma)), chi_constant_(chi_constant) {
+                double chi_constant, double shear_rate = 0)
+        : grid_(grid), sigma_(std::move(sigma)), chi_constant_(chi_constant), shear_rate_(shear_rate), h_(h) {
         const std::size_t S = sigma_.size();
         if (S == 0 || smoothing < 1 || smoothing % 2 == 0)
             throw std::invalid_argument("EnskogCells: species and an odd smoothing cube needed");
@@ -166,7 +175,11 @@ class EnskogCells {
             reach_[a] = static_cast<int>(std::ceil(sigma_max / h[a] * (1 + 1e-12)));
             smooth_[a] = std::min(smoothing / 2, grid.n[a]);
         }
-        blocks_ = make_cell_blocks(grid_, reach_);
+        blocks_ = make_cell_blocks(grid_, reach_, shear_rate_ != 0);
+        // The bounds' reach: with Lees-Edwards a partner across y lies anywhere along x.
+        bound_reach_ = reach_;
+        if (shear_rate_ != 0)
+            bound_reach_[0] = grid.n[0];
         for (std::size_t a = 0; a < S; ++a)
             for (std::size_t b = a; b < S; ++b)
                 sigma_pair_.push_back(0.5 * (sigma_[a] + sigma_[b]));
@@ -178,7 +191,7 @@ class EnskogCells {
     std::size_t types() const { return sigma_pair_.size(); }
 
     // From `count[c * S + s]` (grains of species s in cell c) and `momentum[c * 3 + a]` (the sum of
-    // their velocities' component a), `weight` = F/V_c (a simulated grain's contribution to the
+    // their velocities' component a, about base_flow(c) along x), `weight` = F/V_c (a simulated grain's contribution to the
     // number density): the local densities, chi_ab, the flow U and the bounds that do not depend on
     // the speeds.
     void set_densities(const std::vector<double>& count, const std::vector<double>& momentum, double weight) {
@@ -231,7 +244,7 @@ class EnskogCells {
                 m[4 + S + a] = -flow_[c * 3 + a];
             }
         }
-        reduce_neighbourhood<true>(grid_, reach_, maxima_, M, scratch_);
+        reduce_neighbourhood<true>(grid_, bound_reach_, maxima_, M, scratch_);
         weight_max_.resize(C);
         count_max_.resize(C);
         spread_.resize(C);
@@ -245,7 +258,9 @@ class EnskogCells {
                 const double d = std::max(m[1 + S + a] - u, u + m[4 + S + a]);
                 d2 += d * d;
             }
-            spread_[c] = std::sqrt(d2);
+            // With Lees-Edwards, the base flow differs by at most a reach_y h_y between a cell and
+            // the partners' (their images' across y).
+            spread_[c] = std::sqrt(d2) + std::abs(shear_rate_) * reach_[1] * h_[1];
         }
     }
 
@@ -256,19 +271,30 @@ class EnskogCells {
     // U(c') may exceed some cell's speed_max, one slower never does.
     void set_speed_bounds(const std::vector<double>& speed) {
         speed_max_ = speed;
-        reduce_neighbourhood<true>(grid_, reach_, speed_max_, 1, scratch_);
+        reduce_neighbourhood<true>(grid_, bound_reach_, speed_max_, 1, scratch_);
         floor_.resize(speed_max_.size());
         for (std::size_t c = 0; c < floor_.size(); ++c)
             floor_[c] = -speed_max_[c];
-        reduce_neighbourhood<true>(grid_, reach_, floor_, 1, scratch_);
+        reduce_neighbourhood<true>(grid_, bound_reach_, floor_, 1, scratch_);
         for (double& f : floor_)
             f = -f;
     }
 
     // chi_ab (pair type t, pair_index order) at cell c.
     double chi(std::size_t c, std::size_t t) const { return chi_[c * types() + t]; }
-    // The flow U at cell c.
-    std::array<double, 3> flow(std::size_t c) const { return {flow_[c * 3], flow_[c * 3 + 1], flow_[c * 3 + 2]}; }
+    // The flow U at cell c (with Lees-Edwards: the base flow at the cell's centre plus the smoothed flow
+    // about it).
+    std::array<double, 3> flow(std::size_t c) const {
+        return {flow_[c * 3] + base_flow(c), flow_[c * 3 + 1], flow_[c * 3 + 2]};
+    }
+    // The Lees-Edwards flow a (y - L_y/2) at cell c's centre (0 without): set_densities takes the
+    // momentum about it.
+    double base_flow(std::size_t c) const {
+        if (shear_rate_ == 0)
+            return 0.0;
+        const auto row = static_cast<double>((c / static_cast<std::size_t>(grid_.n[0])) % static_cast<std::size_t>(grid_.n[1]));
+        return shear_rate_ * h_[1] * (row + 0.5 - 0.5 * grid_.n[1]);
+    }
     // Over c's reach: the largest sigma_ab^2 chi_ab, the largest count of one species, the largest
     // |U(c') - U(c)| (bounded by the spread of each component), the largest speed about U.
     double weight_max(std::size_t c) const { return weight_max_[c]; }
@@ -280,8 +306,9 @@ class EnskogCells {
   private:
     CellGrid grid_;
     std::vector<double> sigma_, sigma_pair_;
-    double chi_constant_ = 0;
-    std::array<int, 3> reach_{}, smooth_{};
+    double chi_constant_ = 0, shear_rate_ = 0;
+    std::array<double, 3> h_{};
+    std::array<int, 3> reach_{}, bound_reach_{}, smooth_{};
     CellBlocks blocks_;
     std::vector<double> chi_, flow_, weight_max_, count_max_, spread_, speed_max_, floor_;
     std::vector<double> volume_, sums_, maxima_, scratch_; // the smoothing cube's cells; work arrays

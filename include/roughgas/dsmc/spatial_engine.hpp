@@ -324,12 +324,11 @@ template <class Policy, bool General = false> class SpatialEngine {
     // Collide by the Enskog equation (see "Enskog collisions"), before the first step: `chi` the pair
     // correlation of every pair type at the box's mean density (the step length's collision frequency),
     // `chi_constant` > 0 for a constant chi (else BMCSL's of the local densities), `smoothing` the
-    // smoothing cube's cells per side (odd). Random partners and hard spheres only, no Lees-Edwards;
-    // a periodic side must be at least two diameters long (a grain never meets its own image).
+    // smoothing cube's cells per side (odd). Random partners and hard spheres only; a periodic side
+    // must be at least two diameters long (a grain never meets its own image).
     void set_enskog(const std::vector<double>& chi, double chi_constant, int smoothing) {
-        if (maxwell_ || nearest_ || domain_.lees_edwards())
-            throw std::invalid_argument("SpatialEngine: Enskog collisions need hard spheres, random partners and no "
-                                        "Lees-Edwards boundaries");
+        if (maxwell_ || nearest_)
+            throw std::invalid_argument("SpatialEngine: Enskog collisions need hard spheres and random partners");
         if (chi.size() != types_.size())
             throw std::invalid_argument("SpatialEngine: one chi per species pair");
         std::vector<double> sigma;
@@ -351,7 +350,7 @@ template <class Policy, bool General = false> class SpatialEngine {
         }
         for (std::size_t t = 0; t < types_.size(); ++t)
             types_[t].chi = chi[t];
-        enskog_.emplace(grid, std::move(sigma), h, smoothing, chi_constant);
+        enskog_.emplace(grid, std::move(sigma), h, smoothing, chi_constant, domain_.shear_rate);
         chi_uniform_ = chi_constant > 0;
         speed_start_.assign(cells_, 0.0);
         speed_now_.assign(cells_, 0.0);
@@ -1246,12 +1245,18 @@ template <class Policy, bool General = false> class SpatialEngine {
         EnskogCells& e = *enskog_;
         const std::size_t S = blocks_.size();
         std::vector<double> count(cells_ * S), momentum(cells_ * 3);
+        // Lees-Edwards: the images across y are shifted by this along x (the flight's end, where the
+        // positions are; cross_lees_edwards).
+        le_offset_ = domain_.lees_edwards()
+                         ? std::fmod(domain_.shear_rate * domain_.size[1] * (t_ + dt), domain_.size[0])
+                         : 0.0;
         for_each_cell([&](std::size_t c) {
+            const double base = e.base_flow(c);
             for (std::size_t s = 0; s < S; ++s) {
                 const auto [first, last] = cell_range(s, c);
                 count[c * S + s] = static_cast<double>(last - first);
                 for (std::size_t i = first; i < last; ++i) {
-                    momentum[c * 3] += v_[i].x;
+                    momentum[c * 3] += v_[i].x - base;
                     momentum[c * 3 + 1] += v_[i].y;
                     momentum[c * 3 + 2] += v_[i].z;
                 }
@@ -1310,9 +1315,20 @@ template <class Policy, bool General = false> class SpatialEngine {
         }
     }
 
-    // The point r + d wrapped into the box: false beyond a wall; `image` the shift that wrapping
-    // removed (the partner's periodic image is at its position plus `image`).
-    bool wrap_point(Vec3& p, Vec3& image) const {
+    // The point p wrapped into the box: false beyond a wall; `image` the shift that wrapping removed
+    // (the partner's periodic image is at its position plus `image`) and `dv` the image's velocity
+    // over the grain's: across y with Lees-Edwards boundaries the images above move at +a L_y along x
+    // and sit offset by a L_y t (cross_lees_edwards), so the real point is shifted back along x.
+    bool wrap_point(Vec3& p, Vec3& image, Vec3& dv) const {
+        const double Ly = domain_.size[1];
+        if (domain_.lees_edwards() && !(p.y >= 0 && p.y < Ly)) {
+            const double up = p.y >= Ly ? 1.0 : -1.0; // the image above (+1) or below (-1)
+            p.y -= up * Ly;
+            p.x -= up * le_offset_;
+            image.y = up * Ly;
+            image.x = up * le_offset_;
+            dv.x = up * domain_.shear_rate * Ly;
+        }
         for (int a = 0; a < 3; ++a) {
             const double L = domain_.size[static_cast<std::size_t>(a)];
             double& q = component(p, a);
@@ -1320,11 +1336,12 @@ template <class Policy, bool General = false> class SpatialEngine {
                 continue;
             if (domain_.walled(a))
                 return false;
-            const double shift = q < 0 ? -L : L; // at most one period: sides of at least 2 sigma
+            // At most one period (sides of at least 2 sigma), but the Lees-Edwards offset may add one along x.
+            const double shift = L * std::floor(q / L);
             q -= shift;
             if (!(q >= 0 && q < L))
                 q = q < 0 ? 0.0 : std::nextafter(L, 0.0);
-            component(image, a) = shift;
+            component(image, a) += shift;
         }
         return true;
     }
@@ -1408,9 +1425,9 @@ template <class Policy, bool General = false> class SpatialEngine {
                 k = mu * axis_a + (std::sqrt(std::max(0.0, 1 - mu * mu) / across2)) * across;
             }
             const double bound = B + dot(a, k); // >= (g.k)+ for every partner
-            Vec3 p = x_[i] + sigma * k, image{};
+            Vec3 p = x_[i] + sigma * k, image{}, dv{};
             const double u = uniform01(rng) * bound;
-            if (!wrap_point(p, image))
+            if (!wrap_point(p, image, dv))
                 continue; // beyond a wall: no partner there
             const std::size_t c2 = cell_of(p);
             const auto [first, last] = cell_range(sb, c2);
@@ -1423,13 +1440,13 @@ template <class Policy, bool General = false> class SpatialEngine {
                 continue;
             // Accepted with probability (sigma^2 chi/W) (g.k)+/bound: first against (g.k)+/bound
             // (sigma^2 chi <= W), the midpoint's chi only for what passes (about one in ten).
-            const double approach = dot(v_[i] - v_[j], k);
+            const double approach = dot(v_[i] - v_[j] - dv, k);
             if (!(u < approach))
                 continue;
             double chi = types_[type].chi;
             if (!chi_uniform_) {
-                Vec3 mid = x_[i] + (0.5 * sigma) * k, mid_image{};
-                wrap_point(mid, mid_image);
+                Vec3 mid = x_[i] + (0.5 * sigma) * k, mid_image{}, mid_dv{};
+                wrap_point(mid, mid_image, mid_dv);
                 chi = e.chi(cell_of(mid), type);
             }
             if (!(u * W < sigma * sigma * chi * approach))
@@ -1443,10 +1460,19 @@ template <class Policy, bool General = false> class SpatialEngine {
             }
             const PairConstants& pc = types_[type].pc;
             const Vec3 v_before = v_[i];
+            // The partner at its image's velocity for the rule, and back (dv = 0 but across a
+            // Lees-Edwards boundary).
+            v_[j] += dv;
+            CollisionRecord rec;
             if constexpr (rough)
-                obs(collide(pc, policies_[type], v_[ri], w_[ri], v_[rj], w_[rj], normal), type);
+                rec = collide(pc, policies_[type], v_[ri], w_[ri], v_[rj], w_[rj], normal);
             else
-                obs(collide(pc, policies_[type], v_[ri], v_[rj], normal), type);
+                rec = collide(pc, policies_[type], v_[ri], v_[rj], normal);
+            v_[j] -= dv;
+            // The rule counted j's energy at its image's velocity: the grains' own kinetic energy
+            // changes by dv.J more (J the impulse on i; Engine::collide_sheared says why).
+            rec.dE_tr += dot(dv, blocks_[sa].grain.mass * (v_[i] - v_before));
+            obs(rec, type);
             ++done;
             // The impulse on i times its separation from j's image (observables/profiles.hpp, Pc).
             const Vec3 dp = blocks_[sa].grain.mass * (v_[i] - v_before), r = x_[i] - (x_[j] + image);
@@ -1519,6 +1545,7 @@ template <class Policy, bool General = false> class SpatialEngine {
     std::optional<EnskogCells> enskog_;
     std::vector<double> speed_start_, speed_now_;
     bool chi_uniform_ = false; // a constant chi (run.chi): no midpoint's cell to find
+    double le_offset_ = 0;     // the Lees-Edwards images' offset along x during a step's Enskog collisions
 };
 
 } // namespace roughgas

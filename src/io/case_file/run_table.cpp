@@ -98,7 +98,7 @@ void check_maxwell_kernel(BuildContext& ctx, const CaseConfig& c) {
 
 // run.equation = "enskog": its chi (a constant needs run.chi, and run.chi needs a constant), and the
 // runs it is solved for: the homogeneous gas, cooling, driven or sheared (with the hard-sphere kernel),
-// and boxes with random partners and the hard-sphere kernel, periodic or walled but not sheared, each
+// and boxes with random partners and the hard-sphere kernel (periodic, walled or sheared), each
 // periodic side at least two diameters long, the smoothing cube odd.
 void check_equation(BuildContext& ctx, const CaseConfig& c) {
     if (c.run.equation != KineticEquation::enskog)
@@ -114,10 +114,6 @@ void check_equation(BuildContext& ctx, const CaseConfig& c) {
                                        *c.run.chi, name(c.run.pair_correlation)));
     if (c.domain) {
         const DomainConfig& d = *c.domain;
-        if (c.run.kind == RunKind::shear)
-            ctx.add("run.kind", "run.kind = \"shear\" with run.equation = \"enskog\" and [domain]: the sheared "
-                                "Enskog gas is solved homogeneous (leave [domain] out), a box with walls moving "
-                                "apart (Couette flow) shears it between them");
         if (c.run.kernel == CollisionKernel::maxwell)
             ctx.add("run.kernel", "run.kernel = \"maxwell\" with run.equation = \"enskog\" and [domain]: a box's "
                                   "Enskog collisions are those of hard spheres a diameter apart (must be "
