@@ -33,26 +33,32 @@ std::array<int, 3> coordinates(const CellGrid& g, std::size_t c) {
             static_cast<int>(c / (static_cast<std::size_t>(g.n[0]) * static_cast<std::size_t>(g.n[1])))};
 }
 
-// The cells within `reach` of cell c, each once (wrapped on periodic axes, none beyond walls).
-std::vector<std::size_t> neighbourhood(const CellGrid& g, std::size_t c, const std::array<int, 3>& reach) {
+// The cells within `reach` of cell c, each once (wrapped on periodic axes, none beyond walls). With
+// Lees-Edwards boundaries shifted by `shift` cells and a fraction (shift >= 0): across y, the columns
+// x - shift - reach[0] - 1 .. x - shift + reach[0] of the rows reached (the images are offset along x).
+std::vector<std::size_t> neighbourhood(const CellGrid& g, std::size_t c, const std::array<int, 3>& reach,
+                                       int shift = -1) {
     const std::array<int, 3> i = coordinates(g, c);
-    std::array<std::vector<int>, 3> along;
-    for (std::size_t a = 0; a < 3; ++a) {
-        for (int d = -reach[a]; d <= reach[a]; ++d) {
-            int q = i[a] + d;
-            if (g.periodic[a])
-                q = ((q % g.n[a]) + g.n[a]) % g.n[a];
-            else if (q < 0 || q >= g.n[a])
-                continue;
-            if (std::find(along[a].begin(), along[a].end(), q) == along[a].end())
-                along[a].push_back(q);
-        }
-    }
+    const auto wrap = [](int q, int n) { return ((q % n) + n) % n; };
     std::vector<std::size_t> cells;
-    for (int z : along[2])
-        for (int y : along[1])
-            for (int x : along[0])
-                cells.push_back(static_cast<std::size_t>(x + g.n[0] * (y + g.n[1] * z)));
+    for (int dz = -reach[2]; dz <= reach[2]; ++dz)
+        for (int dy = -reach[1]; dy <= reach[1]; ++dy) {
+            int y = i[1] + dy, z = i[2] + dz;
+            const bool across = y < 0 || y >= g.n[1];
+            if ((!g.periodic[1] && across) || (!g.periodic[2] && (z < 0 || z >= g.n[2])))
+                continue;
+            y = wrap(y, g.n[1]);
+            z = wrap(z, g.n[2]);
+            const int lo = across && shift >= 0 ? i[0] - shift - reach[0] - 1 : i[0] - reach[0];
+            const int hi = across && shift >= 0 ? i[0] - shift + reach[0] : i[0] + reach[0];
+            for (int x = lo; x <= hi; ++x) {
+                if (!g.periodic[0] && (x < 0 || x >= g.n[0]))
+                    continue;
+                const auto q = static_cast<std::size_t>(wrap(x, g.n[0]) + g.n[0] * (y + g.n[1] * z));
+                if (std::find(cells.begin(), cells.end(), q) == cells.end())
+                    cells.push_back(q);
+            }
+        }
     return cells;
 }
 
@@ -89,41 +95,50 @@ TEST(EnskogCells, NeighbourhoodSumsAndMaximaAreTheDirectOnes) {
 
 // Two blocks of one colour: no cell within reach of the one is within reach of the other (so
 // their collisions, which change grains and read bounds within reach, may run at once). Grids with
-// even and odd numbers of cells, periodic and walled, reaches of 1 to 3 cells.
+// even and odd numbers of cells, periodic and walled, reaches of 1 to 3 cells, and with
+// Lees-Edwards boundaries at every offset (one block or several along y).
 TEST(EnskogCells, BlocksOfOneColourAreNeverWithinReachOfEachOther) {
     for (const std::array<int, 3> n : {std::array<int, 3>{12, 9, 5}, std::array<int, 3>{17, 8, 30}})
-        for (const bool periodic : {true, false})
+        for (const int kind : {0, 1, 2})
             for (const int r : {1, 2, 3}) {
+                const bool periodic = kind != 1, lees_edwards = kind == 2;
+                if (lees_edwards && n[2] > 5)
+                    continue; // every offset of the small grid is enough, and quick
                 CellGrid g;
                 g.n = n;
-                g.periodic = {periodic, true, !periodic};
-                const std::array<int, 3> reach{r, 1, r};
-                const CellBlocks b = make_cell_blocks(g, reach);
-                // The cells each block reaches: its own and those within reach of them.
-                std::vector<std::vector<char>> reached(b.count(), std::vector<char>(g.cells(), 0));
-                for (std::size_t c = 0; c < g.cells(); ++c) {
-                    const std::array<int, 3> i = coordinates(g, c);
-                    std::size_t block = 0, scale = 1;
-                    for (std::size_t a = 0; a < 3; ++a) {
-                        const auto k = static_cast<std::size_t>(
-                            std::upper_bound(b.edges[a].begin(), b.edges[a].end(), i[a]) - b.edges[a].begin() - 1);
-                        block += k * scale;
-                        scale *= b.edges[a].size() - 1;
-                    }
-                    for (std::size_t q : neighbourhood(g, c, reach))
-                        reached[block][q] = 1;
-                }
+                g.periodic = {periodic, true, !periodic || lees_edwards};
+                const std::array<int, 3> reach{r, lees_edwards ? r : 1, r};
+                const CellBlocks b = make_cell_blocks(g, reach, lees_edwards);
                 std::size_t blocks = 0;
-                for (const std::vector<std::size_t>& colour : b.by_colour) {
+                for (const std::vector<std::size_t>& colour : b.by_colour)
                     blocks += colour.size();
-                    for (std::size_t u = 0; u < colour.size(); ++u)
-                        for (std::size_t v = u + 1; v < colour.size(); ++v)
-                            for (std::size_t c = 0; c < g.cells(); ++c)
-                                ASSERT_FALSE(reached[colour[u]][c] && reached[colour[v]][c])
-                                    << "blocks " << colour[u] << ", " << colour[v] << " share cell " << c;
-                }
                 EXPECT_EQ(blocks, b.count());
-                EXPECT_GT(b.count(), 1u); // the grids are long enough for several blocks
+                if (!lees_edwards || b.edges[1].size() > 2) // else one block along y, so one along x
+                    EXPECT_GT(b.count(), 1u);               // the grids are long enough for several blocks
+                for (int shift = lees_edwards ? 0 : -1; shift < (lees_edwards ? n[0] : 0); ++shift) {
+                    // The cells each block reaches: its own and those within reach of them.
+                    std::vector<std::vector<char>> reached(b.count(), std::vector<char>(g.cells(), 0));
+                    for (std::size_t c = 0; c < g.cells(); ++c) {
+                        const std::array<int, 3> i = coordinates(g, c);
+                        std::size_t block = 0, scale = 1;
+                        for (std::size_t a = 0; a < 3; ++a) {
+                            const auto k = static_cast<std::size_t>(
+                                std::upper_bound(b.edges[a].begin(), b.edges[a].end(), i[a]) - b.edges[a].begin() - 1);
+                            block += k * scale;
+                            scale *= b.edges[a].size() - 1;
+                        }
+                        for (std::size_t q : neighbourhood(g, c, reach, shift))
+                            reached[block][q] = 1;
+                    }
+                    for (const std::vector<std::size_t>& colour : b.by_colour)
+                        for (std::size_t u = 0; u < colour.size(); ++u)
+                            for (std::size_t v = u + 1; v < colour.size(); ++v)
+                                for (std::size_t c = 0; c < g.cells(); ++c)
+                                    ASSERT_FALSE(reached[colour[u]][c] && reached[colour[v]][c])
+                                        << "blocks " << colour[u] << ", " << colour[v] << " share cell " << c
+                                        << " (grid " << n[0] << "x" << n[1] << "x" << n[2] << ", kind " << kind
+                                        << ", reach " << r << ", shift " << shift << ")";
+                }
             }
 }
 

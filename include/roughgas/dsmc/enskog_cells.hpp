@@ -133,13 +133,15 @@ struct CellBlocks {
     }
 };
 
-// `lees_edwards`: the images across y are shifted along x (Lees-Edwards boundaries), so a block that is
-// the only one along y reaches across y into cells anywhere along x: then it is the only one along x too.
+// `lees_edwards`: the images across y are shifted along x (Lees-Edwards boundaries) by a whole number of
+// cells and a fraction of one, so a block's reach across y is a window one cell wider than its reach,
+// shifted along x: the blocks are a cell longer along x. A block that is the only one along y reaches
+// across y into itself anywhere along x: then it is the only one along x too.
 inline CellBlocks make_cell_blocks(const CellGrid& g, const std::array<int, 3>& reach, bool lees_edwards = false) {
     CellBlocks b;
     std::array<int, 3> count{};
     for (std::size_t a = 0; a < 3; ++a) {
-        const int n = g.n[a], r = std::max(1, reach[a]);
+        const int n = g.n[a], r = std::max(1, reach[a]) + (lees_edwards && a == 0 ? 1 : 0);
         count[a] = std::max(g.periodic[a] ? 2 * (n / (4 * r)) : n / (2 * r), 1);
     }
     if (lees_edwards && count[1] == 1)
