@@ -17,12 +17,12 @@
 // apart meets with the relative contact velocity g_c = G + sigma E.n - (sigma/2) S x n + sigma (Omega
 // - w/2) x n, G = V_i - V_j, S the sum of the spin fluctuations, E the rate of strain, w the
 // vorticity and Omega the mean spin. (1) The strain part of the shift feeds the kinetic stress:
-// production of n m <V_x V_y> gains -(4 pi/15) chi n^2 sigma^3 m (1 + (3/2) kappa) a (the tangential
+// production of n m <V_x V_y> gains -(4 pi/15) chi n^2 sigma^3 T (1 + (3/2) kappa) a (the tangential
 // impulse adds the kappa term), which multiplies the kinetic flux by 1 + A phi chi. (2) The collisional
 // transfer sum sigma n_i J_j of a Grad distribution carries A phi chi times its kinetic stress
 // deviation (the normal impulse the 8/5, the tangential one 12 kappa/5: the same A, as Onsager's
 // symmetry requires). (3) The Maxwellian's own transfer across the shifted contact gives the bulk-like
-// term; the tangential impulse adds a quarter more per kappa (3/4 kappa). The antisymmetric stress,
+// term; the tangential impulse adds (3/4) kappa of it. The antisymmetric stress,
 // -eps_ijk P_jk, is the spin production and is proportional to Omega - w/2 alone (the strain, the
 // stress deviation and the collision rule are parity even): in uniform shear flow u = a y x, w = -a z,
 // the mean spin relaxes, within a few collisions per grain, to Omega_z = -a/2, where the stress tensor
