@@ -10,9 +10,11 @@
 // The first Sonine approximation leaves out about 1.6 % of the dilute gas's eta (its higher
 // approximations: eta_0 = 1.016 times the first; Chapman & Cowling) and a similar share at finite
 // density: the band is 3 % plus four standard errors (from the spread of 30 rows, whose intervals of
-// a collision per particle are nearly independent). CPU: about 8 s for the file.
+// a collision per particle are nearly independent). Perfectly rough grains: see
+// PerfectlyRoughElasticViscosity. CPU: about 8 s for the file.
 #include "roughgas/dsmc/pair_correlation.hpp"
 #include "roughgas/observables/enskog_usf_theory.hpp"
+#include "roughgas/observables/rough_enskog_viscosity.hpp"
 #include "roughgas/dsmc/run.hpp"
 #include "roughgas/dsmc/tables.hpp"
 
@@ -37,9 +39,11 @@ using Rows = std::vector<std::vector<double>>;
 // Smooth grains of unit diameter (m = 1, T = 1) at the solid fraction phi in the Enskog equation,
 // sheared at a* = a/nu(T = 1), nu = (16/5) n sigma^2 sqrt(pi T/m), steps of 0.1 mean free times; 40
 // rows a collision per particle apart.
-Rows sheared_gas(double phi, double alpha, double a_star, std::int64_t N, std::uint64_t seed, RunSpec& s) {
+// beta = -1: smooth; the grains are uniform spheres (q = 2/5).
+Rows sheared_gas(double phi, double alpha, double a_star, std::int64_t N, std::uint64_t seed, RunSpec& s,
+                 double beta = -1.0) {
     s.species = {SpeciesSpec{}};
-    s.pairs = {ConstantRestitution{alpha, -1.0}};
+    s.pairs = {ConstantRestitution{alpha, beta}};
     s.particles = N;
     s.density = 6 * phi / std::numbers::pi;
     s.end = 40;
@@ -72,6 +76,47 @@ TEST(EnskogShear, ElasticViscosityIsEnskogs) {
         RecordProperty("eta_phi_" + std::to_string(phi),
                        std::to_string(mean) + " +- " + std::to_string(err) + " against " + std::to_string(enskog));
     }
+}
+
+TEST(EnskogShear, PerfectlyRoughElasticViscosity) {
+    // Elastic perfectly rough uniform spheres (alpha = beta = 1, q = 2/5) at phi = 0.25, a* = 0.05, as
+    // ElasticViscosityIsEnskogs, one run of 2 10^5 grains (about 2.2 s). Against Enskog's viscosity in
+    // the first Sonine approximation (observables/rough_enskog_viscosity.hpp): 3.957. That
+    // approximation leaves out the spins' anisotropy <J omega_x omega_y>, which the tangential impulse
+    // couples to the shear stress: with it the dilute gas's eta is 1.065 times Pidduck's (a Galerkin
+    // quadrature of the collision rule), and the Boltzmann gas of the same grains measures 1.058
+    // (docs/validation.md). So: eta* 0 to 8 % above the first Sonine value; the collisional transfer,
+    // given the measured kinetic stress, A phi chi times it plus the bulk-like term (the transfer of
+    // both the stress deviation and the Maxwellian across the shifted contact, 2.939 against the
+    // measured 2.935), within 2 %; and the mean spin at half the vorticity, -a/2, within 5 %. Bands
+    // plus four standard errors.
+    const double phi = 0.25, chi = carnahan_starling_chi(phi), q = 0.4;
+    RunSpec s;
+    const Rows rows = sheared_gas(phi, 1.0, 0.05, 200000, 5, s, 1.0);
+    const double a = s.shear->rate;
+    const RoughEnskogViscosity th = rough_enskog_viscosity(q, phi, chi);
+    const double kappa = q / (1 + q), A = 1.6 * (1 + 1.5 * kappa);
+    const double bulk = 768 / (25 * std::numbers::pi) * (1 + 0.75 * kappa) * phi * phi * chi;
+    std::vector<double> eta, transfer, spin;
+    for (std::size_t k = 11; k < rows.size(); ++k) {
+        const double e = rows[k][column(s, "eta_star")];
+        const double pk = rows[k][column(s, "P_xy")], pc = rows[k][column(s, "P_coll_xy")];
+        const double kinetic = e * pk / (pk + pc);
+        eta.push_back(e);
+        transfer.push_back((e - kinetic) / (A * phi * chi * kinetic + bulk));
+        spin.push_back(rows[k][column(s, "omega_z")] / (-a / 2));
+    }
+    const auto [eta_mean, eta_err] = mean_err(eta);
+    EXPECT_GT(eta_mean / th.total, 1.0 - 4 * eta_err / th.total) << eta_mean << " +- " << eta_err;
+    EXPECT_LT(eta_mean / th.total, 1.08 + 4 * eta_err / th.total) << eta_mean << " +- " << eta_err;
+    const auto [tr_mean, tr_err] = mean_err(transfer);
+    EXPECT_NEAR(tr_mean, 1.0, 0.02 + 4 * tr_err) << "collisional transfer over theory " << tr_mean << " +- " << tr_err;
+    const auto [spin_mean, spin_err] = mean_err(spin);
+    EXPECT_NEAR(spin_mean, 1.0, 0.05 + 4 * spin_err) << "Omega_z/(-a/2) = " << spin_mean << " +- " << spin_err;
+    RecordProperty("eta_rough_phi_0.25", std::to_string(eta_mean) + " +- " + std::to_string(eta_err) +
+                                             " against " + std::to_string(th.total));
+    RecordProperty("transfer_rough_phi_0.25", std::to_string(tr_mean) + " +- " + std::to_string(tr_err));
+    RecordProperty("spin_rough_phi_0.25", std::to_string(spin_mean) + " +- " + std::to_string(spin_err));
 }
 
 TEST(EnskogShear, SteadyRheologyAgainstGradsApproximation) {

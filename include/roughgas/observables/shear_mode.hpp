@@ -65,7 +65,8 @@
 // dilute 14.05 (L_c^2 goes as (eta*/chi)/(zeta*/chi), and eta*/chi = 1.142 is there below the
 // dilute eta* = 1.285).
 // Rough grains at finite phi have no Enskog viscosity here in the scheme of Kremer, Santos & Garzo:
-// enskog_shear_mode is for smooth grains only.
+// enskog_shear_mode is for smooth grains only (elastic perfectly rough grains have theirs in
+// observables/rough_enskog_viscosity.hpp).
 #include "roughgas/dsmc/run_spec.hpp"
 
 #include <optional>
