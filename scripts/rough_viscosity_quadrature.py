@@ -53,9 +53,10 @@ def basis(V, s):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--seed", type=int, default=1)
-    ap.add_argument("--chunks", type=int, default=10)
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--seed", type=int, default=1, help="seed of numpy's generator (default: 1)")
+    ap.add_argument("--chunks", type=int, default=10,
+                    help="chunks of samples; the errors are their scatter (default: 10)")
     args = ap.parse_args()
     rng = np.random.default_rng(args.seed)
     N = 1_000_000
