@@ -38,18 +38,7 @@ std::vector<SpeciesBlock> one_species(std::int64_t n, double mass = 1, double ra
     return make_species_blocks({s}, n);
 }
 
-// Two species of different mass and size (30 % heavy ones), both rough.
-std::vector<SpeciesBlock> two_species(std::int64_t n) {
-    SpeciesSpec a, b;
-    a.name = "light";
-    a.fraction = 0.7;
-    b.name = "heavy";
-    b.mass = 3;
-    b.radius = 0.8;
-    b.fraction = 0.3;
-    b.temperature = 2;
-    return make_species_blocks({a, b}, n);
-}
+using test::two_species;
 
 // Mean free path of equal spheres, 1/(sqrt(2) pi n sigma^2).
 double mean_free_path(double density, double sigma) {

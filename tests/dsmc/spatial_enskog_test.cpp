@@ -142,17 +142,7 @@ TEST(EnskogCells, BlocksOfOneColourAreNeverWithinReachOfEachOther) {
             }
 }
 
-std::vector<SpeciesBlock> mixture(std::int64_t n) {
-    SpeciesSpec a, b;
-    a.name = "light";
-    a.fraction = 0.7;
-    b.name = "heavy";
-    b.mass = 3;
-    b.radius = 0.8;
-    b.fraction = 0.3;
-    b.temperature = 2;
-    return make_species_blocks({a, b}, n);
-}
+using test::two_species;
 
 using test::energy;
 using test::momentum;
@@ -165,7 +155,7 @@ TEST(SpatialEnskog, ConservesMomentumAndEnergy) {
     DomainSpec d;
     d.size = {9.0, 9.0, 9.0};
     d.cells = {15, 15, 15};
-    std::vector<SpeciesBlock> blocks = mixture(8000);
+    std::vector<SpeciesBlock> blocks = two_species(8000);
     const std::vector<PairType> types = make_pair_types(blocks);
     std::vector<AnyRoughPolicy> policies;
     for (std::size_t k = 0; k < types.size(); ++k)
@@ -211,7 +201,7 @@ TEST(SpatialEnskog, ThreadCountDoesNotChangeTheResults) {
         }
         std::vector<std::vector<Vec3>> v;
         for (int threads : {1, 2}) {
-            SpatialEngine<RoughConstant, true> e(d, mixture(10000), {make_rough_constant(0.8, 0.3),
+            SpatialEngine<RoughConstant, true> e(d, two_species(10000), {make_rough_constant(0.8, 0.3),
                                                                      make_rough_constant(0.9, 0.0),
                                                                      make_rough_constant(0.7, -0.2)},
                                                   0.25, 5, 1, threads);

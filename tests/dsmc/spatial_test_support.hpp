@@ -1,8 +1,23 @@
 #pragma once
-// What the box tests sum over a SpatialEngine's grains: the total momentum and kinetic energy.
+// What the box tests share: a two-species mixture, and what they sum over a SpatialEngine's grains
+// (the total momentum and kinetic energy).
 #include "roughgas/dsmc/spatial_engine.hpp"
 
 namespace roughgas::test {
+
+// Two species of different mass and size (30 % heavy ones), both rough.
+inline std::vector<SpeciesBlock> two_species(std::int64_t n) {
+    SpeciesSpec a, b;
+    a.name = "light";
+    a.fraction = 0.7;
+    b.name = "heavy";
+    b.mass = 3;
+    b.radius = 0.8;
+    b.fraction = 0.3;
+    b.temperature = 2;
+    return make_species_blocks({a, b}, n);
+}
+
 
 template <class P, bool G> Vec3 momentum(const SpatialEngine<P, G>& e) {
     Vec3 p{};
