@@ -50,20 +50,6 @@ double enskog_eta(double f) {
     return 1.016034 * kinetic + 768.0 / (25.0 * std::numbers::pi) * f * f * chi;
 }
 
-double mean(const std::vector<double>& x) {
-    double s = 0;
-    for (double v : x)
-        s += v;
-    return s / static_cast<double>(x.size());
-}
-double standard_error(const std::vector<double>& x) {
-    const double m = mean(x);
-    double ss = 0;
-    for (double v : x)
-        ss += (v - m) * (v - m);
-    const double K = static_cast<double>(x.size());
-    return std::sqrt(ss / (K * (K - 1)));
-}
 
 constexpr int kWaveParticles = 16000, kWaveCells = 160, kWaveReplicas = 8;
 constexpr double kWaveSystematic = 0.015, kCouetteSystematic = 0.015;
@@ -167,14 +153,15 @@ TEST(EnskogBoxViscosity, CouetteMomentumFluxIsUniformAndGivesEnskogsViscosity) {
         for (int r = 0; r < 3; ++r)
             imbalance[r].push_back((sum[r] / count[r] - wall) / std::abs(wall));
     }
+    const test::MeanErr e = test::mean_err(ratio);
+    const test::MeanErr b[3] = {test::mean_err(imbalance[0]), test::mean_err(imbalance[1]), test::mean_err(imbalance[2])};
     std::printf("[ ENSKOG COUETTE ] eta / (eta_CE + cell law) = %.4f +- %.4f; (total - wall) P_xy / |P_xy|: walls' "
                 "diameter (beyond the touching slabs) %.4f +- %.4f, Knudsen layers %.4f +- %.4f, bulk %.4f +- %.4f\n",
-                mean(ratio), standard_error(ratio), mean(imbalance[0]), standard_error(imbalance[0]),
-                mean(imbalance[1]), standard_error(imbalance[1]), mean(imbalance[2]), standard_error(imbalance[2]));
-    EXPECT_LT(standard_error(ratio), 0.03) << "the statistics resolve the viscosity to 3 %";
-    EXPECT_NEAR(mean(ratio), 1.0, 4 * standard_error(ratio) + kCouetteSystematic);
+                e.mean, e.err, b[0].mean, b[0].err, b[1].mean, b[1].err, b[2].mean, b[2].err);
+    EXPECT_LT(e.err, 0.03) << "the statistics resolve the viscosity to 3 %";
+    EXPECT_NEAR(e.mean, 1.0, 4 * e.err + kCouetteSystematic);
     for (int r = 0; r < 3; ++r)
-        EXPECT_NEAR(mean(imbalance[r]), 0.0, 4 * standard_error(imbalance[r])) << "region " << r;
+        EXPECT_NEAR(b[r].mean, 0.0, 4 * b[r].err) << "region " << r;
 }
 
 // The transverse wave u_y = A sin(k x), A = 0.5, one wavelength in a periodic box of 40 x 3 x 3
